@@ -2,5 +2,7 @@
 //!
 //! The modules follow the pipeline of a run: case → wall (generated surface or
 //! statistical wall) → incident particles → collision law → tallies → outputs.
+pub mod error;
+pub mod force;
 pub mod rng;
 pub mod surface;

@@ -33,7 +33,7 @@ pub struct Options {
 }
 
 impl Default for Options {
-    /// 200 steps per contact: sphere peak within 1e-8 of Eq. (3) (see tests and the
+    /// 200 steps per contact: sphere peak within 1e-7 of Eq. (3) (see tests and the
     /// speed-versus-error table of `force_sweep`).
     fn default() -> Self {
         Options {
@@ -84,10 +84,7 @@ impl Body {
 
     #[inline]
     fn rhs(&self, s: &State) -> State {
-        let (d, k) = self.geometry(s[1]);
-        let delta = s[0].max(0.0);
-        let f = k * delta * delta.sqrt();
-        [d * s[3] - s[2], s[3], f / self.mass, -d * f / self.inertia]
+        self.rhs_force(s).0
     }
 
     /// dF/dt = k'(θ) ω δ^{3/2} + (3/2) k δ^{1/2} δ'.
@@ -100,7 +97,25 @@ impl Body {
         dk * s[3] * delta * delta.sqrt() + 1.5 * k * delta.sqrt() * rate
     }
 
+    /// Right-hand side and force at `s` (one geometry evaluation).
+    #[inline]
+    fn rhs_force(&self, s: &State) -> (State, f64) {
+        let (d, k) = self.geometry(s[1]);
+        let delta = s[0].max(0.0);
+        let f = k * delta * delta.sqrt();
+        (
+            [d * s[3] - s[2], s[3], f / self.mass, -d * f / self.inertia],
+            f,
+        )
+    }
+
     fn rk4(&self, s: &State, h: f64) -> State {
+        self.rk4_with(s, &self.rhs(s), h)
+    }
+
+    /// One classical RK4 step of size `h` from `s`, whose derivative `k1` is known.
+    #[inline]
+    fn rk4_with(&self, s: &State, k1: &State, h: f64) -> State {
         let add = |a: &State, b: &State, c: f64| {
             [
                 a[0] + c * b[0],
@@ -109,8 +124,7 @@ impl Body {
                 a[3] + c * b[3],
             ]
         };
-        let k1 = self.rhs(s);
-        let k2 = self.rhs(&add(s, &k1, 0.5 * h));
+        let k2 = self.rhs(&add(s, k1, 0.5 * h));
         let k3 = self.rhs(&add(s, &k2, 0.5 * h));
         let k4 = self.rhs(&add(s, &k3, h));
         let mut out = *s;
@@ -183,13 +197,15 @@ pub fn simulate(p: &Particle, imp: &Impact, opts: &Options) -> Outcome {
     let max_steps = 50 * n;
 
     let mut s: State = [0.0, 0.0, -imp.u_n, 0.0];
+    let (mut ds, mut f) = body.rhs_force(&s);
+    let mut prev = s; // state one step back (for the peak bracket)
     let mut t = 0.0;
     let mut f_max: f64 = 0.0;
-    let mut g_prev = body.force_rate(&s);
+    let mut peak_done = false;
     for step in 1..=max_steps {
-        let next = body.rk4(&s, h);
+        let next = body.rk4_with(&s, &ds, h);
         if next[0] <= 0.0 {
-            // Separation inside this step.
+            // Separation inside this step: δ(t + τ) = 0.
             let tau = body.root_in_step(&s, h, |x| x[0]);
             let end = body.rk4(&s, tau);
             return Outcome {
@@ -199,14 +215,24 @@ pub fn simulate(p: &Particle, imp: &Impact, opts: &Options) -> Outcome {
                 rotation: end[1],
             };
         }
-        let g_next = body.force_rate(&next);
-        if g_prev > 0.0 && g_next <= 0.0 {
-            let tau = body.root_in_step(&s, h, |x| body.force_rate(x));
-            f_max = f_max.max(body.force(&body.rk4(&s, tau)));
+        let (dn, fn_) = body.rhs_force(&next);
+        if !peak_done && fn_ < f {
+            // F rose up to the sample at t and falls after it: the peak lies in [t − h, t + h].
+            // Locate dF/dt = 0 on the RK4 step from the bracketing sample.
+            peak_done = true;
+            let start = if body.force_rate(&s) > 0.0 || step == 1 {
+                s
+            } else {
+                prev
+            };
+            let tau = body.root_in_step(&start, h, |x| body.force_rate(x));
+            f_max = f_max.max(body.force(&body.rk4(&start, tau)));
         }
-        f_max = f_max.max(body.force(&next));
+        f_max = f_max.max(fn_);
+        prev = s;
         s = next;
-        g_prev = g_next;
+        ds = dn;
+        f = fn_;
         t += h;
     }
     Outcome {

@@ -15,6 +15,7 @@ pub mod hertz_rigid;
 pub mod hertz_sphere;
 pub mod hu2021;
 pub mod material;
+pub mod report;
 pub mod spheroid;
 pub mod sweep;
 

@@ -14,6 +14,8 @@ pub struct Sweep {
     pub betas_deg: Vec<f64>,
     /// Normal impact speeds U_N ≥ 0 (m/s).
     pub u_ns: Vec<f64>,
+    /// Volume-equivalent diameters D (m); the particle's own diameter is replaced by each.
+    pub diameters: Vec<f64>,
 }
 
 /// One evaluated point of the sweep.
@@ -27,6 +29,8 @@ pub struct Row {
     pub beta_deg: f64,
     /// U_N (m/s).
     pub u_n: f64,
+    /// The particle (with this row's diameter).
+    pub particle: Particle,
     /// Model output.
     pub result: super::ForceResult,
 }
@@ -39,6 +43,7 @@ impl Sweep {
             lambdas: vec![1.5, 2.0, 3.0],
             betas_deg: (0..=90).map(f64::from).collect(),
             u_ns: vec![0.0457],
+            diameters: vec![2.45e-6],
         }
     }
 
@@ -49,6 +54,7 @@ impl Sweep {
             ("lambda", self.lambdas.is_empty()),
             ("beta_deg", self.betas_deg.is_empty()),
             ("u_n_m_s", self.u_ns.is_empty()),
+            ("diameter_um", self.diameters.is_empty()),
         ] {
             if empty {
                 return Err(Error::invalid(key, "[]", "a non-empty list"));
@@ -70,7 +76,11 @@ impl Sweep {
 
     /// Number of rows.
     pub fn len(&self) -> usize {
-        self.models.len() * self.lambdas.len() * self.betas_deg.len() * self.u_ns.len()
+        self.models.len()
+            * self.diameters.len()
+            * self.lambdas.len()
+            * self.betas_deg.len()
+            * self.u_ns.len()
     }
 
     /// True if the sweep has no rows.
@@ -79,24 +89,42 @@ impl Sweep {
     }
 
     /// Evaluates every point (in parallel on the current rayon pool); rows are ordered by
-    /// model, λ, β, U_N whatever the thread count.
-    pub fn rows(&self, p: &Particle) -> Result<Vec<Row>> {
-        p.validate()?;
+    /// model, D, λ, β, U_N whatever the thread count. `material` gives ρ, E, σ.
+    pub fn rows(&self, material: &Particle) -> Result<Vec<Row>> {
         self.validate()?;
-        let (nl, nb, nu) = (self.lambdas.len(), self.betas_deg.len(), self.u_ns.len());
+        for &d in &self.diameters {
+            Particle {
+                diameter: d,
+                ..*material
+            }
+            .validate()?;
+        }
+        let (nd, nl, nb, nu) = (
+            self.diameters.len(),
+            self.lambdas.len(),
+            self.betas_deg.len(),
+            self.u_ns.len(),
+        );
         (0..self.len())
             .into_par_iter()
             .map(|i| {
-                let model = self.models[i / (nl * nb * nu)];
+                let model = self.models[i / (nd * nl * nb * nu)];
+                let diameter = self.diameters[(i / (nl * nb * nu)) % nd];
                 let lambda = self.lambdas[(i / (nb * nu)) % nl];
                 let beta_deg = self.betas_deg[(i / nu) % nb];
                 let u_n = self.u_ns[i % nu];
-                let result = model.evaluate(p, &Impact::from_deg(lambda, beta_deg, u_n)?)?;
+                let particle = Particle {
+                    diameter,
+                    ..*material
+                };
+                let result =
+                    model.evaluate(&particle, &Impact::from_deg(lambda, beta_deg, u_n)?)?;
                 Ok(Row {
                     model,
                     lambda,
                     beta_deg,
                     u_n,
+                    particle,
                     result,
                 })
             })
@@ -104,67 +132,9 @@ impl Sweep {
     }
 }
 
-/// Inclusive arithmetic range `start, start + step, …, ≤ stop` (stop included within 1e-9 step).
-pub fn range_step(key: &str, start: f64, stop: f64, step: f64) -> Result<Vec<f64>> {
-    if !(start.is_finite() && stop.is_finite() && step.is_finite() && step > 0.0 && stop >= start) {
-        return Err(Error::invalid(
-            key,
-            format!("{{start = {start}, stop = {stop}, step = {step}}}"),
-            "finite start ≤ stop, step > 0",
-        ));
-    }
-    let n = ((stop - start) / step + 1e-9).floor() as usize;
-    if n > 10_000_000 {
-        return Err(Error::invalid(
-            key,
-            format!("{} points", n + 1),
-            "at most 10^7 points",
-        ));
-    }
-    Ok((0..=n)
-        .map(|i| {
-            if i == n && ((stop - start) / step - n as f64).abs() < 1e-9 {
-                stop
-            } else {
-                start + step * i as f64
-            }
-        })
-        .collect())
-}
-
-/// `points` values evenly spaced in log10 between `10^log_start` and `10^log_stop`, inclusive.
-pub fn range_log(key: &str, log_start: f64, log_stop: f64, points: usize) -> Result<Vec<f64>> {
-    if !(log_start.is_finite() && log_stop.is_finite() && (1..=10_000_000).contains(&points)) {
-        return Err(Error::invalid(
-            key,
-            format!("{{log_start = {log_start}, log_stop = {log_stop}, points = {points}}}"),
-            "finite log10 bounds, 1 ≤ points ≤ 10^7",
-        ));
-    }
-    if points == 1 {
-        return Ok(vec![10f64.powf(log_start)]);
-    }
-    Ok((0..points)
-        .map(|i| 10f64.powf(log_start + (log_stop - log_start) * i as f64 / (points - 1) as f64))
-        .collect())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn ranges() {
-        let r = range_step("beta_deg", 0.0, 90.0, 1.0).unwrap();
-        assert_eq!(r.len(), 91);
-        assert_eq!(r[90], 90.0);
-        let r = range_step("beta_deg", 0.0, 1.0, 0.1).unwrap();
-        assert_eq!(r.len(), 11);
-        assert_eq!(*r.last().unwrap(), 1.0);
-        let r = range_log("u_n_m_s", -2.0, 1.0, 4).unwrap();
-        assert!((r[0] - 0.01).abs() < 1e-15 && (r[3] - 10.0).abs() < 1e-12);
-        assert!(range_step("beta_deg", 0.0, 1.0, 0.0).is_err());
-    }
 
     #[test]
     fn rows_are_ordered_and_complete() {
@@ -179,6 +149,7 @@ mod tests {
             lambdas: vec![1.5, 2.0],
             betas_deg: vec![0.0, 45.0, 90.0],
             u_ns: vec![0.0, 1.0],
+            diameters: vec![2.45e-6],
         };
         let rows = s.rows(&p).unwrap();
         assert_eq!(rows.len(), 24);

@@ -28,6 +28,9 @@ pub struct Accuracy {
     pub beta_at_max_deg: f64,
 }
 
+/// (D, λ, U_N) as bit patterns: exact grouping keys.
+type PointKey = (u64, u64, u64);
+
 /// Compares every non-`hu2021` model with `hu2021` at equal (D, λ, β, U_N). The deviation is
 /// taken on ξ, which equals the force ratio for U_N > 0 and stays defined at U_N = 0.
 /// Empty if `hu2021` or another model is missing.
@@ -45,8 +48,8 @@ pub fn accuracy(rows: &[Row]) -> Vec<Accuracy> {
         hu.insert((k.0, k.1, k.2, r.beta_deg.to_bits()), r.result.xi);
     }
     // Groups in first-seen order.
-    let mut order: Vec<(Model, (u64, u64, u64))> = Vec::new();
-    let mut groups: BTreeMap<(usize, (u64, u64, u64)), Vec<(f64, f64)>> = BTreeMap::new();
+    let mut order: Vec<(Model, PointKey)> = Vec::new();
+    let mut groups: BTreeMap<(usize, PointKey), Vec<(f64, f64)>> = BTreeMap::new();
     for r in rows.iter().filter(|r| r.model != Model::Hu2021) {
         let k = key(r);
         let Some(&xi_hu) = hu.get(&(k.0, k.1, k.2, r.beta_deg.to_bits())) else {

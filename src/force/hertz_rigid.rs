@@ -13,8 +13,9 @@
 //!    Hu et al. 2021 for the sphere).
 //!
 //! Hence `F_max = ξ(λ, β) ρ^0.6 U_N^1.2 D² E*^0.4` exactly, as in Hu et al. 2021, Eq. (7).
+use super::hertz_sphere::XI_SPHERE;
 use super::spheroid::Spheroid;
-use super::{hertz_impact, ForceResult, Impact, Particle};
+use super::{ForceResult, Impact, Particle, TAU_HERTZ};
 use std::f64::consts::PI;
 
 /// Johnson 1985, §4.2: approximation of the approach factor F₂ of an elliptical Hertz contact,
@@ -88,10 +89,35 @@ pub fn mass_ratio(s: &Spheroid, lever_arm: f64) -> f64 {
 
 /// ξ(λ, β) of the rigid-spheroid Hertz model: F_max at ρ = U_N = D = E* = 1.
 pub fn xi(lambda: f64, beta: f64) -> f64 {
-    let s = Spheroid::from_volume_diameter(1.0, lambda);
-    let lp = s.lowest_point(beta);
-    let m_eff = PI / 6.0 * mass_ratio(&s, lp.lever_arm);
-    hertz_impact(stiffness(1.0, lp.r_in_plane, lp.r_out_of_plane), m_eff, 1.0).0
+    xi_and_mass_ratio(lambda, beta).0
+}
+
+/// ξ(λ, β) and m_eff/m, in one pass (the hot path of `force-sweep`).
+///
+/// With D = 1: `a = ½ λ^(−1/3)`, `b = λ a`, `h² = a² g` with `g = λ² sin²β + cos²β`, so
+/// `R'/R'' = b²/h² = λ²/g`, `2R_e = 2√(R'R'') = 2a²b/h² = λ^{2/3}/g` and
+/// `m/m_eff = 1 + d²/(I/m) = 1 + 5 (λ² − 1)² sin²β cos²β / (g (1 + λ²))` (a cancels).
+/// From `F_max = k^{2/5} (5 m_eff U²/4)^{3/5}` with `k = (4/3) E* √R_e F₂^{−3/2}`:
+/// `ξ = ξ_sphere · [2R_e (m_eff/m / F₂)³]^{1/5} = ξ_sphere · [λ² r⁹ / g³]^{1/15}`, `r = (m_eff/m)/F₂`
+/// (`ξ_sphere` of Eq. 3, since 2R_e = 1 for the unit sphere). Equal to the step-by-step
+/// construction (test `fast_path_matches`).
+#[inline]
+pub fn xi_and_mass_ratio(lambda: f64, beta: f64) -> (f64, f64) {
+    let (sn, cs) = beta.sin_cos();
+    let (s2, c2, l2) = (sn * sn, cs * cs, lambda * lambda);
+    let g = l2 * s2 + c2;
+    let m_ratio = 1.0 / (1.0 + 5.0 * (l2 - 1.0) * (l2 - 1.0) * s2 * c2 / (g * (1.0 + l2)));
+    // Johnson's F₂ at R'/R'' = λ²/g ≥ 1.
+    let x = (0.0684 * (l2 / g).ln()).exp() - 1.0;
+    let f2 = if x > 0.0 {
+        1.0 - (1.531 * x.ln()).exp()
+    } else {
+        1.0
+    };
+    let r = m_ratio / f2;
+    let r3 = r * r * r;
+    let q = l2 * r3 * r3 * r3 / (g * g * g);
+    (XI_SPHERE * (q.ln() * (1.0 / 15.0)).exp(), m_ratio)
 }
 
 /// Stiffness `k` and effective mass `m_eff` of the contact at inclination β (SI).
@@ -105,17 +131,19 @@ pub fn contact_parameters(p: &Particle, lambda: f64, beta: f64) -> (f64, f64) {
 }
 
 /// `hertz-rigid`: F_max = ξ(λ, β) × ρ^0.6 U_N^1.2 D² E*^0.4; contact time of the Hertzian
-/// impact of m_eff with stiffness k, `t_c = 2.9433 δ_max/U_N`.
+/// impact of m_eff, `t_c = 2.9433 δ_max/U_N` with `δ_max = (5/4) m_eff U_N² / F_max`
+/// (the energy balance `½ m_eff U² = (2/5) F_max δ_max`).
 pub fn evaluate(p: &Particle, imp: &Impact) -> ForceResult {
-    let xi = xi(imp.lambda, imp.beta);
-    let contact_time = if imp.u_n > 0.0 {
-        let (k, m_eff) = contact_parameters(p, imp.lambda, imp.beta);
-        hertz_impact(k, m_eff, imp.u_n).1
+    let (xi, m_ratio) = xi_and_mass_ratio(imp.lambda, imp.beta);
+    let f_max = xi * p.force_scale(imp.u_n);
+    let contact_time = if imp.u_n > 0.0 && f_max > 0.0 {
+        let t = TAU_HERTZ * 1.25 * m_ratio * p.mass() * imp.u_n / f_max;
+        t.is_finite().then_some(t)
     } else {
         None
     };
     ForceResult {
-        f_max: xi * p.force_scale(imp.u_n),
+        f_max,
         xi,
         contact_time,
     }
@@ -124,7 +152,7 @@ pub fn evaluate(p: &Particle, imp: &Impact) -> ForceResult {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::force::hertz_sphere::XI_SPHERE;
+    use crate::force::hertz_impact;
     use std::f64::consts::FRAC_PI_2;
 
     #[test]
@@ -149,6 +177,42 @@ mod tests {
         }
         // F_max ∝ k^0.4: a stiffness error ε is a force error 0.4 ε.
         assert!(worst < 0.02, "worst relative stiffness error {worst}");
+    }
+
+    /// The one-pass ξ against the step-by-step construction (geometry → k, m_eff → energy
+    /// balance), and the contact time against the closed form of the Hertzian impact.
+    #[test]
+    fn fast_path_matches() {
+        for lambda in [1.0, 1.5, 2.0, 3.0, 10.0] {
+            for deg in [0.0, 1.0, 30.0, 45.0, 77.0, 90.0] {
+                let beta = f64::to_radians(deg);
+                let s = Spheroid::from_volume_diameter(1.0, lambda);
+                let lp = s.lowest_point(beta);
+                let m_eff = PI / 6.0 * mass_ratio(&s, lp.lever_arm);
+                let k = stiffness(1.0, lp.r_in_plane, lp.r_out_of_plane);
+                let slow = hertz_impact(k, m_eff, 1.0).0;
+                assert!(
+                    (xi(lambda, beta) / slow - 1.0).abs() < 1e-13,
+                    "λ={lambda} β={deg}"
+                );
+                let p = Particle {
+                    density: 2500.0,
+                    youngs: 64e9,
+                    poisson: 0.24,
+                    diameter: 2.45e-6,
+                };
+                let imp = Impact {
+                    lambda,
+                    beta,
+                    u_n: 0.3,
+                };
+                let (k, m_eff) = contact_parameters(&p, lambda, beta);
+                let (f, t) = hertz_impact(k, m_eff, 0.3);
+                let r = evaluate(&p, &imp);
+                assert!((r.f_max / f - 1.0).abs() < 1e-12);
+                assert!((r.contact_time.unwrap() / t.unwrap() - 1.0).abs() < 1e-12);
+            }
+        }
     }
 
     #[test]

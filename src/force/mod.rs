@@ -35,8 +35,30 @@ pub struct Particle {
 }
 
 impl Particle {
+    /// True if every property is finite and physical (the cheap check of the hot path).
+    #[inline]
+    pub fn is_valid(&self) -> bool {
+        let pos = |v: f64| v.is_finite() && v > 0.0;
+        pos(self.density)
+            && pos(self.youngs)
+            && pos(self.diameter)
+            && self.poisson.is_finite()
+            && self.poisson > -1.0
+            && self.poisson <= 0.5
+    }
+
     /// Checks every property is finite and physical; one-line `Error::Input` otherwise.
+    #[inline]
     pub fn validate(&self) -> Result<()> {
+        if self.is_valid() {
+            Ok(())
+        } else {
+            self.explain()
+        }
+    }
+
+    #[cold]
+    fn explain(&self) -> Result<()> {
         let pos = |key: &str, v: f64| {
             if v.is_finite() && v > 0.0 {
                 Ok(())
@@ -103,8 +125,29 @@ impl Impact {
         Ok(imp)
     }
 
+    /// True if λ ≥ 1, β ∈ [0, π/2] and U_N ≥ 0, all finite (the cheap check of the hot path).
+    #[inline]
+    pub fn is_valid(&self) -> bool {
+        self.lambda.is_finite()
+            && self.lambda >= 1.0
+            && self.beta.is_finite()
+            && (0.0..=std::f64::consts::FRAC_PI_2).contains(&self.beta)
+            && self.u_n.is_finite()
+            && self.u_n >= 0.0
+    }
+
     /// Re-validates an impact built by hand (β in radians, [0, π/2]).
+    #[inline]
     pub fn validate(&self) -> Result<()> {
+        if self.is_valid() {
+            Ok(())
+        } else {
+            self.explain()
+        }
+    }
+
+    #[cold]
+    fn explain(&self) -> Result<()> {
         validate_lambda(self.lambda)?;
         if !(self.beta.is_finite() && (0.0..=std::f64::consts::FRAC_PI_2).contains(&self.beta)) {
             return Err(Error::invalid(
@@ -201,10 +244,13 @@ impl Model {
     }
 
     /// Peak elastic force of one impact.
+    #[inline]
     pub fn evaluate(self, p: &Particle, imp: &Impact) -> Result<ForceResult> {
         p.validate()?;
         imp.validate()?;
-        self.check_lambda(imp.lambda)?;
+        if matches!(self, Model::HertzSphere | Model::Hu2021) {
+            self.check_lambda(imp.lambda)?;
+        }
         Ok(match self {
             Model::HertzSphere => hertz_sphere::evaluate(p, imp.u_n),
             Model::Hu2021 => hu2021::evaluate(p, imp)?,

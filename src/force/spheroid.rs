@@ -106,6 +106,38 @@ mod tests {
         }
     }
 
+    /// Both principal radii against the normal curvature of the implicit surface
+    /// `xᵀAx = 1`: `κ(t) = tᵀAt / |Ap|` for a unit tangent t at the point p.
+    #[test]
+    fn radii_from_implicit_surface_curvature() {
+        for lambda in [1.5, 2.0, 3.0] {
+            let s = Spheroid::from_volume_diameter(2.0, lambda);
+            for beta in [0.0_f64, 0.3, 0.8, 1.2, FRAC_PI_2] {
+                let (sb, cb) = beta.sin_cos();
+                // Body axes: e1 (major) = (cos β, sin β), e2 = (−sin β, cos β), e3 = z.
+                let inv = [1.0 / (s.b * s.b), 1.0 / (s.a * s.a), 1.0 / (s.a * s.a)];
+                // Lowest point: outward normal −y, in body components (−sin β, −cos β, 0).
+                let n = [-sb, -cb, 0.0];
+                let norm = (n[0] * n[0] / inv[0] + n[1] * n[1] / inv[1]).sqrt();
+                let p = [n[0] / inv[0] / norm, n[1] / inv[1] / norm, 0.0];
+                let ap = ((inv[0] * p[0]).powi(2) + (inv[1] * p[1]).powi(2)).sqrt();
+                // In-plane tangent: world x = (cos β, −sin β, 0) in body components; out of plane: z.
+                let k_in = (inv[0] * cb * cb + inv[1] * sb * sb) / ap;
+                let k_out = inv[2] / ap;
+                let lp = s.lowest_point(beta);
+                assert!(
+                    (lp.r_in_plane * k_in - 1.0).abs() < 1e-12,
+                    "λ={lambda} β={beta}"
+                );
+                assert!(
+                    (lp.r_out_of_plane * k_out - 1.0).abs() < 1e-12,
+                    "λ={lambda} β={beta}"
+                );
+                assert!((-(p[0] * sb + p[1] * cb) - lp.height).abs() < 1e-12);
+            }
+        }
+    }
+
     /// The closed forms against a brute-force search over the ellipse in the β plane.
     #[test]
     fn lowest_point_matches_brute_force() {

@@ -10,13 +10,13 @@
 //!   (deterministic); the matching wall times per impact go to `run.toml`
 //!   (`[[dynamic_convergence]]`), so that every CSV is byte-identical between runs;
 //! - SVG figures: `fmax_vs_beta.svg` (Fig. 6), `xi_vs_beta.svg` (Fig. 9) when β varies,
-//!   `fmax_vs_un.svg` (Figs. 8, 10–12) when U_N varies, and always `sphere_check.svg` (Fig. 4);
+//!   `fmax_vs_un.svg` (Figs. 8, 10–12; one panel per (λ, β), at most 12) when U_N varies, and always `sphere_check.svg` (Fig. 4);
 //! - `run.toml`.
 use crate::case::{Case, ParticleSection, SweepSection};
 use crate::cli::ForceSweepArgs;
 use crate::commands::Context;
 use crate::error::{Error, Result};
-use crate::figures::{plot_svg, Kind, Plot, Series};
+use crate::figures::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 use crate::force::report::{self, Accuracy, Convergence};
 use crate::force::sweep::{Row, Sweep};
 use crate::force::{hertz_dynamic, hertz_sphere, material, Impact, Model, Particle};
@@ -320,6 +320,27 @@ fn convergence_outputs(conv: &[(Impact, Particle, Vec<Convergence>)]) -> (CsvTab
     (t, toml::Value::Array(timing))
 }
 
+/// A force unit for axis labels so that `max` reads between 1 and 1000: (factor from N, name).
+fn force_unit(max: f64) -> (f64, &'static str) {
+    const UNITS: [(f64, &str); 6] = [
+        (1.0, "N"),
+        (1e3, "mN"),
+        (1e6, "µN"),
+        (1e9, "nN"),
+        (1e12, "pN"),
+        (1e15, "fN"),
+    ];
+    UNITS
+        .iter()
+        .copied()
+        .find(|&(f, _)| max * f >= 1.0)
+        .unwrap_or(UNITS[5])
+}
+
+fn max_force<'a>(rows: impl Iterator<Item = &'a Row>) -> f64 {
+    rows.map(|r| r.result.f_max).fold(0.0, f64::max)
+}
+
 fn style(m: Model) -> Kind {
     match m {
         Model::Hu2021 => Kind::Markers,
@@ -358,8 +379,13 @@ fn figures(dir: &Path, name: &str, rows: &[Row], sweep: &Sweep, material: &Parti
     }
 
     if betas.len() > 1 {
+        let (fu, unit) = force_unit(max_force(
+            rows.iter()
+                .filter(|r| r.u_n == u_fig && r.particle.diameter == d0),
+        ));
+        let f_label = format!("F_max ({unit})");
         for (file, ylabel, pick) in [
-            ("fmax_vs_beta.svg", "F_max (N)", 0),
+            ("fmax_vs_beta.svg", f_label.as_str(), 0),
             ("xi_vs_beta.svg", "ξ = F_max / (ρ^0.6 U_N^1.2 D² E*^0.4)", 1),
         ] {
             let mut series = Vec::new();
@@ -377,7 +403,7 @@ fn figures(dir: &Path, name: &str, rows: &[Row], sweep: &Sweep, material: &Parti
                             (
                                 r.beta_deg,
                                 if pick == 0 {
-                                    r.result.f_max
+                                    r.result.f_max * fu
                                 } else {
                                     r.result.xi
                                 },
@@ -407,44 +433,44 @@ fn figures(dir: &Path, name: &str, rows: &[Row], sweep: &Sweep, material: &Parti
     }
 
     if us.iter().filter(|&&u| u > 0.0).count() > 1 {
-        let mut series = Vec::new();
-        for &m in &model_list {
-            for &l in &lambdas {
-                for &b in &betas {
-                    let pts: Vec<(f64, f64)> = rows
-                        .iter()
-                        .filter(|r| {
-                            r.model == m
-                                && r.lambda == l
-                                && r.beta_deg == b
-                                && r.particle.diameter == d0
-                                && r.u_n > 0.0
-                        })
-                        .map(|r| (r.u_n, r.result.f_max))
-                        .collect();
-                    series.push(Series::new(
-                        format!("{} λ={} β={}°", m.name(), l, b),
-                        pts,
-                        style(m),
-                    ));
+        // One panel per (λ, β) (at most 12), every model in each: Figs. 8, 10–12.
+        let (fu, unit) = force_unit(max_force(rows.iter().filter(|r| r.particle.diameter == d0)));
+        let mut panels = Vec::new();
+        for &l in &lambdas {
+            for &b in &betas {
+                if panels.len() == 12 {
+                    break;
                 }
+                let series = model_list
+                    .iter()
+                    .map(|&m| {
+                        let pts: Vec<(f64, f64)> = rows
+                            .iter()
+                            .filter(|r| {
+                                r.model == m
+                                    && r.lambda == l
+                                    && r.beta_deg == b
+                                    && r.particle.diameter == d0
+                                    && r.u_n > 0.0
+                            })
+                            .map(|r| (r.u_n, r.result.f_max * fu))
+                            .collect();
+                        Series::new(m.name(), pts, style(m))
+                    })
+                    .collect();
+                panels.push(Plot {
+                    title: format!("{name}: λ = {l}, β = {b}°, D = {} µm", fmt_num(d0 * 1e6)),
+                    x_label: "U_N (m/s)".into(),
+                    y_label: format!("F_max ({unit})"),
+                    series,
+                    log_x: true,
+                    log_y: true,
+                    ..Plot::default()
+                });
             }
         }
-        plot_svg(
-            &dir.join("fmax_vs_un.svg"),
-            &Plot {
-                title: format!(
-                    "{name}: F_max vs U_N (Figs. 8, 10–12 analogue, D = {} µm)",
-                    fmt_num(d0 * 1e6)
-                ),
-                x_label: "U_N (m/s)".into(),
-                y_label: "F_max (N)".into(),
-                series,
-                log_x: true,
-                log_y: true,
-                ..Plot::default()
-            },
-        )?;
+        let cols = panels.len().min(3);
+        plot_grid_svg(&dir.join("fmax_vs_un.svg"), &panels, cols)?;
     }
 
     sphere_check(dir, name, sweep, material)
@@ -488,6 +514,16 @@ fn sphere_check(dir: &Path, name: &str, sweep: &Sweep, material: &Particle) -> R
             Kind::Markers,
         ));
     }
+    let max = series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .fold(0.0, f64::max);
+    let (fu, unit) = force_unit(max);
+    for s in &mut series {
+        for p in &mut s.points {
+            p.1 *= fu;
+        }
+    }
     plot_svg(
         &dir.join("sphere_check.svg"),
         &Plot {
@@ -496,7 +532,7 @@ fn sphere_check(dir: &Path, name: &str, sweep: &Sweep, material: &Particle) -> R
                 worst
             ),
             x_label: "U_N (m/s)".into(),
-            y_label: "F_max (N)".into(),
+            y_label: format!("F_max ({unit})"),
             series,
             log_x: true,
             log_y: true,

@@ -14,6 +14,7 @@ pub mod figures;
 pub mod force;
 pub mod output;
 pub mod progress;
+pub mod report;
 pub mod rng;
 pub mod surface;
 pub mod tally;

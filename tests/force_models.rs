@@ -304,3 +304,45 @@ fn errors() {
     };
     assert!(one_line(Model::HertzRigid.evaluate(&bad, &imp).unwrap_err()).contains("poisson"));
 }
+
+/// Extreme but valid speeds and sizes (physics notes §9): finite numbers out, never NaN.
+#[test]
+fn extreme_inputs_stay_finite() {
+    let tiny = Particle {
+        diameter: 1e-9,
+        ..glass()
+    };
+    let huge = Particle {
+        diameter: 1.0,
+        density: 20_000.0,
+        ..glass()
+    };
+    for p in [glass(), tiny, huge] {
+        for u in [1e-300, 1e-20, 1e-6, 100.0, 1e4] {
+            for lambda in [1.0, 1.5, 3.0, 10.0] {
+                for beta in [0.0, 0.5, 45.0, 89.9, 90.0] {
+                    for m in models_for(lambda) {
+                        if m == Model::Hu2021 && lambda == 10.0 {
+                            continue;
+                        }
+                        let r = m
+                            .evaluate(&p, &Impact::from_deg(lambda, beta, u).unwrap())
+                            .unwrap();
+                        assert!(
+                            r.f_max.is_finite() && r.f_max >= 0.0,
+                            "{m:?} U={u} λ={lambda} β={beta}"
+                        );
+                        assert!(
+                            r.xi.is_finite() && r.xi > 0.0,
+                            "{m:?} U={u} λ={lambda} β={beta}: ξ={}",
+                            r.xi
+                        );
+                        if let Some(t) = r.contact_time {
+                            assert!(t.is_finite() && t >= 0.0, "{m:?} U={u}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

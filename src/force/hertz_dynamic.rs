@@ -246,10 +246,12 @@ pub fn simulate(p: &Particle, imp: &Impact, opts: &Options) -> Outcome {
 /// `hertz-dynamic` for one impact with the given step control.
 pub fn evaluate(p: &Particle, imp: &Impact, opts: &Options) -> ForceResult {
     let out = simulate(p, imp, opts);
-    let xi = if imp.u_n > 0.0 {
-        out.f_max / p.force_scale(imp.u_n)
+    let scale = p.force_scale(imp.u_n);
+    let xi = if imp.u_n > 0.0 && scale > 0.0 && out.f_max > 0.0 {
+        out.f_max / scale
     } else {
-        // U_N → 0: no rotation during the contact, the rigid model's ξ.
+        // U_N → 0 (or a speed so small that the force underflows): no rotation during the
+        // contact, the rigid model's ξ.
         hertz_rigid::xi(imp.lambda, imp.beta)
     };
     ForceResult {

@@ -8,7 +8,9 @@
 //!    `k = (4/3) E* √R_e F₂^{−3/2}` with `R_e = √(R'R'')` and Johnson's approximation of the
 //!    ellipticity factor, `F₂ ≈ 1 − [(R'/R'')^0.0684 − 1]^1.531` (R' ≥ R''; Johnson 1985, §4.2,
 //!    after Fig. 4.4). [`stiffness_exact`] solves the elliptic-integral equations instead; the
-//!    test `johnson_f2_against_exact_elliptic_solution` bounds the approximation's error.
+//!    test `johnson_f2_against_exact_elliptic_solution` bounds the approximation's error, and
+//!    beyond `R'/R''` = 100 (λ > 10 lying flat), where the approximation degrades, the exact
+//!    solution is used.
 //! 4. Energy balance `½ m_eff U_N² = (2/5) k δ_max^{5/2}`, `F_max = k δ_max^{3/2}` (as Eqs. 1–2 of
 //!    Hu et al. 2021 for the sphere).
 //!

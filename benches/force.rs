@@ -64,7 +64,7 @@ fn closed_form(c: &mut Criterion) {
 fn dynamic(c: &mut Criterion) {
     let mut g = c.benchmark_group("force_dynamic_per_impact");
     let imp = Impact::from_deg(2.0, 45.0, 0.0457).unwrap();
-    for n in [16, 32, 200] {
+    for n in [16, 32, 64, 200] {
         let opts = hertz_dynamic::Options {
             steps_per_contact: n,
         };
@@ -81,7 +81,7 @@ fn dynamic(c: &mut Criterion) {
     };
     let imp = Impact::from_deg(3.0, 40.0, 2.0).unwrap();
     let opts = hertz_dynamic::Options::default();
-    g.bench_function("steel 5 mm λ=3 β=40° 200 steps", |b| {
+    g.bench_function("steel 5 mm λ=3 β=40° default (64) steps", |b| {
         b.iter(|| hertz_dynamic::simulate(black_box(&steel), black_box(&imp), &opts))
     });
     g.finish();

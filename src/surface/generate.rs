@@ -327,9 +327,7 @@ mod tests {
             };
             for m in 0..n {
                 let r: f64 = (0..n)
-                    .map(|k| {
-                        w[k] * (2.0 * std::f64::consts::PI * (k * m) as f64 / n as f64).cos()
-                    })
+                    .map(|k| w[k] * (2.0 * std::f64::consts::PI * (k * m) as f64 / n as f64).cos())
                     .sum();
                 assert!((r - per(m as f64) / per(0.0)).abs() < 1e-12, "n {n} m {m}");
             }
@@ -380,7 +378,10 @@ mod tests {
             let (x, z) = (lx as f64, lz as f64);
             let model = h * h * (-(x * x) / (cx * cx) - z * z / (cz * cz)).exp();
             let got = acc[l] / seeds as f64;
-            assert!((got - model).abs() < 0.06, "lag {lx},{lz}: {got} vs {model}");
+            assert!(
+                (got - model).abs() < 0.06,
+                "lag {lx},{lz}: {got} vs {model}"
+            );
         }
     }
 

@@ -25,6 +25,7 @@
 //! its own stream `rng::stream(seed, &[SURFACE_NOISE, block])`, and every FFT runs on one
 //! grid line at a time, so the heights are bit-identical for any number of threads.
 
+use crate::case::SurfaceSpec;
 use crate::rng::{self, domain};
 use crate::surface::HeightField;
 use rand::Rng;
@@ -40,42 +41,17 @@ pub const NOISE_BLOCK: usize = 16;
 /// Output rows transformed per task in the `x` pass (an even number: rows go in pairs).
 const ROW_BLOCK: usize = 8;
 
-/// Parameters of a Garcia–Stoll surface in SI units.
-///
-/// `corr_x_m = None` means `c_Lx = ∞` (the surface is exactly constant along `x`,
-/// `Δξ = 0`); likewise for `z`. Both `None` is a flat wall.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfaceParams {
-    /// Side `L` of the square periodic domain (m).
-    pub length_m: f64,
-    /// Nodes per side `N`; the spacing is `δ = L / N`.
-    pub nodes: usize,
-    /// rms height `h` (m).
-    pub rms_height_m: f64,
-    /// Correlation length `c_Lx` (m), `None` for constant along `x`.
-    pub corr_x_m: Option<f64>,
-    /// Correlation length `c_Lz` (m), `None` for constant along `z`.
-    pub corr_z_m: Option<f64>,
-}
-
-impl SurfaceParams {
-    /// Grid spacing `δ = L / N` (m).
-    pub fn spacing_m(&self) -> f64 {
-        self.length_m / self.nodes as f64
-    }
-}
-
 /// Generates the Garcia–Stoll surface of `p` with the noise of `seed`
 /// (Radenkovic & Simonin 2021, Eqs. 1–2).
 ///
 /// Layout of the result (see [`HeightField`]): `nx = nz = N` with spacing `δ = L/N`,
-/// except that a surface constant along `z` (`corr_z_m = None`, including the flat wall)
+/// except that a surface constant along `z` (`corr_length_z_m = None`, including the flat wall)
 /// is stored with `nz = 1`. A surface constant along `x` keeps `N` identical columns per
 /// row (the triangulation then has exactly zero `x` slopes).
 ///
 /// Preconditions (validated by the caller, e.g. the case resolution): `nodes ≥ 1`,
 /// `length_m > 0`, `rms_height_m ≥ 0`, correlation lengths finite and `> 0`.
-pub fn generate(p: &SurfaceParams, seed: u64) -> HeightField {
+pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
     let n = p.nodes.max(1);
     let d = p.spacing_m();
     let flat = |nz: usize| HeightField {
@@ -86,9 +62,9 @@ pub fn generate(p: &SurfaceParams, seed: u64) -> HeightField {
         heights: vec![0.0; n * nz],
     };
     if p.rms_height_m == 0.0 {
-        return flat(if p.corr_z_m.is_none() { 1 } else { n });
+        return flat(if p.corr_length_z_m.is_none() { 1 } else { n });
     }
-    match (p.corr_x_m, p.corr_z_m) {
+    match (p.corr_length_x_m, p.corr_length_z_m) {
         (None, None) => flat(1),
         (Some(cx), None) => {
             let wx = gaussian_mode_weights(n, d, cx);
@@ -297,13 +273,13 @@ fn make_hermitian(col: &mut [Complex<f64>]) {
 mod tests {
     use super::*;
 
-    fn params(n: usize, len_um: f64, h_um: f64, cx: Option<f64>, cz: Option<f64>) -> SurfaceParams {
-        SurfaceParams {
+    fn params(n: usize, len_um: f64, h_um: f64, cx: Option<f64>, cz: Option<f64>) -> SurfaceSpec {
+        SurfaceSpec {
             length_m: len_um * 1e-6,
             nodes: n,
             rms_height_m: h_um * 1e-6,
-            corr_x_m: cx.map(|c| c * 1e-6),
-            corr_z_m: cz.map(|c| c * 1e-6),
+            corr_length_x_m: cx.map(|c| c * 1e-6),
+            corr_length_z_m: cz.map(|c| c * 1e-6),
         }
     }
 

@@ -51,7 +51,7 @@ pub fn height_map_svg(path: &Path, f: &HeightField, title: &str) -> Result<()> {
             hi = hi.max(node(ix, iz));
         }
     }
-    if !(hi > lo) {
+    if hi <= lo {
         // Flat window: any non-empty colour range.
         lo -= 1e-3;
         hi += 1e-3;

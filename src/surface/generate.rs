@@ -165,7 +165,7 @@ fn gaussian_field(nx: usize, nz: usize, wx: &[f64], wz: &[f64], h: f64, seed: u6
     // Pass 1: noise, amplitude, inverse FFT along z — one column (kx) at a time.
     let mut spec = vec![Complex::new(0.0f64, 0.0); nxh * nz];
     let scratch_z = fft_z.get_inplace_scratch_len();
-    let nyquist = (nx % 2 == 0).then_some(nx / 2);
+    let nyquist = nx.is_multiple_of(2).then_some(nx / 2);
     spec.par_chunks_mut(NOISE_BLOCK * nz)
         .enumerate()
         .for_each_init(
@@ -264,7 +264,7 @@ fn make_hermitian(col: &mut [Complex<f64>]) {
     for k in 1..n.div_ceil(2) {
         col[n - k] = col[k].conj();
     }
-    if n % 2 == 0 && n > 1 {
+    if n.is_multiple_of(2) && n > 1 {
         col[n / 2] = Complex::new(col[n / 2].re * s, 0.0);
     }
 }

@@ -85,8 +85,8 @@ pub const MAX_NODES: u64 = 40_000 * 40_000;
 /// over-long data, non-finite heights — is an `Error::Input` naming the file.
 pub fn read_heights(path: &Path) -> Result<HeightField> {
     let bad = |what: String| Error::Input(format!("{}: {what}", path.display()));
-    let mut file = std::fs::File::open(path)
-        .map_err(|e| bad(format!("cannot open the height file: {e}")))?;
+    let mut file =
+        std::fs::File::open(path).map_err(|e| bad(format!("cannot open the height file: {e}")))?;
     let len = file
         .metadata()
         .map_err(|e| bad(format!("cannot read the height file: {e}")))?

@@ -554,6 +554,7 @@ fn run_chunk(
 /// approximation of fdlibm's `__ieee754_asin` on `[0, 0.5]` and its reduction
 /// `asin x = π/2 − 2 asin √((1 − x)/2)` above. Absolute error below 1e-15.
 #[inline(always)]
+#[allow(clippy::excessive_precision)] // fdlibm's coefficients, digits as published
 pub fn asin_fast(x: f64) -> f64 {
     const PS0: f64 = 1.666_666_666_666_666_57e-1;
     const PS1: f64 = -3.255_658_186_224_009_15e-1;

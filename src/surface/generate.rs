@@ -34,6 +34,10 @@ use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 use rustfft::FftPlanner;
 
+/// Variance fraction below which a whole `k_x` column of the spectrum is left at zero
+/// (its heights would be below 1e-20 h, far under double-precision rounding).
+pub const NEGLIGIBLE: f64 = 1e-40;
+
 /// Number of `k_x` columns of the half-spectrum drawn from one random stream.
 /// Fixed (never derived from the thread count) so that results do not depend on it.
 pub const NOISE_BLOCK: usize = 16;
@@ -155,6 +159,13 @@ pub fn gaussian_mode_weights(n: usize, spacing: f64, c: f64) -> Vec<f64> {
 /// (`a + i b` trick: the inverse DFT of `A + iB` with Hermitian `A`, `B` is `a + i b`).
 fn gaussian_field(nx: usize, nz: usize, wx: &[f64], wz: &[f64], h: f64, seed: u64) -> Vec<f64> {
     let nxh = nx / 2 + 1;
+    // Columns kx ≥ kcut carry a variance fraction below NEGLIGIBLE: they stay exactly
+    // zero (no noise drawn, no FFT), which changes heights by less than 1e-20 h.
+    let wz_max = wz.iter().copied().fold(0.0, f64::max);
+    let kcut = (0..nxh)
+        .rev()
+        .find(|&k| wx[k] * wz_max >= NEGLIGIBLE)
+        .map_or(1, |k| k + 1);
     let ax: Vec<f64> = wx[..nxh].iter().map(|w| h * w.sqrt()).collect();
     let az: Vec<f64> = wz.iter().map(|w| w.sqrt()).collect();
 
@@ -174,6 +185,9 @@ fn gaussian_field(nx: usize, nz: usize, wx: &[f64], wz: &[f64], h: f64, seed: u6
                 let mut rng = rng::stream(seed, &[domain::SURFACE_NOISE, block as u64]);
                 for (j, col) in cols.chunks_mut(nz).enumerate() {
                     let kx = block * NOISE_BLOCK + j;
+                    if kx >= kcut {
+                        break;
+                    }
                     for c in col.iter_mut() {
                         let re: f64 = rng.sample(StandardNormal);
                         let im: f64 = rng.sample(StandardNormal);
@@ -216,7 +230,7 @@ fn gaussian_field(nx: usize, nz: usize, wx: &[f64], wz: &[f64], h: f64, seed: u6
             |(half, full, scratch), (rb, out)| {
                 let rows = out.len() / nx;
                 let iz0 = rb * ROW_BLOCK;
-                for kx in 0..nxh {
+                for kx in 0..kcut {
                     let src = &spec[kx * nz + iz0..kx * nz + iz0 + rows];
                     for (r, &v) in src.iter().enumerate() {
                         half[r * nxh + kx] = v;

@@ -13,6 +13,7 @@ pub mod error;
 pub mod figures;
 pub mod output;
 pub mod progress;
+pub mod report;
 pub mod rng;
 pub mod surface;
 pub mod tally;

@@ -2,5 +2,6 @@
 //!
 //! The modules follow the pipeline of a run: case → wall (generated surface or
 //! statistical wall) → incident particles → collision law → tallies → outputs.
+pub mod deterministic;
 pub mod rng;
 pub mod surface;

@@ -52,6 +52,8 @@ pub enum Fate {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct History {
     pub fate: Fate,
+    /// Incident velocity.
+    pub incident: Vector3<f64>,
     /// Number of collisions with the surface.
     pub collisions: u32,
     /// Unit normal of the first triangle hit (`j` if there was no collision).
@@ -101,8 +103,10 @@ enum Walk {
     Lost(LostReason),
 }
 
-/// Coarse map of tile maxima (`TILE × TILE` cells, nodes on the tile border included).
+/// Coarse map of tile maxima (`twx × twz` cells, nodes on the tile border included).
 struct Tiles {
+    twx: usize,
+    twz: usize,
     ntx: usize,
     ntz: usize,
     max: Vec<f64>,
@@ -178,23 +182,41 @@ impl<'a> Tracker<'a> {
         let hmax = field.max_height();
         let hmin = field.heights.iter().copied().fold(f64::INFINITY, f64::min);
         let tol = 1e-9 * ((hmax - hmin) + dx + dz);
-        let tiles = if nx % TILE == 0 && nz % TILE == 0 && nx >= 2 * TILE && nz >= 2 * TILE {
-            let (ntx, ntz) = (nx / TILE, nz / TILE);
-            let mut max = vec![f64::NEG_INFINITY; ntx * ntz];
-            for tz in 0..ntz {
-                for tx in 0..ntx {
-                    let mut m = f64::NEG_INFINITY;
-                    for iz in tz * TILE..=(tz + 1) * TILE {
-                        for ix in tx * TILE..=(tx + 1) * TILE {
-                            m = m.max(field.at(ix, iz));
-                        }
-                    }
-                    max[tz * ntx + tx] = m;
-                }
+        // Tile width per axis: TILE cells, or the whole axis when it has one node
+        // (a surface constant along it); no map if an axis does not divide evenly.
+        let width = |n: usize| {
+            if n == 1 {
+                Some(1)
+            } else if n % TILE == 0 && n >= 2 * TILE {
+                Some(TILE)
+            } else {
+                None
             }
-            Some(Tiles { ntx, ntz, max })
-        } else {
-            None
+        };
+        let tiles = match (width(nx), width(nz)) {
+            (Some(twx), Some(twz)) if nx * nz >= 2 * TILE => {
+                let (ntx, ntz) = (nx / twx, nz / twz);
+                let mut max = vec![f64::NEG_INFINITY; ntx * ntz];
+                for tz in 0..ntz {
+                    for tx in 0..ntx {
+                        let mut m = f64::NEG_INFINITY;
+                        for iz in tz * twz..=(tz + 1) * twz {
+                            for ix in tx * twx..=(tx + 1) * twx {
+                                m = m.max(field.at(ix, iz));
+                            }
+                        }
+                        max[tz * ntx + tx] = m;
+                    }
+                }
+                Some(Tiles {
+                    twx,
+                    twz,
+                    ntx,
+                    ntz,
+                    max,
+                })
+            }
+            _ => None,
         };
         // Enough for a ray descending from the top to the bottom at 0.001° over
         // the whole range, several periods, and then some.
@@ -365,6 +387,7 @@ impl<'a> Tracker<'a> {
     {
         let mut hist = History {
             fate: Fate::Escaped,
+            incident: u,
             collisions: 0,
             first_normal: Vector3::y(),
             first_velocity: u,
@@ -493,7 +516,10 @@ impl<'a> Tracker<'a> {
         };
         let mut t_cur = 0.0_f64;
         let mut g_cur = g0;
-        let tw = TILE as i64;
+        let (twx, twz) = match &self.tiles {
+            Some(t) => (t.twx as i64, t.twz as i64),
+            None => (1, 1),
+        };
         let mut checked_tile = (i64::MIN, i64::MIN);
         loop {
             *steps += 1;
@@ -502,7 +528,7 @@ impl<'a> Tracker<'a> {
             }
             // Coarse skip: on entering a tile, jump over whole tiles the ray passes above.
             if let Some(tiles) = &self.tiles {
-                let tile = (cell.ix.div_euclid(tw), cell.iz.div_euclid(tw));
+                let tile = (cell.ix.div_euclid(twx), cell.iz.div_euclid(twz));
                 if tile == checked_tile {
                     // Already known to need the cell walk.
                 } else if let Some((t_new, c_new, g_new)) =
@@ -521,7 +547,7 @@ impl<'a> Tracker<'a> {
                             Walk::Lost(LostReason::BelowSurface)
                         };
                     }
-                    checked_tile = (cell.ix.div_euclid(tw), cell.iz.div_euclid(tw));
+                    checked_tile = (cell.ix.div_euclid(twx), cell.iz.div_euclid(twz));
                 } else {
                     checked_tile = tile;
                 }
@@ -687,30 +713,30 @@ impl<'a> Tracker<'a> {
         t_cur: f64,
         t_y: f64,
     ) -> Option<(f64, Cell, f64)> {
-        let tw = TILE as i64;
+        let (twx, twz) = (tiles.twx as i64, tiles.twz as i64);
         let mut c = *cell;
         let mut t = t_cur;
         let mut skipped = false;
         let mut last_axis_x = true;
         loop {
             // Tile of the current cell (unwrapped) and its exit time.
-            let tx = c.ix.div_euclid(tw);
-            let tz = c.iz.div_euclid(tw);
-            let wtx = c.wx / TILE;
-            let wtz = c.wz / TILE;
+            let tx = c.ix.div_euclid(twx);
+            let tz = c.iz.div_euclid(twz);
+            let wtx = c.wx / tiles.twx;
+            let wtz = c.wz / tiles.twz;
             debug_assert!(wtx < tiles.ntx && wtz < tiles.ntz);
             let tmax = tiles.max[wtz * tiles.ntx + wtx];
             let tx_exit = if d.x > 0.0 {
-                (((tx + 1) * tw) as f64 * self.dx - o.x) / d.x
+                (((tx + 1) * twx) as f64 * self.dx - o.x) / d.x
             } else if d.x < 0.0 {
-                ((tx * tw) as f64 * self.dx - o.x) / d.x
+                ((tx * twx) as f64 * self.dx - o.x) / d.x
             } else {
                 f64::INFINITY
             };
             let tz_exit = if d.z > 0.0 {
-                (((tz + 1) * tw) as f64 * self.dz - o.z) / d.z
+                (((tz + 1) * twz) as f64 * self.dz - o.z) / d.z
             } else if d.z < 0.0 {
-                ((tz * tw) as f64 * self.dz - o.z) / d.z
+                ((tz * twz) as f64 * self.dz - o.z) / d.z
             } else {
                 f64::INFINITY
             };
@@ -734,20 +760,20 @@ impl<'a> Tracker<'a> {
             let pz = o.z + d.z * t_out;
             if tx_exit <= tz_exit {
                 let target = if d.x > 0.0 {
-                    (tx + 1) * tw
+                    (tx + 1) * twx
                 } else {
-                    tx * tw - 1
+                    tx * twx - 1
                 };
-                let jz = ((pz / self.dz).floor() as i64).clamp(tz * tw, tz * tw + tw - 1);
+                let jz = ((pz / self.dz).floor() as i64).clamp(tz * twz, tz * twz + twz - 1);
                 self.move_to(&mut c, target, jz);
                 last_axis_x = true;
             } else {
                 let target = if d.z > 0.0 {
-                    (tz + 1) * tw
+                    (tz + 1) * twz
                 } else {
-                    tz * tw - 1
+                    tz * twz - 1
                 };
-                let jx = ((px / self.dx).floor() as i64).clamp(tx * tw, tx * tw + tw - 1);
+                let jx = ((px / self.dx).floor() as i64).clamp(tx * twx, tx * twx + twx - 1);
                 self.move_to(&mut c, jx, target);
                 last_axis_x = false;
             }

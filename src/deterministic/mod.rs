@@ -1,76 +1,62 @@
 //! `rebound deterministic`: particle-centre bouncing on a generated anisotropic
 //! rough wall (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5 and 4; physics notes §5).
+pub mod plots;
 pub mod scene;
 pub mod trace;
 
 pub use trace::{Fate, History, HitInfo, LostReason, Tracker, DEFAULT_MAX_COLLISIONS};
 
+use crate::angles::{gamma_from_normal, incident_angles, wrap_pi, xi_zeta_of_normal};
+use crate::case::{IncidentCondition, SpeedLaw};
+use crate::collision::CollisionLaw;
 use crate::rng;
+use crate::tally::{Bin, ConditionExtras, ConditionResult, Curve, Outcome};
+use crate::wall::{delta_gamma, Deviations};
 use nalgebra::Vector3;
 use rand::Rng;
 use rand_distr::{Distribution, Normal};
 use rayon::prelude::*;
 
-/// Law of the incident horizontal speed `|U⁻| cos α⁻` (m/s).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SpeedLaw {
-    /// Every particle has `|U⁻| = 1 m/s` (ideal elastic results do not depend on it).
-    Unit,
-    /// Normal law of the horizontal speed (Radenkovic & Simonin 2021, Sec. 4:
-    /// `N(5.91, 1.16)` m/s after Sommerfeld & Huber); non-positive draws are redrawn.
-    Normal { mean: f64, std: f64 },
-}
-
-/// Draws the horizontal speed: redraws non-positive values (up to 64 times),
-/// then falls back to the mean.
-fn draw_speed<R: Rng>(law: SpeedLaw, r: &mut R) -> f64 {
-    match law {
-        SpeedLaw::Unit => 1.0,
-        SpeedLaw::Normal { mean, std } => {
-            if let Ok(n) = Normal::new(mean, std.max(0.0)) {
-                for _ in 0..64 {
-                    let v = n.sample(r);
-                    if v > 0.0 && v.is_finite() {
-                        return v;
-                    }
+/// Draws the horizontal speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4);
+/// non-positive draws are redrawn (up to 64 times, then the mean is used).
+/// With `std = 0` nothing is drawn.
+fn draw_speed<R: Rng>(law: &SpeedLaw, r: &mut R) -> f64 {
+    if law.std_m_s > 0.0 {
+        if let Ok(n) = Normal::new(law.mean_m_s, law.std_m_s) {
+            for _ in 0..64 {
+                let v = n.sample(r);
+                if v > 0.0 && v.is_finite() {
+                    return v;
                 }
             }
-            mean.abs().max(f64::MIN_POSITIVE)
         }
     }
+    law.mean_m_s
 }
 
 /// Incident velocity for angles `alpha < 0`, `beta` (rad) and horizontal speed
-/// `u_h` (physics notes §1: `U = |U| (cos α cos β, sin α, −cos α sin β)`).
-/// At normal incidence (`cos α ≈ 0`) the drawn speed is taken as `|U|`.
+/// `u_h` (physics notes §1: `U = |U| (cos α cos β, sin α, −cos α sin β)`,
+/// `|U| = u_h / cos α`). At normal incidence (`cos α ≤ 1e-9`) the drawn speed is
+/// taken as `|U|`.
 pub fn incident_velocity(alpha: f64, beta: f64, u_h: f64) -> Vector3<f64> {
     let ca = alpha.cos();
     let speed = if ca > 1e-9 { u_h / ca } else { u_h };
     Vector3::new(ca * beta.cos(), alpha.sin(), -ca * beta.sin()) * speed
 }
 
-/// One incident condition of a run.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Condition {
-    /// Index of the condition in the case (keys the random streams).
-    pub index: u64,
-    /// Incident angles (rad).
-    pub alpha: f64,
-    pub beta: f64,
-}
-
-/// Shoots `count` particles of condition `cond` at the tracker's surface, in
-/// parallel; particle `i` draws its start `(x, z)` (uniform over the period) and
-/// speed from `rng::stream(seed, &[DETERMINISTIC, cond.index, i])`, so the
-/// histories (returned in particle order) do not depend on the thread count.
+/// Shoots `count` particles of one condition at the tracker's surface, in parallel;
+/// particle `i` draws its start `(x, z)` (uniform over the period) and its
+/// horizontal speed from `rng::stream(seed, &[DETERMINISTIC, cond_index, i])`, so
+/// the histories (returned in particle order) do not depend on the thread count.
 /// Incident spin is zero (Radenkovic & Simonin 2021, Sec. 4).
 pub fn simulate<C>(
     tracker: &Tracker<'_>,
     collide: &C,
-    cond: Condition,
+    cond: IncidentCondition,
+    cond_index: u64,
     count: usize,
     seed: u64,
-    speed: SpeedLaw,
+    speed: &SpeedLaw,
 ) -> Vec<History>
 where
     C: Fn(Vector3<f64>, Vector3<f64>, Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) + Sync,
@@ -79,12 +65,196 @@ where
     (0..count)
         .into_par_iter()
         .map(|i| {
-            let mut r = rng::stream(seed, &[rng::domain::DETERMINISTIC, cond.index, i as u64]);
+            let mut r = rng::stream(seed, &[rng::domain::DETERMINISTIC, cond_index, i as u64]);
             let x = r.gen::<f64>() * lx;
             let z = r.gen::<f64>() * lz;
             let u_h = draw_speed(speed, &mut r);
-            let u = incident_velocity(cond.alpha, cond.beta, u_h);
-            tracker.trace(x, z, u, Vector3::zeros(), |u, w, n| collide(u, w, n))
+            let u = incident_velocity(cond.alpha_in, cond.beta_in, u_h);
+            tracker.trace(x, z, u, Vector3::zeros(), collide)
         })
         .collect()
+}
+
+/// The tallied record of a followed history (`None` for a lost one).
+///
+/// `xi_first`, `zeta_first` are `ξ − 90°`, `ζ − 90°` of the first normal seen,
+/// `γ`, `γ*` from Radenkovic & Simonin 2021, Eqs. (20)–(21) (notes §2) with the
+/// incident `β⁻`; the deviations are wrapped into (−180°, 180°].
+pub fn outcome(h: &History, beta_in: f64) -> Option<Outcome> {
+    if h.fate != Fate::Escaped {
+        return None;
+    }
+    let (alpha_out, beta_out) = incident_angles(&h.velocity);
+    let (_, beta_first) = incident_angles(&h.first_velocity);
+    let (xi, zeta) = xi_zeta_of_normal(&h.first_normal);
+    let (gamma, gamma_star) = gamma_from_normal(&h.first_normal, beta_in);
+    let s_in = h.incident.norm();
+    Some(Outcome {
+        alpha_out,
+        beta_out,
+        dbeta: wrap_pi(beta_out - beta_in),
+        dbeta_first: Some(wrap_pi(beta_first - beta_in)),
+        xi_first: xi,
+        zeta_first: zeta,
+        gamma_first: gamma,
+        gamma_star_first: gamma_star,
+        collisions: Some(h.collisions),
+        speed_ratio: if s_in > 0.0 {
+            h.velocity.norm() / s_in
+        } else {
+            1.0
+        },
+    })
+}
+
+/// Counts of lost histories by reason.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LostCounts {
+    pub collision_cap: u64,
+    pub below_surface: u64,
+    pub step_budget: u64,
+    pub stopped: u64,
+}
+
+impl LostCounts {
+    pub fn total(&self) -> u64 {
+        self.collision_cap + self.below_surface + self.step_budget + self.stopped
+    }
+
+    fn add(&mut self, r: LostReason) {
+        match r {
+            LostReason::CollisionCap => self.collision_cap += 1,
+            LostReason::BelowSurface => self.below_surface += 1,
+            LostReason::StepBudget => self.step_budget += 1,
+            LostReason::Stopped => self.stopped += 1,
+        }
+    }
+
+    /// `"N hit the cap …, M …"` for warnings; empty when nothing was lost.
+    pub fn describe(&self) -> String {
+        [
+            (self.collision_cap, LostReason::CollisionCap),
+            (self.below_surface, LostReason::BelowSurface),
+            (self.step_budget, LostReason::StepBudget),
+            (self.stopped, LostReason::Stopped),
+        ]
+        .iter()
+        .filter(|(n, _)| *n > 0)
+        .map(|(n, r)| format!("{n} {}", r.describe()))
+        .collect::<Vec<_>>()
+        .join(", ")
+    }
+}
+
+/// Everything one condition produced.
+#[derive(Clone, Debug)]
+pub struct ConditionRun {
+    pub condition: IncidentCondition,
+    /// Outcomes of the followed histories, in particle order.
+    pub outcomes: Vec<Outcome>,
+    pub lost: LostCounts,
+    /// Mean `β⁺` (rad, circular mean) and the particle-averaged model
+    /// `tanh(ψ α⁺ / Δγ(β⁺))` (Eqs. 34–35) per `α⁺` bin: the Fig. 12 model curve.
+    pub p_single_model: Vec<Bin>,
+}
+
+/// Radenkovic & Simonin 2021, Eq. (34) with Δγ(β⁺) of Eq. (35): probability that a
+/// rebound at `(α⁺, β⁺)` followed a single collision. `Δγ = 0` (smooth wall) gives 1
+/// for `α⁺ > 0`.
+pub fn p_single_model(dev: &Deviations, psi: f64, alpha_out: f64, beta_out: f64) -> f64 {
+    if alpha_out < 0.0 {
+        return 0.0;
+    }
+    let dg = delta_gamma(dev, beta_out);
+    if dg > 0.0 {
+        (psi * alpha_out / dg).tanh()
+    } else if alpha_out > 0.0 {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+/// The Fig. 12 model curve for a set of outcomes: per `α⁺` bin of `bin_width_deg`
+/// (the bins of `p_single_given_alpha_out`), the mean over the bin's particles of
+/// `tanh(ψ α⁺ / Δγ(β⁺))` — the model evaluated at each particle's own `(α⁺, β⁺)`.
+pub fn p_single_model_curve(
+    outcomes: &[Outcome],
+    dev: &Deviations,
+    psi: f64,
+    bin_width_deg: f64,
+) -> Vec<Bin> {
+    let nb = (90.0 / bin_width_deg).ceil() as usize;
+    let mut sum = vec![0.0; nb];
+    let mut cnt = vec![0u64; nb];
+    for o in outcomes {
+        let a = o.alpha_out.to_degrees();
+        if a >= 0.0 {
+            let i = ((a / bin_width_deg).floor() as usize).min(nb - 1);
+            sum[i] += p_single_model(dev, psi, o.alpha_out, o.beta_out);
+            cnt[i] += 1;
+        }
+    }
+    (0..nb)
+        .filter(|&i| cnt[i] > 0)
+        .map(|i| Bin {
+            lo: i as f64 * bin_width_deg,
+            hi: (i + 1) as f64 * bin_width_deg,
+            value: sum[i] / cnt[i] as f64,
+        })
+        .collect()
+}
+
+/// Runs one condition with collision law `law` (sphere diameter `diameter_m`).
+#[allow(clippy::too_many_arguments)]
+pub fn run_condition(
+    tracker: &Tracker<'_>,
+    law: &CollisionLaw,
+    diameter_m: f64,
+    cond: IncidentCondition,
+    cond_index: u64,
+    count: usize,
+    seed: u64,
+    speed: &SpeedLaw,
+    dev: &Deviations,
+    psi: f64,
+    bin_width_deg: f64,
+) -> ConditionRun {
+    let collide = |u, w, n| law.collide(u, w, n, diameter_m);
+    let histories = simulate(tracker, &collide, cond, cond_index, count, seed, speed);
+    let mut lost = LostCounts::default();
+    let mut outcomes = Vec::with_capacity(histories.len());
+    for h in &histories {
+        match h.fate {
+            Fate::Lost(r) => lost.add(r),
+            Fate::Escaped => outcomes.extend(outcome(h, cond.beta_in)),
+        }
+    }
+    let p_single_model = p_single_model_curve(&outcomes, dev, psi, bin_width_deg);
+    ConditionRun {
+        condition: cond,
+        outcomes,
+        lost,
+        p_single_model,
+    }
+}
+
+impl ConditionRun {
+    /// The `summary.csv` row and `pdfs.csv` rows (plus the `p_single_model` curve).
+    pub fn tally(&self, dev: &Deviations, bin_width_deg: f64) -> ConditionResult {
+        ConditionResult::from_outcomes(
+            self.condition,
+            *dev,
+            &self.outcomes,
+            bin_width_deg,
+            ConditionExtras {
+                lost: Some(self.lost.total()),
+                p_single: None,
+                curves: vec![Curve {
+                    quantity: "p_single_model".into(),
+                    bins: self.p_single_model.clone(),
+                }],
+            },
+        )
+    }
 }

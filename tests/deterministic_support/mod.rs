@@ -117,3 +117,67 @@ pub fn std(v: &[f64]) -> f64 {
     let (m, _) = mean_se(v);
     (v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0)).sqrt()
 }
+
+use rebound::case::{IncidentCondition, SpeedLaw};
+use rebound::collision::CollisionLaw;
+use rebound::deterministic::{run_condition, ConditionRun, Tracker};
+use rebound::wall::Deviations;
+
+/// A Gaussian wall with normal-angle deviations `(Δξ, Δζ)` in degrees (Eq. 15,
+/// `c_L = √2 h / Δ`, `h = 1`), spacing `c_L,min / per_c`, side `≥ side · c_L,max`.
+pub fn wall(dxi_deg: f64, dzeta_deg: f64, per_c: f64, side: f64, seed: u64) -> HeightField {
+    let c = |d: f64| (d > 0.0).then(|| 2f64.sqrt() / d.to_radians());
+    let (cx, cz) = (c(dxi_deg), c(dzeta_deg));
+    let cs: Vec<f64> = [cx, cz].into_iter().flatten().collect();
+    let cmin = cs.iter().copied().fold(f64::INFINITY, f64::min);
+    let cmax = cs.iter().copied().fold(0.0, f64::max);
+    let d = cmin / per_c;
+    let n = ((side * cmax / d).ceil() as usize).div_ceil(8) * 8;
+    gaussian_surface(n, d, 1.0, cx, cz, seed)
+}
+
+pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> Deviations {
+    Deviations {
+        delta_xi: dxi_deg.to_radians(),
+        delta_zeta: dzeta_deg.to_radians(),
+    }
+}
+
+/// Runs one condition (angles in degrees) with 1-degree bins and ψ = 2.
+#[allow(clippy::too_many_arguments)]
+pub fn run(
+    tracker: &Tracker<'_>,
+    law: &CollisionLaw,
+    dv: &Deviations,
+    alpha_deg: f64,
+    beta_deg: f64,
+    index: u64,
+    count: usize,
+    speed: SpeedLaw,
+) -> ConditionRun {
+    run_condition(
+        tracker,
+        law,
+        500e-6,
+        IncidentCondition {
+            alpha_in: alpha_deg.to_radians(),
+            beta_in: beta_deg.to_radians(),
+        },
+        index,
+        count,
+        42,
+        &speed,
+        dv,
+        2.0,
+        1.0,
+    )
+}
+
+pub const UNIT: SpeedLaw = SpeedLaw {
+    mean_m_s: 1.0,
+    std_m_s: 0.0,
+};
+
+pub fn deg(v: impl Iterator<Item = f64>) -> Vec<f64> {
+    v.map(f64::to_degrees).collect()
+}

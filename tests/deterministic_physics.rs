@@ -120,4 +120,136 @@ fn sec3_walls_reproduce_the_papers_findings() {
             }
         }
     }
+    let checked: usize = [(&w1, dev(2.5, 7.5)), (&w2, dev(7.5, 2.5))]
+        .iter()
+        .flat_map(|(ws, dv)| ws.iter().map(move |(a, b, r)| fig12_check(r, dv, *a, *b)))
+        .sum();
+    assert!(checked >= 4, "only {checked} bins with ≥ 1000 particles");
+}
+
+/// Fig. 12: P(n = 1 | α⁺) follows tanh(2 α⁺/Δγ(β⁺)) (Eqs. 34–35) within 0.1 in every 1°
+/// bin of the first rebound angle holding at least 1000 particles (the model averaged
+/// over the bin's particles at their own β⁺). Returns the number of bins checked.
+fn fig12_check(r: &ConditionRun, dv: &rebound::wall::Deviations, a: f64, b: f64) -> usize {
+    let mut count = vec![0usize; 180];
+    for &(a1, _) in &r.first_rebound {
+        count[((a1.to_degrees() + 90.0).floor() as usize).min(179)] += 1;
+    }
+    let (ds, model) = r.fig12_curves(dv, 2.0, 1.0);
+    let mut checked = 0;
+    for (d, m) in ds.iter().zip(&model) {
+        let n = count[(d.lo + 90.0).round() as usize];
+        if n >= 1000 {
+            assert!(
+                (d.value - m.value).abs() < 0.1,
+                "a {a} b {b} bin {}: DS {} vs model {}",
+                d.lo,
+                d.value,
+                m.value
+            );
+            checked += 1;
+        }
+    }
+    checked
+}
+
+#[test]
+fn single_collision_probability_follows_the_tanh_model() {
+    let mut checked = 0;
+    for (dxi, dze, seed) in [(2.5, 7.5, 7), (7.5, 2.5, 8)] {
+        let f = wall(dxi, dze, 8.0, 40.0, seed);
+        let t = Tracker::new(&f, 1000).unwrap();
+        let dv = dev(dxi, dze);
+        for (k, (a, b)) in [(-2.5, 0.0), (-2.5, 60.0), (-12.5, 60.0)]
+            .into_iter()
+            .enumerate()
+        {
+            let r = run(
+                &t,
+                &CollisionLaw::Elastic,
+                &dv,
+                a,
+                b,
+                k as u64,
+                40_000,
+                UNIT,
+            );
+            checked += fig12_check(&r, &dv, a, b);
+        }
+    }
+    assert!(checked >= 30, "only {checked} bins with ≥ 1000 particles");
+}
+
+#[test]
+fn isotropic_wall_has_no_mean_transverse_deviation() {
+    let f = wall(5.0, 5.0, 8.0, 100.0, 3);
+    let t = Tracker::new(&f, 1000).unwrap();
+    let dv = dev(5.0, 5.0);
+    let mut k = 0;
+    for a in [-5.0, -15.0, -30.0] {
+        for b in [0.0, 30.0, 60.0, 90.0] {
+            let r = run(&t, &CollisionLaw::Elastic, &dv, a, b, k, N, UNIT);
+            k += 1;
+            assert_eq!(r.lost.total(), 0);
+            let (m, se, _) = stats(&r, |o| o.dbeta);
+            assert!(m.abs() < 3.0 * se, "a {a} b {b}: mean dbeta {m} ± {se}");
+        }
+    }
+}
+
+#[test]
+fn sommerfeld_huber_never_gains_energy_and_keeps_the_pushing_direction() {
+    // Sec. 4: glass on steel, D = 500 µm, u ~ N(5.91, 1.16) m/s, on the high-anisotropy
+    // wall (3.8°, 7.5°) and the 2-D wall (3.8°, 0°).
+    let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
+    let speed = rebound::case::SpeedLaw {
+        mean_m_s: 5.91,
+        std_m_s: 1.16,
+    };
+    let hra = wall(3.8, 7.5, 8.0, 40.0, 4);
+    let two_d = wall(3.8, 0.0, 8.0, 40.0, 5);
+    for (f, dv, sign) in [(&hra, dev(3.8, 7.5), -1.0), (&two_d, dev(3.8, 0.0), 1.0)] {
+        let t = Tracker::new(f, 1000).unwrap();
+        for (k, a) in [-5.0, -25.0, -45.0].into_iter().enumerate() {
+            let r = run(&t, &law, &dv, a, 60.0, k as u64, N, speed);
+            assert_eq!(r.lost.total(), 0, "a {a}: {}", r.lost.describe());
+            for o in &r.outcomes {
+                assert!(o.speed_ratio <= 1.0 + 1e-12 && o.speed_ratio > 0.0);
+            }
+            // Fig. 16: E(β⁺ − β⁻) is negative on the high-anisotropy wall and positive on the 2-D wall.
+            let (m, se, _) = stats(&r, |o| o.dbeta);
+            eprintln!(
+                "SH {:?} a {a} b 60: mean dbeta {m:.3} ± {se:.3}",
+                (dv.delta_xi.to_degrees(), dv.delta_zeta.to_degrees())
+            );
+            assert!(sign * m > 3.0 * se, "a {a}: mean dbeta {m} ± {se}");
+        }
+    }
+}
+
+#[test]
+fn two_d_wall_deflects_nothing_along_the_principal_directions() {
+    // Δζ = 0: the normal has no z component, so at β⁻ = 0° no particle is deflected
+    // sideways; at β⁻ = 90° (flight along the ridges) the mean deviation vanishes.
+    let f = wall(3.8, 0.0, 8.0, 40.0, 6);
+    assert_eq!(f.nz, 1);
+    let t = Tracker::new(&f, 1000).unwrap();
+    let dv = dev(3.8, 0.0);
+    for law in [
+        CollisionLaw::Elastic,
+        CollisionLaw::SommerfeldHuber(ShParams::glass_steel()),
+    ] {
+        let r = run(&t, &law, &dv, -15.0, 0.0, 0, 2000, UNIT);
+        assert_eq!(r.lost.total(), 0);
+        assert!(
+            r.outcomes
+                .iter()
+                .all(|o| o.dbeta.abs() < 1e-12
+                    || (o.dbeta.abs() - std::f64::consts::PI).abs() < 1e-12)
+        );
+        let r = run(&t, &law, &dv, -15.0, 90.0, 1, 2000, UNIT);
+        assert_eq!(r.lost.total(), 0);
+        let (m, se, _) = stats(&r, |o| o.dbeta);
+        assert!(m.abs() < 3.0 * se, "mean dbeta {m} ± {se}");
+    }
 }

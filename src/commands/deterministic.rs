@@ -280,9 +280,6 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
             scene.count,
             ctx.seed,
             &scene.speed,
-            &dev,
-            scene.psi,
-            scene.bin_width_deg,
         );
         let secs = t.elapsed().as_secs_f64();
         if run.lost.total() > 0 {
@@ -304,7 +301,7 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
             )));
         }
         timings.push(timing_row(cond, secs, scene.count, &run.lost));
-        results.push(run.tally(&dev, scene.bin_width_deg));
+        results.push(run.tally(&dev, scene.psi, scene.bin_width_deg));
         bar.inc(1);
     }
     bar.finish_and_clear();

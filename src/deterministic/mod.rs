@@ -152,57 +152,61 @@ pub struct ConditionRun {
     pub condition: IncidentCondition,
     /// Outcomes of the followed histories, in particle order.
     pub outcomes: Vec<Outcome>,
+    /// `(α⁺, β⁺)` of the first rebound of each followed history (rad), same order.
+    pub first_rebound: Vec<(f64, f64)>,
     pub lost: LostCounts,
-    /// Mean `β⁺` (rad, circular mean) and the particle-averaged model
-    /// `tanh(ψ α⁺ / Δγ(β⁺))` (Eqs. 34–35) per `α⁺` bin: the Fig. 12 model curve.
-    pub p_single_model: Vec<Bin>,
 }
 
 /// Radenkovic & Simonin 2021, Eq. (34) with Δγ(β⁺) of Eq. (35): probability that a
-/// rebound at `(α⁺, β⁺)` followed a single collision. `Δγ = 0` (smooth wall) gives 1
-/// for `α⁺ > 0`.
+/// rebound at `(α⁺, β⁺)` is the particle's last (a single collision). `Δγ = 0`
+/// (smooth wall) gives 1 for `α⁺ > 0`.
 pub fn p_single_model(dev: &Deviations, psi: f64, alpha_out: f64, beta_out: f64) -> f64 {
-    if alpha_out < 0.0 {
+    if alpha_out <= 0.0 {
         return 0.0;
     }
     let dg = delta_gamma(dev, beta_out);
     if dg > 0.0 {
         (psi * alpha_out / dg).tanh()
-    } else if alpha_out > 0.0 {
-        1.0
     } else {
-        0.0
+        1.0
     }
 }
 
-/// The Fig. 12 model curve for a set of outcomes: per `α⁺` bin of `bin_width_deg`
-/// (the bins of `p_single_given_alpha_out`), the mean over the bin's particles of
-/// `tanh(ψ α⁺ / Δγ(β⁺))` — the model evaluated at each particle's own `(α⁺, β⁺)`.
-pub fn p_single_model_curve(
-    outcomes: &[Outcome],
+/// Per `α` bin of `bin_width_deg` on [−90°, 90°): the fraction of single-collision
+/// histories and the model `tanh(ψ α/Δγ(β))` averaged over the bin's particles at
+/// their own `(α, β)`; `angles` are the rebound angles binned (rad), `single` whether
+/// the history had one collision. Returns `(measured, model)` curves.
+pub fn p_single_curves(
+    angles: &[(f64, f64)],
+    single: impl Iterator<Item = bool>,
     dev: &Deviations,
     psi: f64,
     bin_width_deg: f64,
-) -> Vec<Bin> {
-    let nb = (90.0 / bin_width_deg).ceil() as usize;
-    let mut sum = vec![0.0; nb];
-    let mut cnt = vec![0u64; nb];
-    for o in outcomes {
-        let a = o.alpha_out.to_degrees();
-        if a >= 0.0 {
-            let i = ((a / bin_width_deg).floor() as usize).min(nb - 1);
-            sum[i] += p_single_model(dev, psi, o.alpha_out, o.beta_out);
-            cnt[i] += 1;
-        }
+) -> (Vec<Bin>, Vec<Bin>) {
+    let nb = (180.0 / bin_width_deg).ceil() as usize;
+    let mut tot = vec![0u64; nb];
+    let mut one = vec![0u64; nb];
+    let mut model = vec![0.0; nb];
+    for (&(a, b), s) in angles.iter().zip(single) {
+        let i = (((a.to_degrees() + 90.0) / bin_width_deg).floor().max(0.0) as usize).min(nb - 1);
+        tot[i] += 1;
+        one[i] += s as u64;
+        model[i] += p_single_model(dev, psi, a, b);
     }
-    (0..nb)
-        .filter(|&i| cnt[i] > 0)
-        .map(|i| Bin {
-            lo: i as f64 * bin_width_deg,
-            hi: (i + 1) as f64 * bin_width_deg,
-            value: sum[i] / cnt[i] as f64,
-        })
-        .collect()
+    let bin = |i: usize, v: f64| Bin {
+        lo: -90.0 + i as f64 * bin_width_deg,
+        hi: -90.0 + (i + 1) as f64 * bin_width_deg,
+        value: v,
+    };
+    let idx: Vec<usize> = (0..nb).filter(|&i| tot[i] > 0).collect();
+    (
+        idx.iter()
+            .map(|&i| bin(i, one[i] as f64 / tot[i] as f64))
+            .collect(),
+        idx.iter()
+            .map(|&i| bin(i, model[i] / tot[i] as f64))
+            .collect(),
+    )
 }
 
 /// Runs one condition with collision law `law` (sphere diameter `diameter_m`).
@@ -216,32 +220,55 @@ pub fn run_condition(
     count: usize,
     seed: u64,
     speed: &SpeedLaw,
-    dev: &Deviations,
-    psi: f64,
-    bin_width_deg: f64,
 ) -> ConditionRun {
     let collide = |u, w, n| law.collide(u, w, n, diameter_m);
     let histories = simulate(tracker, &collide, cond, cond_index, count, seed, speed);
     let mut lost = LostCounts::default();
     let mut outcomes = Vec::with_capacity(histories.len());
+    let mut first_rebound = Vec::with_capacity(histories.len());
     for h in &histories {
         match h.fate {
             Fate::Lost(r) => lost.add(r),
-            Fate::Escaped => outcomes.extend(outcome(h, cond.beta_in)),
+            Fate::Escaped => {
+                if let Some(o) = outcome(h, cond.beta_in) {
+                    outcomes.push(o);
+                    first_rebound.push(incident_angles(&h.first_velocity));
+                }
+            }
         }
     }
-    let p_single_model = p_single_model_curve(&outcomes, dev, psi, bin_width_deg);
     ConditionRun {
         condition: cond,
         outcomes,
+        first_rebound,
         lost,
-        p_single_model,
     }
 }
 
 impl ConditionRun {
-    /// The `summary.csv` row and `pdfs.csv` rows (plus the `p_single_model` curve).
-    pub fn tally(&self, dev: &Deviations, bin_width_deg: f64) -> ConditionResult {
+    /// The Fig. 12 curves (Radenkovic & Simonin 2021, Eq. 34–35): `P(n = 1)` per bin of
+    /// the *first* rebound angle `α⁺` — the probability the stochastic procedure
+    /// (Fig. 13, step 6) uses to accept a rebound — and the model averaged over the
+    /// bin's particles at their own first-rebound `(α⁺, β⁺)`.
+    pub fn fig12_curves(
+        &self,
+        dev: &Deviations,
+        psi: f64,
+        bin_width_deg: f64,
+    ) -> (Vec<Bin>, Vec<Bin>) {
+        p_single_curves(
+            &self.first_rebound,
+            self.outcomes.iter().map(|o| o.collisions == Some(1)),
+            dev,
+            psi,
+            bin_width_deg,
+        )
+    }
+
+    /// The `summary.csv` row and `pdfs.csv` rows, plus the curves
+    /// `p_single_given_alpha_first` and `p_single_model` (see [`ConditionRun::fig12_curves`]).
+    pub fn tally(&self, dev: &Deviations, psi: f64, bin_width_deg: f64) -> ConditionResult {
+        let (measured, model) = self.fig12_curves(dev, psi, bin_width_deg);
         ConditionResult::from_outcomes(
             self.condition,
             *dev,
@@ -250,10 +277,16 @@ impl ConditionRun {
             ConditionExtras {
                 lost: Some(self.lost.total()),
                 p_single: None,
-                curves: vec![Curve {
-                    quantity: "p_single_model".into(),
-                    bins: self.p_single_model.clone(),
-                }],
+                curves: vec![
+                    Curve {
+                        quantity: "p_single_given_alpha_first".into(),
+                        bins: measured,
+                    },
+                    Curve {
+                        quantity: "p_single_model".into(),
+                        bins: model,
+                    },
+                ],
             },
         )
     }

@@ -148,7 +148,7 @@ pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> Deviations {
 pub fn run(
     tracker: &Tracker<'_>,
     law: &CollisionLaw,
-    dv: &Deviations,
+    _dv: &Deviations,
     alpha_deg: f64,
     beta_deg: f64,
     index: u64,
@@ -167,9 +167,6 @@ pub fn run(
         count,
         42,
         &speed,
-        dv,
-        2.0,
-        1.0,
     )
 }
 

@@ -71,3 +71,62 @@ fn explore_iso() {
         }
     }
 }
+
+#[test]
+#[ignore]
+fn explore_sorting() {
+    use rand::Rng;
+    use rebound::deterministic::scene::{choose_surface, SceneOptions};
+    let c = choose_surface(
+        2.5f64.to_radians(),
+        7.5f64.to_radians(),
+        &SceneOptions::default(),
+    )
+    .unwrap();
+    let f = gaussian_surface(
+        c.nodes,
+        c.spacing_m,
+        c.rms_height_m,
+        c.corr_length_x_m,
+        c.corr_length_z_m,
+        1,
+    );
+    let t = Tracker::new(&f, 1000).unwrap();
+    let (lx, lz) = t.periods();
+    let cond = rebound::case::IncidentCondition {
+        alpha_in: (-12.5f64).to_radians(),
+        beta_in: 0.0,
+    };
+    let refl =
+        |u: nalgebra::Vector3<f64>, w, n: nalgebra::Vector3<f64>| (u - 2.0 * u.dot(&n) * n, w);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
+    pool.install(|| {
+        for _ in 0..3 {
+            let t0 = std::time::Instant::now();
+            let hs = rebound::deterministic::simulate(&t, &refl, cond, 0, 200_000, 1, &UNIT);
+            let a = t0.elapsed().as_secs_f64();
+            let t0 = std::time::Instant::now();
+            let mut n = 0;
+            for i in 0..200_000u64 {
+                let mut r = rebound::rng::stream(1, &[2, 0, i]);
+                let x = r.gen::<f64>() * lx;
+                let z = r.gen::<f64>() * lz;
+                let u = rebound::deterministic::incident_velocity(cond.alpha_in, 0.0, 1.0);
+                n += t
+                    .trace(x, z, u, nalgebra::Vector3::zeros(), refl)
+                    .collisions;
+            }
+            let b = t0.elapsed().as_secs_f64();
+            eprintln!(
+                "sorted {:.0}/s unsorted {:.0}/s ({} {})",
+                2e5 / a,
+                2e5 / b,
+                hs.len(),
+                n
+            );
+        }
+    });
+}

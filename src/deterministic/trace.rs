@@ -257,6 +257,11 @@ impl<'a> Tracker<'a> {
         self.hmin
     }
 
+    /// Nodes of the height field along `x` and `z`.
+    pub fn grid(&self) -> (usize, usize) {
+        (self.nx, self.nz)
+    }
+
     /// Periods of the surface along `x` and `z` (m).
     pub fn periods(&self) -> (f64, f64) {
         (self.field.length_x(), self.field.length_z())

@@ -232,7 +232,12 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
         scene.count = n as usize;
     }
     let opt = deterministic_options(&ctx.case)?;
-    let plan = SurfacePlan::for_scene(&scene, &opt.scene)?;
+    // A saved surface replaces the generated one; the case's wall then only labels the
+    // deviations (summary columns, Δγ of the Fig. 12 model).
+    let plan = match args.surface {
+        Some(_) => None,
+        None => Some(SurfacePlan::for_scene(&scene, &opt.scene)?),
+    };
     let dev = scene.wall.deviations();
     for c in &scene.conditions {
         if c.alpha_in_deg() == -90.0 {
@@ -244,15 +249,16 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
     }
     // Everything the user gave is checked; now the surface (the only slow input step).
     let t0 = std::time::Instant::now();
-    let (field, source) = match &args.surface {
-        Some(p) => (read_surface(p)?, "file"),
-        None => (
-            generate_surface(&plan, ctx.seed)?,
+    let (field, source) = match (&args.surface, &plan) {
+        (Some(p), _) => (read_surface(p)?, "file"),
+        (None, Some(plan)) => (
+            generate_surface(plan, ctx.seed)?,
             match plan {
                 SurfacePlan::Case(_) => "case",
                 SurfacePlan::Auto(_) => "auto",
             },
         ),
+        (None, None) => return Err(Error::Io("internal: no surface plan".into())),
     };
     let gen_s = t0.elapsed().as_secs_f64();
     let tracker = Tracker::new(&field, opt.max_collisions).map_err(|e| {

@@ -269,7 +269,14 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
     })?;
     ctx.manifest.set(
         "surface_choice",
-        surface_table(&plan, &field, source, &opt.scene, gen_s),
+        surface_table(
+            plan.as_ref(),
+            args.surface.as_deref(),
+            &field,
+            source,
+            &opt.scene,
+            gen_s,
+        ),
     );
 
     let mut results: Vec<ConditionResult> = Vec::new();

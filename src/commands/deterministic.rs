@@ -170,7 +170,8 @@ fn round(x: f64, digits: i32) -> f64 {
 }
 
 fn surface_table(
-    plan: &SurfacePlan,
+    plan: Option<&SurfacePlan>,
+    file: Option<&Path>,
     field: &HeightField,
     source: &str,
     opt: &SceneOptions,
@@ -178,7 +179,12 @@ fn surface_table(
 ) -> toml::Value {
     let mut t = toml::Table::new();
     t.insert("source".into(), source.into());
-    if source != "file" {
+    if let Some(p) = file {
+        t.insert("file".into(), p.display().to_string().into());
+        t.insert("spacing_x_um".into(), f(field.dx * 1e6));
+        t.insert("spacing_z_um".into(), f(field.dz * 1e6));
+    }
+    if let Some(plan) = plan {
         let (l, n, h, cx, cz) = plan.grid();
         t.insert("length_um".into(), f(l * 1e6));
         t.insert("nodes".into(), toml::Value::Integer(n as i64));

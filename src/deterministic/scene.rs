@@ -60,7 +60,7 @@ pub fn next_smooth(target: usize) -> usize {
     loop {
         let mut m = n;
         for p in [2, 3, 5] {
-            while m % p == 0 {
+            while m.is_multiple_of(p) {
                 m /= p;
             }
         }
@@ -128,7 +128,7 @@ pub fn choose_surface(
     let spacing = c_min / opt.spacing_per_corr_length;
     // The ratio is exact in theory; forgive the last bits of rounding.
     let target = (opt.side_per_corr_length * c_max / spacing * (1.0 - 1e-12)).ceil();
-    if !(target <= (MAX_NODES as f64)) {
+    if target.is_nan() || target > MAX_NODES as f64 {
         return Err(format!(
             "the wall needs {target} nodes per side (> {MAX_NODES}) for spacing c_L,min/{} and side {}·c_L,max: \
              lower `deterministic.spacing_per_corr_length` or `deterministic.side_per_corr_length`",

@@ -187,7 +187,7 @@ impl<'a> Tracker<'a> {
         let width = |n: usize| {
             if n == 1 {
                 Some(1)
-            } else if n % TILE == 0 && n >= 2 * TILE {
+            } else if n.is_multiple_of(TILE) && n >= 2 * TILE {
                 Some(TILE)
             } else {
                 None
@@ -753,7 +753,7 @@ impl<'a> Tracker<'a> {
             } else {
                 o.y + d.y * t
             };
-            if !(y_low > tmax) || !t_out.is_finite() {
+            if y_low.is_nan() || y_low <= tmax || !t_out.is_finite() {
                 break;
             }
             if t_out >= t_y {
@@ -856,7 +856,7 @@ mod tests {
                 (
                     kx,
                     kz,
-                    r.gen::<f64>() * 6.283,
+                    r.gen::<f64>() * std::f64::consts::TAU,
                     amp / (kx * kx + kz * kz).sqrt(),
                 )
             })

@@ -164,6 +164,8 @@ fn shipped_cases_resolve() {
         "glass-steel-iso",
         "glass-steel-fig16",
         "glass-steel-fig16-2d",
+        "glass-steel-fig17",
+        "glass-steel-fig17-2d",
     ] {
         let path = std::path::PathBuf::from(format!("cases/{name}.toml"));
         let case = rebound::case::load(Some(&path), "").unwrap();

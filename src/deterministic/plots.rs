@@ -175,5 +175,55 @@ pub fn write_figures(dir: &Path, results: &[ConditionResult], label: &str) -> Re
             plot_grid_svg(&dir.join("fig16_dbeta_vs_beta.svg"), &plots, 2),
         )?;
     }
+    // Fig. 17: mean and std of β⁺ − β⁻ against |α⁻|, one series per β⁻.
+    let mut betas: Vec<f64> = Vec::new();
+    for r in results {
+        if !betas.contains(&r.condition.beta_in) {
+            betas.push(r.condition.beta_in);
+        }
+    }
+    if results.len() >= 5 * betas.len() {
+        let series = |k: usize| -> Vec<Series> {
+            betas
+                .iter()
+                .map(|&b| {
+                    let pts = results
+                        .iter()
+                        .filter(|r| r.condition.beta_in == b)
+                        .filter_map(|r| {
+                            r.stat("dbeta").map(|(m, s)| {
+                                (-r.condition.alpha_in_deg(), if k == 0 { m } else { s })
+                            })
+                        })
+                        .collect();
+                    Series::new(
+                        format!("β⁻ = {}°", crate::output::fmt_num(b.to_degrees())),
+                        pts,
+                        Kind::Line,
+                    )
+                })
+                .collect()
+        };
+        let plots = vec![
+            Plot {
+                title: "mean transverse deviation".into(),
+                x_label: "|α⁻| (deg)".into(),
+                y_label: "E(β⁺ − β⁻) (deg)".into(),
+                series: series(0),
+                ..Default::default()
+            },
+            Plot {
+                title: "std of the transverse deviation".into(),
+                x_label: "|α⁻| (deg)".into(),
+                y_label: "Δβ⁺ (deg)".into(),
+                series: series(1),
+                ..Default::default()
+            },
+        ];
+        put(
+            "fig17_dbeta_vs_alpha.svg",
+            plot_grid_svg(&dir.join("fig17_dbeta_vs_alpha.svg"), &plots, 2),
+        )?;
+    }
     Ok(names)
 }

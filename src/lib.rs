@@ -9,6 +9,7 @@ pub mod case;
 pub mod cli;
 pub mod collision;
 pub mod commands;
+pub mod deterministic;
 pub mod error;
 pub mod figures;
 pub mod force;

@@ -4,3 +4,4 @@
 //! statistical wall) → incident particles → collision law → tallies → outputs.
 pub mod rng;
 pub mod surface;
+pub mod stochastic;

@@ -1,0 +1,247 @@
+//! One rebound from the statistical anisotropic rough wall: the stochastic procedure of
+//! Radenkovic & Simonin 2021, Sec. 3.6 and Fig. 13 (written out in the physics notes §3).
+//!
+//! This is the library entry point a CFD (Euler–Lagrange) code calls once per wall
+//! collision: it needs only the incident state, the wall's two deviations, the
+//! collision law and a random generator — no surface, no tables.
+
+use super::shadow_effect::ShadowSampler;
+use super::tmp_foundation::angles::{incident_angles, normal_from_gamma};
+use super::tmp_foundation::collision::CollisionLaw;
+use super::tmp_foundation::wall::{conditional_gamma_star, rotated_moments, Deviations};
+use nalgebra::Vector3;
+use rand::Rng;
+use rand_distr::StandardNormal;
+
+/// Upper bound on the candidate walls drawn for one rebound (a guard: the expected
+/// number is ~1–3 for every admissible input).
+pub const MAX_TRIES: u32 = 100_000;
+
+/// The outcome of [`rebound`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rebound {
+    /// Rebound velocity `U⁺` (m/s).
+    pub velocity: Vector3<f64>,
+    /// Rebound angular velocity `ω⁺` (rad/s).
+    pub spin: Vector3<f64>,
+    /// Inclination `γ` of the accepted virtual wall in the incident plane (rad, Eq. 20).
+    pub gamma: f64,
+    /// Inclination `γ*` of the accepted virtual wall normal to the incident plane (rad, Eq. 21).
+    pub gamma_star: f64,
+    /// Unit normal of the accepted virtual wall (Eq. 23, exact unit vector).
+    pub normal: Vector3<f64>,
+    /// Candidate walls drawn (≥ 1): steps 2–6 of the procedure were run this many times.
+    /// `0` means the particle was not moving towards the wall (`u_in.y ≥ 0` or a
+    /// non-finite input) and was returned unchanged; [`MAX_TRIES`] means the guard was hit
+    /// and the rebound is the one off the mean (smooth) wall.
+    pub tries: u32,
+}
+
+impl Rebound {
+    /// Whether every candidate was rejected until the [`MAX_TRIES`] guard.
+    pub fn capped(&self) -> bool {
+        self.tries >= MAX_TRIES
+    }
+}
+
+/// Radenkovic & Simonin 2021, Eq. (34): `P(n = 1 | α⁺) = tanh(ψ α⁺ / Δγ(β⁺))` for
+/// `α⁺ > 0`, with `Δγ(β⁺)` of Eq. (35); `Δγ(β⁺) = 0` (smooth wall in that plane) gives 1.
+///
+/// `cos²β⁺ = u⁺²/(u⁺² + w⁺²)` is taken from the velocity directly (no trigonometry).
+#[inline]
+pub fn single_collision_probability(
+    u_out: &Vector3<f64>,
+    alpha_out: f64,
+    wall: &Deviations,
+    psi: f64,
+) -> f64 {
+    if alpha_out <= 0.0 {
+        return 0.0;
+    }
+    let h2 = u_out.x * u_out.x + u_out.z * u_out.z;
+    let var = if h2 > 0.0 {
+        (u_out.x * u_out.x * wall.delta_xi * wall.delta_xi
+            + u_out.z * u_out.z * wall.delta_zeta * wall.delta_zeta)
+            / h2
+    } else {
+        // β⁺ undefined (vertical rebound): β⁺ = 0 by the convention of notes §1.
+        wall.delta_xi * wall.delta_xi
+    };
+    if var <= 0.0 {
+        1.0
+    } else {
+        (psi * alpha_out / var.sqrt()).tanh()
+    }
+}
+
+/// `α = asin(v/|U|)` of a velocity (notes §1); 0 for a zero velocity.
+#[inline]
+fn vertical_angle(u: &Vector3<f64>) -> f64 {
+    let s = u.norm();
+    if s > 0.0 {
+        (u.y / s).clamp(-1.0, 1.0).asin()
+    } else {
+        0.0
+    }
+}
+
+/// One rebound of a particle from the statistical anisotropic rough wall
+/// (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; physics notes §3 steps 1–7).
+///
+/// 1. `α⁻, β⁻` of `u_in`, then `Δγ, Δγ*, Cov(γ, γ*)` (Eq. 26).
+/// 2. `γ` from the shadow-effect law `P_eff(γ | α⁻)` (Eqs. 31–33), sampled exactly
+///    ([`ShadowSampler`]).
+/// 3. `γ*` from the conditional normal law given `γ` (Eqs. 29–30).
+/// 4. The unit normal `n` (Eq. 23, exact unit vector); if `U⁻·n ≥ 0`, back to 2.
+/// 5. The collision law in the frame of `n` ([`CollisionLaw::collide`], Eqs. 36–42).
+/// 6. `α⁺`; reject if `α⁺ ≤ 0` or with probability `1 − tanh(ψ α⁺/Δγ(β⁺))`
+///    (Eqs. 34–35) and go back to 2 with the same incident state.
+/// 7. Return `U⁺, ω⁺`.
+///
+/// `psi` is ψ of Eq. (34) (2 in the paper); `diameter_m` the particle diameter (m).
+/// A smooth wall (`Δξ = Δζ = 0`) is one collision with the mean wall, exactly. A
+/// non-positive or non-finite `psi` cannot accept any candidate: the smooth-wall
+/// collision is returned with `tries = MAX_TRIES` (callers validate `psi`).
+///
+/// Precondition: the particle moves towards the wall, `u_in.y < 0`; otherwise the
+/// input is returned unchanged with `tries = 0`.
+///
+/// ```
+/// use nalgebra::Vector3;
+/// use rand::SeedableRng;
+/// use rebound::collision::{CollisionLaw, ShParams};
+/// use rebound::stochastic::rebound;
+/// use rebound::wall::Deviations;
+///
+/// // Glass bead (D = 500 µm) hitting a steel wall at α⁻ = −15°, β⁻ = 60°.
+/// let wall = Deviations { delta_xi: 3.8_f64.to_radians(), delta_zeta: 7.5_f64.to_radians() };
+/// let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
+/// let u_in = rebound::angles::velocity_from_angles(6.0, (-15f64).to_radians(), 60f64.to_radians());
+/// let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(42);
+/// let out = rebound(u_in, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
+/// assert!(out.velocity.y > 0.0);                      // leaves the wall
+/// assert!(out.velocity.norm() <= u_in.norm() + 1e-12); // no energy gain
+/// assert!(out.tries >= 1);
+/// ```
+pub fn rebound<R: Rng + ?Sized>(
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    rng: &mut R,
+) -> Rebound {
+    let j = Vector3::new(0.0, 1.0, 0.0);
+    let finite = u_in.iter().chain(omega_in.iter()).all(|c| c.is_finite());
+    if !finite || u_in.y >= 0.0 {
+        return Rebound {
+            velocity: u_in,
+            spin: omega_in,
+            gamma: 0.0,
+            gamma_star: 0.0,
+            normal: j,
+            tries: 0,
+        };
+    }
+    let smooth = Rebound {
+        velocity: Vector3::zeros(),
+        spin: Vector3::zeros(),
+        gamma: 0.0,
+        gamma_star: 0.0,
+        normal: j,
+        tries: 1,
+    };
+    let smooth_wall = wall.delta_xi == 0.0 && wall.delta_zeta == 0.0;
+    let bad_psi = !(psi > 0.0 && psi.is_finite());
+    if smooth_wall || bad_psi {
+        let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
+        return Rebound {
+            velocity: u,
+            spin: w,
+            tries: if bad_psi { MAX_TRIES } else { 1 },
+            ..smooth
+        };
+    }
+    // Step 1.
+    let (alpha, beta) = incident_angles(u_in);
+    let moments = rotated_moments(wall, beta);
+    let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
+    for tries in 1..=MAX_TRIES {
+        // Steps 2–3.
+        let gamma = sampler.sample(rng);
+        let (mean, var) = conditional_gamma_star(&moments, gamma);
+        let gamma_star = if var > 0.0 {
+            let z: f64 = rng.sample(StandardNormal);
+            mean + var.sqrt() * z
+        } else {
+            mean
+        };
+        // Step 4.
+        let n = normal_from_gamma(gamma, gamma_star, beta);
+        if u_in.dot(&n) >= 0.0 {
+            continue;
+        }
+        // Step 5.
+        let (u, w) = law.collide(u_in, omega_in, n, diameter_m);
+        // Step 6.
+        let alpha_out = vertical_angle(&u);
+        let p = single_collision_probability(&u, alpha_out, wall, psi);
+        if p <= 0.0 || (p < 1.0 && rng.gen::<f64>() >= p) {
+            continue;
+        }
+        // Step 7.
+        return Rebound {
+            velocity: u,
+            spin: w,
+            gamma,
+            gamma_star,
+            normal: n,
+            tries,
+        };
+    }
+    let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
+    Rebound {
+        velocity: u,
+        spin: w,
+        tries: MAX_TRIES,
+        ..smooth
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tmp_foundation::angles::{incident_angles, velocity_from_angles, wrap_pi};
+    use super::super::tmp_foundation::collision::ShParams;
+    use super::*;
+    use rand::SeedableRng;
+
+    #[test]
+    fn beta60_signs() {
+        let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
+        for &(dx, dz) in &[(3.8, 0.0), (3.8, 3.8), (3.8, 7.5), (7.5, 2.5), (2.5, 7.5)] {
+            let wall = Deviations {
+                delta_xi: f64::to_radians(dx),
+                delta_zeta: f64::to_radians(dz),
+            };
+            for &a in &[-5.0, -15.0, -25.0, -45.0] {
+                let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
+                let n = 100_000;
+                let mut sum = 0.0;
+                let mut tries = 0u64;
+                for _ in 0..n {
+                    let u = velocity_from_angles(6.0, f64::to_radians(a), f64::to_radians(60.0));
+                    let r = rebound(u, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
+                    let (_, b) = incident_angles(r.velocity);
+                    sum += wrap_pi(b - f64::to_radians(60.0));
+                    tries += r.tries as u64;
+                }
+                eprintln!(
+                    "dx={dx} dz={dz} a={a}: mean dbeta = {:.3} deg, tries {:.3}",
+                    (sum / n as f64).to_degrees(),
+                    tries as f64 / n as f64
+                );
+            }
+        }
+    }
+}

@@ -5,3 +5,4 @@
 pub mod rng;
 pub mod surface;
 pub mod stochastic;
+pub mod compare;

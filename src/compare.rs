@@ -23,7 +23,10 @@ impl BinnedPdf {
 
     /// Total probability `Σ p_i (hi_i − lo_i)`.
     pub fn mass(&self) -> f64 {
-        self.bins.iter().map(|&(l, h, p)| p.max(0.0) * (h - l)).sum()
+        self.bins
+            .iter()
+            .map(|&(l, h, p)| p.max(0.0) * (h - l))
+            .sum()
     }
 
     /// Density at `x` (0 outside every bin), normalised to unit mass.

@@ -1,8 +1,21 @@
 //! `rebound`: particles bouncing off anisotropic rough walls.
 //!
-//! The modules follow the pipeline of a run: case → wall (generated surface or
-//! statistical wall) → incident particles → collision law → tallies → outputs.
-pub mod rng;
-pub mod surface;
-pub mod stochastic;
+//! The modules follow the pipeline of a run: `case` → wall (`surface` generated, or the
+//! statistical `wall`) → incident particles (`angles`) → `collision` law → `tally` →
+//! `output`/`figures`. `cli` and `commands` glue them to the command line; `rng` gives
+//! every particle its own random stream.
+pub mod angles;
+pub mod case;
+pub mod cli;
+pub mod collision;
+pub mod commands;
 pub mod compare;
+pub mod error;
+pub mod figures;
+pub mod output;
+pub mod progress;
+pub mod rng;
+pub mod stochastic;
+pub mod surface;
+pub mod tally;
+pub mod wall;

@@ -33,7 +33,7 @@ fn run(wall: &Deviations, law: &CollisionLaw, a_deg: f64, b_deg: f64, n: usize) 
 }
 
 fn dbeta(r: &Rebound, b_deg: f64) -> f64 {
-    wrap_pi(incident_angles(r.velocity).1 - b_deg.to_radians())
+    wrap_pi(incident_angles(&r.velocity).1 - b_deg.to_radians())
 }
 
 fn mean_std(xs: impl Iterator<Item = f64>) -> (f64, f64, usize) {
@@ -68,7 +68,12 @@ fn two_d_wall_at_beta_zero_gives_exactly_zero_transverse_deviation() {
             for r in run(&wall, &law, a, 0.0, 5_000) {
                 assert_eq!(r.velocity.z, 0.0);
                 assert_eq!(r.gamma_star, 0.0);
-                assert_eq!(dbeta(&r, 0.0), 0.0);
+                // In the incident plane: forward (0) or, near normal incidence, backward (180°).
+                let db = dbeta(&r, 0.0);
+                assert!(
+                    db == 0.0 || (a < -45.0 && db == std::f64::consts::PI),
+                    "{db}"
+                );
             }
         }
     }
@@ -79,7 +84,7 @@ fn smooth_wall_is_specular_for_the_elastic_law() {
     let wall = dev(0.0, 0.0);
     for (a, b) in [(-0.01, 0.0), (-12.5, 60.0), (-90.0, 0.0), (-45.0, -170.0)] {
         for r in run(&wall, &CollisionLaw::Elastic, a, b, 10) {
-            let (ao, bo) = incident_angles(r.velocity);
+            let (ao, bo) = incident_angles(&r.velocity);
             assert!((ao - (-a as f64).to_radians()).abs() < 1e-12);
             if a > -90.0 {
                 assert!(wrap_pi(bo - (b as f64).to_radians()).abs() < 1e-12);
@@ -91,10 +96,15 @@ fn smooth_wall_is_specular_for_the_elastic_law() {
 
 #[test]
 fn without_shadow_effect_gamma_pair_has_the_moments_of_eq26() {
-    // |α⁻| = 70° ≫ Δγ: (γ, γ*) bivariate normal with the moments of Eq. (26). The shadow
-    // factor sin(γ − α⁻) changes the variance by ~Δγ² csc² 70° ≈ 0.5 % at most here.
-    for (wall, b) in [(dev(2.5, 7.5), 30.0), (dev(7.5, 2.5), 60.0), (dev(3.8, 7.5), 135.0)] {
-        let out = run(&wall, &CollisionLaw::Elastic, -70.0, b, 100_000);
+    // |α⁻| = 85° ≫ Δγ: (γ, γ*) bivariate normal with the moments of Eq. (26). The shadow
+    // factor sin(γ − α⁻) shifts the mean by Δγ² cot 85° (< 0.7 % of Δγ here) and changes
+    // the variance by ~Δγ² csc² 85° < 0.6 %.
+    for (wall, b) in [
+        (dev(2.5, 7.5), 30.0),
+        (dev(7.5, 2.5), 60.0),
+        (dev(3.8, 7.5), 135.0),
+    ] {
+        let out = run(&wall, &CollisionLaw::Elastic, -85.0, b, 100_000);
         let m = rotated_moments(&wall, (b as f64).to_radians());
         let n = out.len() as f64;
         let (mg, vg) = (
@@ -105,8 +115,16 @@ fn without_shadow_effect_gamma_pair_has_the_moments_of_eq26() {
         let cov = out.iter().map(|r| r.gamma * r.gamma_star).sum::<f64>() / n;
         let scale = m.var_a.max(m.var_b);
         assert!(mg.abs() < 0.02 * m.var_a.sqrt(), "mean γ {mg}");
-        assert!((vg / m.var_a - 1.0).abs() < 0.03, "Var γ {vg} vs {}", m.var_a);
-        assert!((vs / m.var_b - 1.0).abs() < 0.03, "Var γ* {vs} vs {}", m.var_b);
+        assert!(
+            (vg / m.var_a - 1.0).abs() < 0.03,
+            "Var γ {vg} vs {}",
+            m.var_a
+        );
+        assert!(
+            (vs / m.var_b - 1.0).abs() < 0.03,
+            "Var γ* {vs} vs {}",
+            m.var_b
+        );
         assert!((cov - m.cov).abs() < 0.03 * scale, "Cov {cov} vs {}", m.cov);
     }
 }
@@ -132,7 +150,11 @@ fn gamma_star_given_gamma_follows_eq30() {
         let se = std / (k as f64).sqrt();
         assert!(k > 1000, "{k}");
         assert!((mean - cmean).abs() < 4.5 * se, "γ={g0}: {mean} vs {cmean}");
-        assert!((std * std / cvar - 1.0).abs() < 0.1, "γ={g0}: {} vs {cvar}", std * std);
+        assert!(
+            (std * std / cvar - 1.0).abs() < 0.1,
+            "γ={g0}: {} vs {cvar}",
+            std * std
+        );
     }
 }
 
@@ -146,7 +168,7 @@ fn rho_plus_minus_one_makes_gamma_star_a_linear_function_of_gamma() {
         assert!((rho.abs() - 1.0).abs() < 1e-12);
         for r in run(&wall, &sh(), -15.0, b, 5_000) {
             let expect = b.to_radians().tan() * r.gamma;
-            assert!((r.gamma_star - expect).abs() < 1e-12 * (1.0 + expect.abs()));
+            assert!((r.gamma_star - expect).abs() < 1e-8);
             assert!(r.velocity.iter().all(|c| c.is_finite()));
         }
     }
@@ -192,7 +214,10 @@ fn elastic_conserves_speed_and_sommerfeld_huber_never_gains_energy() {
                 assert!((r.velocity.norm() - 6.0).abs() < 1e-12);
                 assert_eq!(r.spin, spin);
                 let s = rebound(u, spin, &wall, &sh(), 2.0, D, &mut rng);
-                let (e0, e1) = (mass_free_energy(&u, &spin), mass_free_energy(&s.velocity, &s.spin));
+                let (e0, e1) = (
+                    mass_free_energy(&u, &spin),
+                    mass_free_energy(&s.velocity, &s.spin),
+                );
                 assert!(e1 <= e0 * (1.0 + 1e-12), "energy gain {e0} → {e1}");
                 // The same vector-form law as `deterministic`: one implementation.
                 let (uc, wc) = sh().collide(u, spin, s.normal, D);
@@ -240,9 +265,25 @@ fn hard_cases_give_finite_rebounds_quickly() {
     // Not moving towards the wall: returned unchanged, no candidate drawn.
     let mut rng = Xoshiro256PlusPlus::seed_from_u64(1);
     let up = Vector3::new(1.0, 0.5, 0.0);
-    let r = rebound(up, Vector3::zeros(), &dev(3.8, 3.8), &sh(), 2.0, D, &mut rng);
+    let r = rebound(
+        up,
+        Vector3::zeros(),
+        &dev(3.8, 3.8),
+        &sh(),
+        2.0,
+        D,
+        &mut rng,
+    );
     assert_eq!((r.velocity, r.tries), (up, 0));
     let nan = Vector3::new(f64::NAN, -1.0, 0.0);
-    let r = rebound(nan, Vector3::zeros(), &dev(3.8, 3.8), &sh(), 2.0, D, &mut rng);
+    let r = rebound(
+        nan,
+        Vector3::zeros(),
+        &dev(3.8, 3.8),
+        &sh(),
+        2.0,
+        D,
+        &mut rng,
+    );
     assert_eq!(r.tries, 0);
 }

@@ -6,9 +6,9 @@
 //! collision law and a random generator — no surface, no tables.
 
 use super::shadow_effect::ShadowSampler;
-use super::tmp_foundation::angles::{incident_angles, normal_from_gamma};
-use super::tmp_foundation::collision::CollisionLaw;
-use super::tmp_foundation::wall::{conditional_gamma_star, rotated_moments, Deviations};
+use crate::angles::{incident_angles, normal_from_gamma};
+use crate::collision::CollisionLaw;
+use crate::wall::{conditional_gamma_star, rotated_moments, Deviations};
 use nalgebra::Vector3;
 use rand::Rng;
 use rand_distr::StandardNormal;
@@ -164,7 +164,7 @@ pub fn rebound<R: Rng + ?Sized>(
         };
     }
     // Step 1.
-    let (alpha, beta) = incident_angles(u_in);
+    let (alpha, beta) = incident_angles(&u_in);
     let moments = rotated_moments(wall, beta);
     let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
     for tries in 1..=MAX_TRIES {
@@ -206,42 +206,5 @@ pub fn rebound<R: Rng + ?Sized>(
         spin: w,
         tries: MAX_TRIES,
         ..smooth
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::super::tmp_foundation::angles::{incident_angles, velocity_from_angles, wrap_pi};
-    use super::super::tmp_foundation::collision::ShParams;
-    use super::*;
-    use rand::SeedableRng;
-
-    #[test]
-    fn beta60_signs() {
-        let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
-        for &(dx, dz) in &[(3.8, 0.0), (3.8, 3.8), (3.8, 7.5), (7.5, 2.5), (2.5, 7.5)] {
-            let wall = Deviations {
-                delta_xi: f64::to_radians(dx),
-                delta_zeta: f64::to_radians(dz),
-            };
-            for &a in &[-5.0, -15.0, -25.0, -45.0] {
-                let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
-                let n = 100_000;
-                let mut sum = 0.0;
-                let mut tries = 0u64;
-                for _ in 0..n {
-                    let u = velocity_from_angles(6.0, f64::to_radians(a), f64::to_radians(60.0));
-                    let r = rebound(u, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
-                    let (_, b) = incident_angles(r.velocity);
-                    sum += wrap_pi(b - f64::to_radians(60.0));
-                    tries += r.tries as u64;
-                }
-                eprintln!(
-                    "dx={dx} dz={dz} a={a}: mean dbeta = {:.3} deg, tries {:.3}",
-                    (sum / n as f64).to_degrees(),
-                    tries as f64 / n as f64
-                );
-            }
-        }
     }
 }

@@ -148,9 +148,11 @@ impl ShadowSampler {
         self.s
     }
 
-    /// One draw of `y ~ y e^{−(y−m)²/2}` on `y > 0`; `None` when the proposal is rejected.
+    /// One draw of `y ~ y e^{−(y−m)²/2}` on `y > 0`, returned as `d = y − m` (so that
+    /// `γ = s·d + k s²` keeps its relative precision when `Δγ ≪ |α⁻|`); `None` when the
+    /// proposal is rejected.
     #[inline]
-    fn propose_y<R: Rng + ?Sized>(&self, rng: &mut R) -> Option<f64> {
+    fn propose_d<R: Rng + ?Sized>(&self, rng: &mut R) -> Option<f64> {
         let m = self.m;
         if m <= 0.0 {
             let e: f64 = rng.sample(Exp1);
@@ -158,20 +160,18 @@ impl ShadowSampler {
             let y = t + m;
             // Accept with y/t.
             if y > 0.0 && rng.gen::<f64>() * t < y {
-                Some(y)
+                Some(t)
             } else {
                 None
             }
         } else if rng.gen::<f64>() < self.p_rayleigh {
             let e: f64 = rng.sample(Exp1);
-            Some(m + (2.0 * e).sqrt())
+            Some((2.0 * e).sqrt())
         } else {
             let z: f64 = rng.sample(StandardNormal);
             let y = m + z;
-            if y >= m {
-                Some(y)
-            } else if y > 0.0 && rng.gen::<f64>() * m < y {
-                Some(y)
+            if z >= 0.0 || (y > 0.0 && rng.gen::<f64>() * m < y) {
+                Some(z)
             } else {
                 None
             }
@@ -185,15 +185,18 @@ impl ShadowSampler {
         if self.s == 0.0 {
             return Some(0.0);
         }
-        let y = self.propose_y(rng)?;
-        let x = self.s * y;
+        let d = self.propose_d(rng)?;
+        // x = s·y = μ + s·d, γ = x + α⁻ = s·d + k s² (μ = −α⁻ + k s²).
+        let x = self.s * self.m + self.s * d;
         if x > self.x_max || x <= 0.0 {
             return None;
         }
         // r(x) = sinc(x) / (sinc(x0) e^{k(x − x0)}) ∈ [0, 1].
         let r = sinc(x) / (self.sinc_x0 * (self.k * (x - self.x0)).exp());
         if rng.gen::<f64>() < r {
-            Some((x + self.alpha).min(FRAC_PI_2))
+            let gamma = self.s * d + self.k * self.s * self.s;
+            // γ ≤ α⁻ only by rounding when x is a few ulps: a null event, rejected.
+            (gamma > self.alpha).then_some(gamma.min(FRAC_PI_2))
         } else {
             None
         }
@@ -381,6 +384,22 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn tiny_deviation_keeps_relative_precision() {
+        // Δγ ≪ |α⁻| (e.g. Δγ from cos 90° ≈ 6e−17 on a 2-D wall): γ/Δγ is still ~N(0, 1).
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(4);
+        let s = 1e-18;
+        let sm = ShadowSampler::new(deg(-45.0), s);
+        let n = 20_000;
+        let xs: Vec<f64> = (0..n).map(|_| sm.sample(&mut rng) / s).collect();
+        let mean = xs.iter().sum::<f64>() / n as f64;
+        let var = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / n as f64;
+        assert!(
+            mean.abs() < 0.05 && (var - 1.0).abs() < 0.05,
+            "{mean} {var}"
+        );
     }
 
     #[test]

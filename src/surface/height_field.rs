@@ -35,7 +35,10 @@ impl HeightField {
 
     /// Highest node (m): above it no triangle can be hit.
     pub fn max_height(&self) -> f64 {
-        self.heights.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+        self.heights
+            .iter()
+            .copied()
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// Unnormalised upward normals of the two triangles of cell `(ix, iz)`.
@@ -72,7 +75,13 @@ mod tests {
                 heights[iz * nx + ix] = 0.1 * ix as f64 * dx - 0.2 * iz as f64 * dz;
             }
         }
-        let f = HeightField { nx, nz, dx, dz, heights };
+        let f = HeightField {
+            nx,
+            nz,
+            dx,
+            dz,
+            heights,
+        };
         for t in f.cell_normals(1, 1) {
             assert!((t[0] + 0.1).abs() < 1e-12 && (t[2] - 0.2).abs() < 1e-12);
         }

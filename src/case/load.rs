@@ -1,0 +1,135 @@
+//! Finding, reading and parsing a case file, with one-line errors that name the key.
+
+use super::schema::Case;
+use crate::error::{Error, Result};
+use std::path::{Path, PathBuf};
+
+/// Seed used when neither the case nor `--seed` gives one.
+pub const DEFAULT_SEED: u64 = 2021;
+
+/// Where a case path points: as given, else under `configs/` (of the working directory,
+/// then of this source tree, so tests and installed binaries find the shipped cases).
+pub fn resolve_path(path: &Path) -> Result<PathBuf> {
+    if path.is_file() {
+        return Ok(path.to_path_buf());
+    }
+    let candidates = [
+        Path::new("configs").join(path),
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("configs")
+            .join(path),
+    ];
+    for c in candidates {
+        if c.is_file() {
+            return Ok(c);
+        }
+    }
+    Err(Error::Input(format!(
+        "case file `{}` not found (looked as given and under configs/)",
+        path.display()
+    )))
+}
+
+/// Loads the case at `path`, or parses `default_toml` (the command's built-in case) when absent.
+pub fn load(path: Option<&Path>, default_toml: &str) -> Result<Case> {
+    match path {
+        Some(p) => {
+            let resolved = resolve_path(p)?;
+            let text = std::fs::read_to_string(&resolved)
+                .map_err(|e| Error::Input(format!("case file `{}`: {e}", resolved.display())))?;
+            parse(&text, &resolved.display().to_string())
+        }
+        None => parse(default_toml, "<built-in case>"),
+    }
+}
+
+/// Parses case text; `origin` names it in errors.
+pub fn parse(text: &str, origin: &str) -> Result<Case> {
+    // First as a plain TOML tree, to reject NaN/inf anywhere with the key's path.
+    let tree: toml::Table = toml::from_str(text).map_err(|e| one_line(origin, text, &e))?;
+    reject_non_finite(&toml::Value::Table(tree), "").map_err(|key| {
+        Error::invalid(&key, "nan/inf", &format!("a finite number (in {origin})"))
+    })?;
+    let case: Case = toml::from_str(text).map_err(|e| one_line(origin, text, &e))?;
+    if case.name.trim().is_empty() {
+        return Err(Error::invalid("name", "\"\"", "a non-empty name"));
+    }
+    if case.surface.is_some() && case.wall.is_some() {
+        return Err(Error::Input(format!(
+            "{origin}: give either [surface] or [wall], not both"
+        )));
+    }
+    Ok(case)
+}
+
+fn reject_non_finite(v: &toml::Value, path: &str) -> std::result::Result<(), String> {
+    match v {
+        toml::Value::Float(f) if !f.is_finite() => Err(path.to_string()),
+        toml::Value::Table(t) => {
+            for (k, v) in t {
+                let p = if path.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{path}.{k}")
+                };
+                reject_non_finite(v, &p)?;
+            }
+            Ok(())
+        }
+        toml::Value::Array(a) => {
+            for (i, v) in a.iter().enumerate() {
+                reject_non_finite(v, &format!("{path}[{i}]"))?;
+            }
+            Ok(())
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Turns a (multi-line) TOML/serde error into one line with the file, line and key.
+fn one_line(origin: &str, text: &str, e: &toml::de::Error) -> Error {
+    let msg = e.message().replace('\n', " ");
+    let Some(span) = e.span() else {
+        return Error::Input(format!("{origin}: {msg}"));
+    };
+    let start = span.start.min(text.len());
+    let line_no = text[..start].matches('\n').count() + 1;
+    let line = text.lines().nth(line_no - 1).unwrap_or("").trim();
+    let key = line.split('=').next().unwrap_or("").trim();
+    if line.contains('=') && !key.is_empty() {
+        Error::Input(format!("{origin}:{line_no}: key `{key}`: {msg}"))
+    } else {
+        Error::Input(format!("{origin}:{line_no}: {msg}"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn err(text: &str) -> String {
+        match parse(text, "t.toml") {
+            Err(e) => {
+                let s = e.to_string();
+                assert!(!s.contains('\n'), "multi-line: {s}");
+                assert_eq!(e.exit_code(), 2);
+                s
+            }
+            Ok(_) => panic!("accepted: {text}"),
+        }
+    }
+
+    #[test]
+    fn unknown_key_wrong_type_missing_and_nan_are_one_line_errors() {
+        assert!(err("name='a'\n[surface]\nlenght_um = 5.0\n").contains("lenght_um"));
+        assert!(err("name='a'\n[surface]\nnodes = 'many'\n").contains("nodes"));
+        assert!(err("seed = 1\n").contains("name"));
+        assert!(err("name='a'\n[surface]\nrms_height_um = nan\n").contains("surface.rms_height_um"));
+        assert!(err("name='a'\n[surface]\n[wall]\n").contains("not both"));
+    }
+
+    #[test]
+    fn shipped_paths_resolve_under_configs() {
+        assert!(resolve_path(Path::new("definitely/not/here.toml")).is_err());
+    }
+}

@@ -1,0 +1,545 @@
+//! Validated SI views of case sections. Each accessor checks its keys and returns
+//! one-line errors naming the key, the value and what is allowed (exit status 2).
+
+use super::schema::*;
+use super::warn;
+use crate::collision::{CollisionLaw, ShParams};
+use crate::error::{Error, Result};
+use crate::wall::{self, Deviations};
+
+/// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
+/// stretched: run, but warn (the paper validates Eq. 14 up to about 7.5°).
+pub const LOW_ROUGHNESS_LIMIT_DEG: f64 = 7.5;
+/// Beyond this deviation the wall models are not meant to be used at all.
+pub const MAX_DEVIATION_DEG: f64 = 20.0;
+
+/// A generated surface, SI units. A `None` correlation length means `Δ = 0` along that
+/// axis: the surface is exactly constant along it (notes §4).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceSpec {
+    pub length_m: f64,
+    pub nodes: usize,
+    pub rms_height_m: f64,
+    pub corr_length_x_m: Option<f64>,
+    pub corr_length_z_m: Option<f64>,
+}
+
+impl SurfaceSpec {
+    /// Grid spacing `δ = L/N` (notes §4).
+    pub fn spacing_m(&self) -> f64 {
+        self.length_m / self.nodes as f64
+    }
+
+    /// Target deviations from Eq. (15).
+    pub fn deviations(&self) -> Deviations {
+        let d =
+            |c: Option<f64>| c.map_or(0.0, |c| wall::deviation_from_surface(self.rms_height_m, c));
+        Deviations {
+            delta_xi: d(self.corr_length_x_m),
+            delta_zeta: d(self.corr_length_z_m),
+        }
+    }
+}
+
+/// What a case says about the wall.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WallSource {
+    /// A full surface (grid and roughness): generated as given.
+    Surface(SurfaceSpec),
+    /// Only the statistical wall: deviations (a surface, if needed, is chosen to fit).
+    Deviations(Deviations),
+}
+
+impl WallSource {
+    pub fn deviations(&self) -> Deviations {
+        match self {
+            WallSource::Surface(s) => s.deviations(),
+            WallSource::Deviations(d) => *d,
+        }
+    }
+}
+
+/// Horizontal incident speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedLaw {
+    pub mean_m_s: f64,
+    pub std_m_s: f64,
+}
+
+/// One incident condition `(α⁻, β⁻)` in radians.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IncidentCondition {
+    pub alpha_in: f64,
+    pub beta_in: f64,
+}
+
+impl IncidentCondition {
+    pub fn alpha_in_deg(&self) -> f64 {
+        self.alpha_in.to_degrees()
+    }
+    pub fn beta_in_deg(&self) -> f64 {
+        self.beta_in.to_degrees()
+    }
+}
+
+/// Everything `deterministic` and `stochastic` share: one scene, two models.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    pub wall: WallSource,
+    pub conditions: Vec<IncidentCondition>,
+    pub speed: SpeedLaw,
+    pub count: usize,
+    pub diameter_m: f64,
+    pub law: CollisionLaw,
+    pub bin_width_deg: f64,
+    pub psi: f64,
+}
+
+fn positive(key: &str, v: f64) -> Result<f64> {
+    if v > 0.0 && v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Error::invalid(key, v, "a positive number"))
+    }
+}
+
+fn deviation(key: &str, v: f64) -> Result<f64> {
+    if !(0.0..=MAX_DEVIATION_DEG).contains(&v) {
+        return Err(Error::invalid(
+            key,
+            v,
+            &format!("0 to {MAX_DEVIATION_DEG} degrees"),
+        ));
+    }
+    if v > LOW_ROUGHNESS_LIMIT_DEG {
+        warn(&format!(
+            "`{key}` = {v}° is beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°); results are extrapolated"
+        ));
+    }
+    Ok(v.to_radians())
+}
+
+impl Case {
+    /// The `[surface]` or `[wall]` section and its name.
+    fn wall_spec(&self) -> Option<(&'static str, &WallSpec)> {
+        match (&self.surface, &self.wall) {
+            (Some(s), _) => Some(("surface", s)),
+            (None, Some(w)) => Some(("wall", w)),
+            _ => None,
+        }
+    }
+
+    /// The wall: a full surface when grid keys are given, else deviations
+    /// (from `delta_*_deg`, or from `corr_length_*_um` and `rms_height_um` by Eq. 15).
+    pub fn wall_source(&self) -> Result<WallSource> {
+        let Some((sec, w)) = self.wall_spec() else {
+            return Err(Error::Input(
+                "the case needs a [wall] (delta_xi_deg, delta_zeta_deg) or [surface] section"
+                    .into(),
+            ));
+        };
+        let has_grid = w.length_um.is_some() || w.nodes.is_some();
+        if has_grid {
+            return Ok(WallSource::Surface(self.surface_spec()?));
+        }
+        let axis = |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<f64> {
+            match (c, d) {
+                (Some(_), Some(_)) => Err(Error::Input(format!(
+                    "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
+                ))),
+                (None, Some(d)) => deviation(&format!("{sec}.{dname}"), d),
+                (Some(c), None) => {
+                    let c = positive(&format!("{sec}.{cname}"), c)?;
+                    let h = w.rms_height_um.ok_or_else(|| {
+                        Error::Input(format!(
+                            "[{sec}] gives `{cname}` but not `rms_height_um` (needed by Eq. 15)"
+                        ))
+                    })?;
+                    let h = positive(&format!("{sec}.rms_height_um"), h)?;
+                    deviation(
+                        &format!("{sec}.{cname} (as a deviation)"),
+                        wall::deviation_from_surface(h, c).to_degrees(),
+                    )
+                }
+                (None, None) => Err(Error::Input(format!(
+                    "[{sec}] needs `{dname}` or `{cname}`"
+                ))),
+            }
+        };
+        Ok(WallSource::Deviations(Deviations {
+            delta_xi: axis(
+                w.corr_length_x_um,
+                w.delta_xi_deg,
+                "corr_length_x_um",
+                "delta_xi_deg",
+            )?,
+            delta_zeta: axis(
+                w.corr_length_z_um,
+                w.delta_zeta_deg,
+                "corr_length_z_um",
+                "delta_zeta_deg",
+            )?,
+        }))
+    }
+
+    /// A full surface: `length_um`, `nodes`, `rms_height_um` and per axis a correlation length
+    /// or a deviation (converted with Eq. 15). Checks the grid against the correlation lengths:
+    /// `δ > c_L/2` is an error, `L < 20 c_L` a warning.
+    pub fn surface_spec(&self) -> Result<SurfaceSpec> {
+        let Some((sec, w)) = self.wall_spec() else {
+            return Err(Error::Input("the case needs a [surface] section".into()));
+        };
+        let need =
+            |v: Option<f64>, k: &str| v.ok_or_else(|| Error::Input(format!("[{sec}] needs `{k}`")));
+        let length_um = positive(&format!("{sec}.length_um"), need(w.length_um, "length_um")?)?;
+        let nodes = w
+            .nodes
+            .ok_or_else(|| Error::Input(format!("[{sec}] needs `nodes`")))?;
+        if !(16..=40_000).contains(&nodes) {
+            return Err(Error::invalid(
+                &format!("{sec}.nodes"),
+                nodes,
+                "an integer from 16 to 40000",
+            ));
+        }
+        let h_um = need(w.rms_height_um, "rms_height_um")?;
+        if h_um < 0.0 {
+            return Err(Error::invalid(
+                &format!("{sec}.rms_height_um"),
+                h_um,
+                "a number ≥ 0",
+            ));
+        }
+        let axis =
+            |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<Option<f64>> {
+                match (c, d) {
+                    (Some(_), Some(_)) => Err(Error::Input(format!(
+                        "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
+                    ))),
+                    (Some(c), None) => Ok(Some(positive(&format!("{sec}.{cname}"), c)?)),
+                    (None, Some(d)) => {
+                        let d = deviation(&format!("{sec}.{dname}"), d)?;
+                        Ok(wall::corr_length_from_deviation(h_um, d))
+                    }
+                    (None, None) => Err(Error::Input(format!(
+                        "[{sec}] needs `{cname}` or `{dname}`"
+                    ))),
+                }
+            };
+        let cx = axis(
+            w.corr_length_x_um,
+            w.delta_xi_deg,
+            "corr_length_x_um",
+            "delta_xi_deg",
+        )?;
+        let cz = axis(
+            w.corr_length_z_um,
+            w.delta_zeta_deg,
+            "corr_length_z_um",
+            "delta_zeta_deg",
+        )?;
+        let spec = SurfaceSpec {
+            length_m: length_um * 1e-6,
+            nodes: nodes as usize,
+            rms_height_m: h_um * 1e-6,
+            corr_length_x_m: if h_um > 0.0 {
+                cx.map(|c| c * 1e-6)
+            } else {
+                None
+            },
+            corr_length_z_m: if h_um > 0.0 {
+                cz.map(|c| c * 1e-6)
+            } else {
+                None
+            },
+        };
+        let spacing_um = length_um / nodes as f64;
+        for (name, c) in [("corr_length_x_um", cx), ("corr_length_z_um", cz)] {
+            if let Some(c) = c {
+                if h_um > 0.0 && spacing_um > c / 2.0 {
+                    return Err(Error::invalid(
+                        &format!("{sec}.nodes"),
+                        nodes,
+                        &format!(
+                            "a grid spacing L/nodes ≤ c_L/2 = {} µm ({name} = {c} µm); spacing is {spacing_um} µm",
+                            c / 2.0
+                        ),
+                    ));
+                }
+                if h_um > 0.0 && length_um < 20.0 * c {
+                    warn(&format!(
+                        "[{sec}] length_um = {length_um} is less than 20 correlation lengths ({name} = {c} µm): statistics will be noisy and biased"
+                    ));
+                }
+            }
+        }
+        Ok(spec)
+    }
+
+    /// Directions `β*` (radians) of Table 1's rotated frames; default 0°, 30°, 60°, 90°.
+    pub fn beta_star(&self) -> Result<Vec<f64>> {
+        let list = self
+            .stats
+            .as_ref()
+            .map(|s| s.beta_star_deg.clone())
+            .unwrap_or_else(|| vec![0.0, 30.0, 60.0, 90.0]);
+        if list.is_empty() {
+            return Err(Error::invalid(
+                "stats.beta_star_deg",
+                "[]",
+                "a non-empty list",
+            ));
+        }
+        list.iter()
+            .map(|&b| {
+                if (-180.0..=180.0).contains(&b) {
+                    Ok(b.to_radians())
+                } else {
+                    Err(Error::invalid(
+                        "stats.beta_star_deg",
+                        b,
+                        "angles in [-180, 180] degrees",
+                    ))
+                }
+            })
+            .collect()
+    }
+
+    /// The scene shared by `deterministic` and `stochastic`.
+    pub fn scene(&self) -> Result<Scene> {
+        let wall = self.wall_source()?;
+        let inc = self.incidence.as_ref().ok_or_else(|| {
+            Error::Input("the case needs an [incidence] section with `alpha_deg`".into())
+        })?;
+        if inc.alpha_deg.is_empty() {
+            return Err(Error::invalid(
+                "incidence.alpha_deg",
+                "[]",
+                "a non-empty list of angles in [-90, 0)",
+            ));
+        }
+        let betas = inc.beta_deg.clone().unwrap_or_else(|| vec![0.0]);
+        if betas.is_empty() {
+            return Err(Error::invalid(
+                "incidence.beta_deg",
+                "[]",
+                "a non-empty list of angles in [-180, 180]",
+            ));
+        }
+        let mut conditions = Vec::new();
+        for &a in &inc.alpha_deg {
+            if !(-90.0..0.0).contains(&a) {
+                return Err(Error::invalid(
+                    "incidence.alpha_deg",
+                    a,
+                    "angles in [-90, 0) degrees",
+                ));
+            }
+            for &b in &betas {
+                if !(-180.0..=180.0).contains(&b) {
+                    return Err(Error::invalid(
+                        "incidence.beta_deg",
+                        b,
+                        "angles in [-180, 180] degrees",
+                    ));
+                }
+                // Normal incidence has no incident plane: β⁻ is taken as 0 (notes §1).
+                let beta = if a == -90.0 { 0.0 } else { b };
+                let c = IncidentCondition {
+                    alpha_in: a.to_radians(),
+                    beta_in: beta.to_radians(),
+                };
+                if !conditions.contains(&c) {
+                    conditions.push(c);
+                }
+            }
+        }
+        let mean = inc.speed_mean_m_s.unwrap_or(1.0);
+        let std = inc.speed_std_m_s.unwrap_or(0.0);
+        positive("incidence.speed_mean_m_s", mean)?;
+        if std < 0.0 {
+            return Err(Error::invalid(
+                "incidence.speed_std_m_s",
+                std,
+                "a number ≥ 0",
+            ));
+        }
+        let p = self.particles.clone().unwrap_or_default();
+        let count = p.count.unwrap_or(10_000);
+        if !(1..=100_000_000).contains(&count) {
+            return Err(Error::invalid(
+                "particles.count",
+                count,
+                "an integer from 1 to 100000000",
+            ));
+        }
+        let diameter_um = positive("particles.diameter_um", p.diameter_um.unwrap_or(500.0))?;
+        let bin = self
+            .output
+            .as_ref()
+            .and_then(|o| o.bin_width_deg)
+            .unwrap_or(1.0);
+        if !(bin > 0.0 && bin <= 10.0) {
+            return Err(Error::invalid(
+                "output.bin_width_deg",
+                bin,
+                "a width in (0, 10] degrees",
+            ));
+        }
+        let psi = self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0);
+        positive("stochastic.psi", psi)?;
+        Ok(Scene {
+            wall,
+            conditions,
+            speed: SpeedLaw {
+                mean_m_s: mean,
+                std_m_s: std,
+            },
+            count: count as usize,
+            diameter_m: diameter_um * 1e-6,
+            law: self.collision_law()?,
+            bin_width_deg: bin,
+            psi,
+        })
+    }
+
+    /// The collision law of `[collision]` (default: ideally elastic).
+    pub fn collision_law(&self) -> Result<CollisionLaw> {
+        let c = self.collision.clone().unwrap_or_default();
+        let model = c.model.as_deref().unwrap_or("elastic");
+        match model {
+            "elastic" => {
+                if c.preset.is_some()
+                    || c.e_h.is_some()
+                    || c.mu_0.is_some()
+                    || c.mu_h.is_some()
+                    || c.alpha_e_deg.is_some()
+                    || c.alpha_mu_deg.is_some()
+                {
+                    return Err(Error::Input(
+                        "[collision] model = \"elastic\" takes no preset or parameters (use model = \"sommerfeld-huber\")".into(),
+                    ));
+                }
+                Ok(CollisionLaw::Elastic)
+            }
+            "sommerfeld-huber" => {
+                let base = match c.preset.as_deref() {
+                    Some("glass-steel") => Some(ShParams::glass_steel()),
+                    Some(other) => {
+                        return Err(Error::invalid(
+                            "collision.preset",
+                            format!("\"{other}\""),
+                            "\"glass-steel\"",
+                        ))
+                    }
+                    None => None,
+                };
+                let pick = |v: Option<f64>, b: Option<f64>, key: &str| -> Result<f64> {
+                    v.or(b).ok_or_else(|| {
+                        Error::Input(format!("[collision] sommerfeld-huber needs `{key}` (or preset = \"glass-steel\")"))
+                    })
+                };
+                let e_h = pick(c.e_h, base.map(|b| b.e_h), "e_h")?;
+                let alpha_e = pick(
+                    c.alpha_e_deg.map(f64::to_radians),
+                    base.map(|b| b.alpha_e),
+                    "alpha_e_deg",
+                )?;
+                let mu_0 = pick(c.mu_0, base.map(|b| b.mu_0), "mu_0")?;
+                let mu_h = pick(c.mu_h, base.map(|b| b.mu_h), "mu_h")?;
+                let alpha_mu = pick(
+                    c.alpha_mu_deg.map(f64::to_radians),
+                    base.map(|b| b.alpha_mu),
+                    "alpha_mu_deg",
+                )?;
+                if !(e_h > 0.0 && e_h <= 1.0) {
+                    return Err(Error::invalid(
+                        "collision.e_h",
+                        e_h,
+                        "a restitution coefficient in (0, 1]",
+                    ));
+                }
+                for (k, v) in [("collision.mu_0", mu_0), ("collision.mu_h", mu_h)] {
+                    if !(0.0..=2.0).contains(&v) {
+                        return Err(Error::invalid(k, v, "a friction coefficient in [0, 2]"));
+                    }
+                }
+                for (k, v) in [
+                    ("collision.alpha_e_deg", alpha_e),
+                    ("collision.alpha_mu_deg", alpha_mu),
+                ] {
+                    if !(v > 0.0 && v <= std::f64::consts::FRAC_PI_2) {
+                        return Err(Error::invalid(
+                            k,
+                            v.to_degrees(),
+                            "an angle in (0, 90] degrees",
+                        ));
+                    }
+                }
+                Ok(CollisionLaw::SommerfeldHuber(ShParams {
+                    e_h,
+                    alpha_e,
+                    mu_0,
+                    mu_h,
+                    alpha_mu,
+                }))
+            }
+            other => Err(Error::invalid(
+                "collision.model",
+                format!("\"{other}\""),
+                "\"elastic\" or \"sommerfeld-huber\"",
+            )),
+        }
+    }
+}
+
+impl Values {
+    /// The values, checked finite; `key` names them in errors. Ranges hold at most 1e6 points.
+    pub fn expand(&self, key: &str) -> Result<Vec<f64>> {
+        let v = match self {
+            Values::List(v) => v.clone(),
+            Values::One(x) => vec![*x],
+            Values::Linear(r) => {
+                if r.step <= 0.0 || r.stop < r.start {
+                    return Err(Error::invalid(
+                        key,
+                        format!(
+                            "{{start = {}, stop = {}, step = {}}}",
+                            r.start, r.stop, r.step
+                        ),
+                        "start ≤ stop and step > 0",
+                    ));
+                }
+                let n = ((r.stop - r.start) / r.step + 1e-9).floor() as usize + 1;
+                if n > 1_000_000 {
+                    return Err(Error::invalid(key, n, "at most 1000000 points"));
+                }
+                (0..n).map(|i| r.start + i as f64 * r.step).collect()
+            }
+            Values::Log(r) => {
+                if !(1..=1_000_000).contains(&r.points) {
+                    return Err(Error::invalid(
+                        &format!("{key}.points"),
+                        r.points,
+                        "an integer from 1 to 1000000",
+                    ));
+                }
+                let n = r.points as usize;
+                (0..n)
+                    .map(|i| {
+                        let t = if n == 1 {
+                            0.0
+                        } else {
+                            i as f64 / (n - 1) as f64
+                        };
+                        10f64.powf(r.log_start + t * (r.log_stop - r.log_start))
+                    })
+                    .collect()
+            }
+        };
+        if v.is_empty() {
+            return Err(Error::invalid(key, "[]", "at least one value"));
+        }
+        Ok(v)
+    }
+}

@@ -1,0 +1,204 @@
+//! The case-file schema. Units sit in the key names (`_um`, `_deg`, `_m_s`, `_pa`).
+//! Unknown keys are rejected everywhere. Sections are optional; each command checks
+//! that it has what it needs and fills documented defaults.
+
+use serde::{Deserialize, Serialize};
+
+/// A whole case file.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Case {
+    /// Names the run; default output folder is `results/<name>/<command>/`.
+    pub name: String,
+    /// Seed of every random stream; a fixed default when absent.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// A generated surface (grid and roughness).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub surface: Option<WallSpec>,
+    /// A wall given by its normal-angle deviations (or surface parameters).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wall: Option<WallSpec>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stats: Option<StatsSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub incidence: Option<IncidenceSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub particles: Option<ParticlesSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub collision: Option<CollisionSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub output: Option<OutputSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stochastic: Option<StochasticSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub deterministic: Option<DeterministicSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub particle: Option<ParticleSection>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sweep: Option<SweepSection>,
+}
+
+/// `[surface]` or `[wall]`: either correlation lengths or normal-angle deviations per axis
+/// (Radenkovic & Simonin 2021, Eq. 15 links them: `Δ = √2 h / c_L`).
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct WallSpec {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_um: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nodes: Option<i64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rms_height_um: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corr_length_x_um: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corr_length_z_um: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub delta_xi_deg: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub delta_zeta_deg: Option<f64>,
+}
+
+/// `[stats]`: directions `β*` of the rotated frames of Table 1.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct StatsSection {
+    pub beta_star_deg: Vec<f64>,
+}
+
+/// `[incidence]`: incident angles and the horizontal-speed law.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct IncidenceSection {
+    pub alpha_deg: Vec<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub beta_deg: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed_mean_m_s: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed_std_m_s: Option<f64>,
+}
+
+/// `[particles]`: how many histories per condition, and the sphere diameter.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ParticlesSection {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub count: Option<i64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub diameter_um: Option<f64>,
+}
+
+/// `[collision]`: the collision law and its parameters.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct CollisionSection {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub model: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub preset: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub e_h: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub alpha_e_deg: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mu_0: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mu_h: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub alpha_mu_deg: Option<f64>,
+}
+
+/// `[output]`: histogram bin width of every angle PDF.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct OutputSection {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bin_width_deg: Option<f64>,
+}
+
+/// `[stochastic]`: the multiple-collision parameter ψ of Eq. (34).
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct StochasticSection {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub psi: Option<f64>,
+}
+
+/// `[deterministic]`: tracker limits and the automatic surface choice.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DeterministicSection {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_collisions: Option<i64>,
+    /// Grid points per smallest correlation length (`c_L,min / δ`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spacing_per_corr_length: Option<f64>,
+    /// Surface side in largest correlation lengths (`L / c_L,max`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub side_per_corr_length: Option<f64>,
+    /// RMS height of the automatically chosen surface (only ratios matter).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rms_height_um: Option<f64>,
+}
+
+/// `[particle]` for `force-sweep`: a material preset or explicit properties.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ParticleSection {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub preset: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub density_kg_m3: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub youngs_pa: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub poisson: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub diameter_um: Option<f64>,
+}
+
+/// `[sweep]` for `force-sweep`.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct SweepSection {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda: Option<Values>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub beta_deg: Option<Values>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub u_n_m_s: Option<Values>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub diameter_um: Option<Values>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub models: Option<Vec<String>>,
+}
+
+/// A list of values, a linear range or a logarithmic range.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(untagged)]
+pub enum Values {
+    List(Vec<f64>),
+    One(f64),
+    Linear(LinearRange),
+    Log(LogRange),
+}
+
+/// `{ start, stop, step }`, both ends included when `stop` falls on the grid.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct LinearRange {
+    pub start: f64,
+    pub stop: f64,
+    pub step: f64,
+}
+
+/// `{ log_start, log_stop, points }`: `points` values evenly spaced in `log10`.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct LogRange {
+    pub log_start: f64,
+    pub log_stop: f64,
+    pub points: i64,
+}

@@ -1,0 +1,136 @@
+//! Command-line interface (clap): parses arguments and dispatches to `commands`.
+
+use crate::commands;
+use crate::error::{Error, Result};
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+/// Particles bouncing off anisotropic rough walls: surfaces, deterministic bouncing,
+/// a stochastic wall model, and the peak elastic force of spheroids.
+#[derive(Parser, Debug)]
+#[command(name = "rebound", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Generate a Garcia–Stoll anisotropic Gaussian surface and its normal-angle statistics (Table 1).
+    Surface(SurfaceArgs),
+    /// Track particle centres bouncing on a generated surface (Figs. 6–9, 12).
+    Deterministic(DeterministicArgs),
+    /// Run the stochastic rough-wall rebound model (Fig. 13) on the same scenes.
+    Stochastic(StochasticArgs),
+    /// Peak elastic force of spheres and prolate spheroids hitting a wall (Hu et al.).
+    #[command(name = "force-sweep")]
+    ForceSweep(ForceSweepArgs),
+    /// Compare the PDFs of two runs (e.g. deterministic vs stochastic).
+    Compare(CompareArgs),
+}
+
+/// Options every simulation subcommand takes.
+#[derive(Args, Debug, Clone, Default)]
+pub struct CommonArgs {
+    /// Case file (TOML). Looked up as given, then under configs/ (e.g. `cases/aniso.toml`).
+    /// Without it the subcommand runs its built-in default case.
+    #[arg(long, value_name = "FILE")]
+    pub case: Option<PathBuf>,
+    /// Output directory [default: results/<case name>/<subcommand>/].
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Seed of every random stream; overrides the case's `seed`.
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
+    /// Worker threads [default: all cores]. Outputs are identical for any value.
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct SurfaceArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Also save the height field (little-endian f32 with a small header; see README) to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub heights: Option<PathBuf>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct DeterministicArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Reuse a height field saved by `rebound surface --heights FILE` instead of generating one.
+    #[arg(long, value_name = "FILE")]
+    pub surface: Option<PathBuf>,
+    /// Particles per incident condition; overrides `[particles] count`.
+    #[arg(long, value_name = "N")]
+    pub particles: Option<u64>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct StochasticArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Particles per incident condition; overrides `[particles] count`.
+    #[arg(long, value_name = "N")]
+    pub particles: Option<u64>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct ForceSweepArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct CompareArgs {
+    /// First run's output directory (e.g. a deterministic run: "DS").
+    #[arg(long, value_name = "DIR")]
+    pub a: PathBuf,
+    /// Second run's output directory (e.g. a stochastic run: "SM").
+    #[arg(long, value_name = "DIR")]
+    pub b: PathBuf,
+    /// Where to write comparison.csv and the overlay figures.
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Label of run A in figures.
+    #[arg(long, default_value = "DS")]
+    pub label_a: String,
+    /// Label of run B in figures.
+    #[arg(long, default_value = "SM")]
+    pub label_b: String,
+}
+
+/// Runs a parsed command inside a rayon pool of the requested size.
+pub fn run(cli: Cli) -> Result<()> {
+    let threads = match &cli.command {
+        Command::Surface(a) => a.common.threads,
+        Command::Deterministic(a) => a.common.threads,
+        Command::Stochastic(a) => a.common.threads,
+        Command::ForceSweep(a) => a.common.threads,
+        Command::Compare(_) => None,
+    };
+    let threads = match threads {
+        Some(0) => {
+            return Err(Error::invalid(
+                "--threads",
+                0,
+                "a positive number of threads",
+            ))
+        }
+        Some(n) => n,
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| Error::Io(format!("thread pool: {e}")))?;
+    pool.install(|| match &cli.command {
+        Command::Surface(a) => commands::surface::run(a),
+        Command::Deterministic(a) => commands::deterministic::run(a),
+        Command::Stochastic(a) => commands::stochastic::run(a),
+        Command::ForceSweep(a) => commands::force_sweep::run(a),
+        Command::Compare(a) => commands::compare::run(a),
+    })
+}

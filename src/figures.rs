@@ -1,0 +1,248 @@
+//! SVG figures: the one place that talks to `plotters`. Figures are rendered into a
+//! string and written atomically like every other output.
+
+use crate::error::{Error, Result};
+use crate::output::write_atomic;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// How a series is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind {
+    Line,
+    /// A histogram outline: points are `(bin centre, value)`, drawn as steps.
+    Step,
+    Markers,
+    Dashed,
+}
+
+/// One labelled series.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+    pub kind: Kind,
+}
+
+impl Series {
+    pub fn new(label: impl Into<String>, points: Vec<(f64, f64)>, kind: Kind) -> Series {
+        Series {
+            label: label.into(),
+            points,
+            kind,
+        }
+    }
+}
+
+/// One panel.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Plot {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub series: Vec<Series>,
+    pub log_x: bool,
+    pub log_y: bool,
+    /// Fixed x range; `None` fits the data.
+    pub x_range: Option<(f64, f64)>,
+}
+
+const PALETTE: [RGBColor; 8] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(23, 190, 207),
+];
+
+fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in vals.filter(|v| v.is_finite() && (!log || *v > 0.0)) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return if log { (0.1, 10.0) } else { (0.0, 1.0) };
+    }
+    if log {
+        if hi <= lo {
+            return (lo / 2.0, hi * 2.0);
+        }
+        return (lo / 1.2, hi * 1.2);
+    }
+    if hi <= lo {
+        return (lo - 1.0, hi + 1.0);
+    }
+    let pad = 0.05 * (hi - lo);
+    (lo - pad, hi + pad)
+}
+
+/// Renders `plots` side by side in a grid of `cols` columns into an SVG file.
+pub fn plot_grid_svg(path: &Path, plots: &[Plot], cols: usize) -> Result<()> {
+    let cols = cols.max(1);
+    let rows = plots.len().div_ceil(cols).max(1);
+    let (w, h) = (480 * cols as u32, 360 * rows as u32);
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_err)?;
+        let areas = root.split_evenly((rows, cols));
+        for (plot, area) in plots.iter().zip(areas.iter()) {
+            draw(plot, area)?;
+        }
+        root.present().map_err(draw_err)?;
+    }
+    write_atomic(path, svg.as_bytes())
+}
+
+/// Renders one plot into an SVG file.
+pub fn plot_svg(path: &Path, plot: &Plot) -> Result<()> {
+    plot_grid_svg(path, std::slice::from_ref(plot), 1)
+}
+
+fn draw_err<E: std::fmt::Debug>(e: E) -> Error {
+    Error::Io(format!("drawing figure: {e:?}"))
+}
+
+fn draw<DB: DrawingBackend>(
+    plot: &Plot,
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+) -> Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let xs = plot
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.0));
+    let ys = plot
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1));
+    let (x0, x1) = plot.x_range.unwrap_or_else(|| range(xs, plot.log_x));
+    let (y0, y1) = range(ys, plot.log_y);
+    let y0 = if !plot.log_y && y0 > 0.0 && y0 < 0.3 * y1 {
+        0.0
+    } else {
+        y0
+    };
+    let mut builder = ChartBuilder::on(area);
+    builder
+        .caption(&plot.title, ("sans-serif", 16))
+        .margin(10)
+        .x_label_area_size(36)
+        .y_label_area_size(56);
+    macro_rules! finish {
+        ($chart:expr) => {{
+            let mut chart = $chart;
+            chart
+                .configure_mesh()
+                .x_desc(plot.x_label.as_str())
+                .y_desc(plot.y_label.as_str())
+                .light_line_style(WHITE.mix(0.0))
+                .draw()
+                .map_err(draw_err)?;
+            for (i, s) in plot.series.iter().enumerate() {
+                let color = PALETTE[i % PALETTE.len()];
+                let pts: Vec<(f64, f64)> = s
+                    .points
+                    .iter()
+                    .copied()
+                    .filter(|p| {
+                        p.0.is_finite()
+                            && p.1.is_finite()
+                            && (!plot.log_x || p.0 > 0.0)
+                            && (!plot.log_y || p.1 > 0.0)
+                    })
+                    .collect();
+                let anno = match s.kind {
+                    Kind::Line => chart
+                        .draw_series(LineSeries::new(pts, color.stroke_width(2)))
+                        .map_err(draw_err)?,
+                    Kind::Dashed => chart
+                        .draw_series(DashedLineSeries::new(pts, 6, 4, color.stroke_width(2)))
+                        .map_err(draw_err)?,
+                    Kind::Step => {
+                        let mut step = Vec::with_capacity(2 * pts.len());
+                        let half = if pts.len() > 1 {
+                            0.5 * (pts[1].0 - pts[0].0)
+                        } else {
+                            0.5
+                        };
+                        for &(x, y) in &pts {
+                            step.push((x - half, y));
+                            step.push((x + half, y));
+                        }
+                        chart
+                            .draw_series(LineSeries::new(step, color.stroke_width(2)))
+                            .map_err(draw_err)?
+                    }
+                    Kind::Markers => chart
+                        .draw_series(pts.into_iter().map(|p| Circle::new(p, 3, color.filled())))
+                        .map_err(draw_err)?,
+                };
+                anno.label(s.label.clone()).legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2))
+                });
+            }
+            if plot.series.iter().any(|s| !s.label.is_empty()) {
+                chart
+                    .configure_series_labels()
+                    .background_style(WHITE.mix(0.8))
+                    .border_style(BLACK)
+                    .position(SeriesLabelPosition::UpperRight)
+                    .draw()
+                    .map_err(draw_err)?;
+            }
+        }};
+    }
+    match (plot.log_x, plot.log_y) {
+        (false, false) => finish!(builder
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(draw_err)?),
+        (true, false) => finish!(builder
+            .build_cartesian_2d((x0..x1).log_scale(), y0..y1)
+            .map_err(draw_err)?),
+        (false, true) => finish!(builder
+            .build_cartesian_2d(x0..x1, (y0..y1).log_scale())
+            .map_err(draw_err)?),
+        (true, true) => finish!(builder
+            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+            .map_err(draw_err)?),
+    }
+    Ok(())
+}
+
+/// `(bin centre, value)` points of a PDF, for a `Step` series.
+pub fn bins_to_points(bins: &[crate::tally::Bin]) -> Vec<(f64, f64)> {
+    bins.iter()
+        .map(|b| (0.5 * (b.lo + b.hi), b.value))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn writes_an_svg_with_every_label() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("f.svg");
+        let plot = Plot {
+            title: "t".into(),
+            x_label: "x (deg)".into(),
+            y_label: "pdf".into(),
+            series: vec![
+                Series::new("DS", vec![(0.0, 1.0), (1.0, 2.0)], Kind::Step),
+                Series::new("SM", vec![(0.0, 1.5), (1.0, 2.5)], Kind::Line),
+            ],
+            ..Default::default()
+        };
+        plot_svg(&p, &plot).unwrap();
+        let s = std::fs::read_to_string(&p).unwrap();
+        assert!(s.starts_with("<svg") && s.contains("DS") && s.contains("SM"));
+    }
+}

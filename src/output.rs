@@ -1,0 +1,199 @@
+//! Writing results: atomic files (temporary file, then rename), deterministic number
+//! formatting, CSV tables and the run manifest `run.toml`.
+
+use crate::error::{Error, Result};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// Creates the output directory (and parents).
+pub fn prepare_out_dir(dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same directory and a rename,
+/// so a reader never sees a half-written file.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
+    let result = (|| -> std::io::Result<()> {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(bytes)?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if let Err(e) = result {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(Error::io(path, e));
+    }
+    Ok(())
+}
+
+/// A number for a CSV cell: 7 significant digits, shortest form, the same on every machine.
+/// Non-finite values are a bug upstream; they are written as an empty cell rather than `NaN`.
+pub fn fmt_num(x: f64) -> String {
+    if !x.is_finite() {
+        return String::new();
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let rounded: f64 = format!("{x:.6e}").parse().unwrap_or(x);
+    format!("{rounded}")
+}
+
+/// An optional number: empty cell for `None`.
+pub fn fmt_opt(x: Option<f64>) -> String {
+    x.map(fmt_num).unwrap_or_default()
+}
+
+/// A CSV table with a fixed header.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CsvTable {
+    pub header: Vec<String>,
+    pub rows: Vec<Vec<String>>,
+}
+
+impl CsvTable {
+    pub fn new(header: &[&str]) -> CsvTable {
+        CsvTable {
+            header: header.iter().map(|s| s.to_string()).collect(),
+            rows: Vec::new(),
+        }
+    }
+
+    pub fn push(&mut self, row: Vec<String>) {
+        debug_assert_eq!(row.len(), self.header.len());
+        self.rows.push(row);
+    }
+
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
+        // Writing into memory cannot fail.
+        let _ = w.write_record(&self.header);
+        for r in &self.rows {
+            let _ = w.write_record(r);
+        }
+        w.into_inner().unwrap_or_default()
+    }
+
+    pub fn write(&self, path: &Path) -> Result<()> {
+        write_atomic(path, &self.to_bytes())
+    }
+
+    /// Reads a CSV file written by this tool; checks the header is exactly `header`.
+    pub fn read(path: &Path, header: &[&str]) -> Result<CsvTable> {
+        let mut r = csv::Reader::from_path(path)
+            .map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
+        let got: Vec<String> = r
+            .headers()
+            .map_err(|e| Error::Input(format!("{}: {e}", path.display())))?
+            .iter()
+            .map(String::from)
+            .collect();
+        if got != header {
+            return Err(Error::Input(format!(
+                "{}: not a rebound output (header is `{}`, expected `{}`)",
+                path.display(),
+                got.join(","),
+                header.join(",")
+            )));
+        }
+        let mut t = CsvTable::new(header);
+        for rec in r.records() {
+            let rec = rec.map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
+            t.rows.push(rec.iter().map(String::from).collect());
+        }
+        Ok(t)
+    }
+}
+
+/// The run manifest `run.toml`: what ran, with which case, seed and threads, and how long
+/// it took. Timings live only here so that the CSV outputs are byte-identical between runs.
+pub struct Manifest {
+    root: toml::Table,
+    started: std::time::Instant,
+}
+
+impl Manifest {
+    pub fn new(command: &str, case: &crate::case::Case, seed: u64, threads: usize) -> Manifest {
+        let mut run = toml::Table::new();
+        run.insert("command".into(), command.into());
+        run.insert("version".into(), env!("CARGO_PKG_VERSION").into());
+        run.insert("seed".into(), toml::Value::Integer(seed as i64));
+        run.insert("threads".into(), toml::Value::Integer(threads as i64));
+        let mut root = toml::Table::new();
+        root.insert("run".into(), toml::Value::Table(run));
+        let case_value =
+            toml::Value::try_from(case).unwrap_or(toml::Value::Table(toml::Table::new()));
+        root.insert("case".into(), case_value);
+        Manifest {
+            root,
+            started: std::time::Instant::now(),
+        }
+    }
+
+    /// Adds or replaces a top-level entry (e.g. a `[surface_choice]` table).
+    pub fn set(&mut self, key: &str, value: toml::Value) {
+        self.root.insert(key.into(), value);
+    }
+
+    /// Adds an entry to the `[run]` table.
+    pub fn set_run(&mut self, key: &str, value: toml::Value) {
+        if let Some(toml::Value::Table(run)) = self.root.get_mut("run") {
+            run.insert(key.into(), value);
+        }
+    }
+
+    /// Seconds since the manifest was created.
+    pub fn elapsed_s(&self) -> f64 {
+        self.started.elapsed().as_secs_f64()
+    }
+
+    /// Writes `dir/run.toml` with the wall time so far.
+    pub fn write(mut self, dir: &Path) -> Result<PathBuf> {
+        let wall = self.elapsed_s();
+        self.set_run(
+            "wall_time_s",
+            toml::Value::Float((wall * 1e3).round() / 1e3),
+        );
+        let text =
+            toml::to_string_pretty(&self.root).map_err(|e| Error::Io(format!("run.toml: {e}")))?;
+        let path = dir.join("run.toml");
+        write_atomic(&path, text.as_bytes())?;
+        Ok(path)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_short_and_stable() {
+        assert_eq!(fmt_num(0.123456789), "0.1234568");
+        assert_eq!(fmt_num(32.5), "32.5");
+        assert_eq!(fmt_num(-1e-9), "-0.000000001");
+        assert_eq!(fmt_num(0.0), "0");
+        assert_eq!(fmt_num(f64::NAN), "");
+    }
+
+    #[test]
+    fn atomic_write_leaves_no_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("a.csv");
+        write_atomic(&p, b"x\n").unwrap();
+        let names: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(names, vec![std::ffi::OsString::from("a.csv")]);
+    }
+}

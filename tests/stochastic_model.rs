@@ -85,9 +85,9 @@ fn smooth_wall_is_specular_for_the_elastic_law() {
     for (a, b) in [(-0.01, 0.0), (-12.5, 60.0), (-90.0, 0.0), (-45.0, -170.0)] {
         for r in run(&wall, &CollisionLaw::Elastic, a, b, 10) {
             let (ao, bo) = incident_angles(&r.velocity);
-            assert!((ao - (-a as f64).to_radians()).abs() < 1e-12);
+            assert!((ao - (-a).to_radians()).abs() < 1e-12);
             if a > -90.0 {
-                assert!(wrap_pi(bo - (b as f64).to_radians()).abs() < 1e-12);
+                assert!(wrap_pi(bo - b.to_radians()).abs() < 1e-12);
             }
             assert_eq!(r.tries, 1);
         }
@@ -105,7 +105,7 @@ fn without_shadow_effect_gamma_pair_has_the_moments_of_eq26() {
         (dev(3.8, 7.5), 135.0),
     ] {
         let out = run(&wall, &CollisionLaw::Elastic, -85.0, b, 100_000);
-        let m = rotated_moments(&wall, (b as f64).to_radians());
+        let m = rotated_moments(&wall, f64::to_radians(b));
         let n = out.len() as f64;
         let (mg, vg) = (
             out.iter().map(|r| r.gamma).sum::<f64>() / n,
@@ -134,7 +134,7 @@ fn gamma_star_given_gamma_follows_eq30() {
     // Within a thin slice of γ, γ* has mean Cov/Δγ² γ and variance Δγ*² − Cov²/Δγ².
     let wall = dev(2.5, 7.5);
     let b = 30.0f64;
-    let m = rotated_moments(&wall, b.to_radians());
+    let m = rotated_moments(&wall, f64::to_radians(b));
     let out = run(&wall, &CollisionLaw::Elastic, -12.5, b, 200_000);
     let sd = m.var_a.sqrt();
     for g0 in [-1.0, 0.0, 1.0, 2.0] {
@@ -163,7 +163,7 @@ fn rho_plus_minus_one_makes_gamma_star_a_linear_function_of_gamma() {
     // Δζ = 0, β⁻ = ±60°: ρ = ±1, Var(γ*|γ) = 0 and γ* = tan β⁻ · γ (Eq. 30).
     let wall = dev(3.8, 0.0);
     for b in [60.0f64, -60.0] {
-        let m = rotated_moments(&wall, b.to_radians());
+        let m = rotated_moments(&wall, f64::to_radians(b));
         let rho = m.cov / (m.var_a * m.var_b).sqrt();
         assert!((rho.abs() - 1.0).abs() < 1e-12);
         for r in run(&wall, &sh(), -15.0, b, 5_000) {

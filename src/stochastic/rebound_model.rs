@@ -35,6 +35,10 @@ pub struct Rebound {
     /// non-finite input) and was returned unchanged; [`MAX_TRIES`] means the guard was hit
     /// and the rebound is the one off the mean (smooth) wall.
     pub tries: u32,
+    /// Candidate rebounds computed (steps 5–6 reached, i.e. `U⁻·n < 0`): `1/candidates`
+    /// estimates the single-collision probability (a run's `p_single` is
+    /// `Σ accepted / Σ candidates`).
+    pub candidates: u32,
 }
 
 impl Rebound {
@@ -74,15 +78,42 @@ pub fn single_collision_probability(
     }
 }
 
-/// `α = asin(v/|U|)` of a velocity (notes §1); 0 for a zero velocity.
+/// Accepts a candidate rebound with the probability [`single_collision_probability`]
+/// (Eqs. 34–35), from the velocity alone and mostly without `asin`/`tanh`:
+/// with `y = v⁺/|U⁺|` and `t₀ = ψ y / Δγ(β⁺) ≤ ψ α⁺/Δγ(β⁺)` (`asin y ≥ y`),
+/// `tanh(t₀) ≥ (t₀ + t₀²)/(1 + t₀ + t₀²)` (from `e^{2t} ≥ 1 + 2t + 2t²`) is a squeeze, and
+/// `tanh(t) = 1` exactly in `f64` for `t ≥ 20` (no uniform is drawn then).
 #[inline]
-fn vertical_angle(u: &Vector3<f64>) -> f64 {
-    let s = u.norm();
-    if s > 0.0 {
-        (u.y / s).clamp(-1.0, 1.0).asin()
-    } else {
-        0.0
+fn accept_single_collision<R: Rng + ?Sized>(
+    u_out: &Vector3<f64>,
+    wall: &Deviations,
+    psi: f64,
+    rng: &mut R,
+) -> bool {
+    let s = u_out.norm();
+    if s.is_nan() || s <= 0.0 || u_out.y <= 0.0 {
+        return false;
     }
+    let y = (u_out.y / s).min(1.0);
+    let h2 = u_out.x * u_out.x + u_out.z * u_out.z;
+    let var = if h2 > 0.0 {
+        (u_out.x * u_out.x * wall.delta_xi * wall.delta_xi
+            + u_out.z * u_out.z * wall.delta_zeta * wall.delta_zeta)
+            / h2
+    } else {
+        wall.delta_xi * wall.delta_xi
+    };
+    if var <= 0.0 {
+        return true;
+    }
+    let sd = var.sqrt();
+    let t0 = psi * y / sd;
+    if t0 >= 20.0 {
+        return true;
+    }
+    let u: f64 = rng.gen();
+    let q = t0 + t0 * t0;
+    u * (1.0 + q) < q || u < (psi * y.asin() / sd).tanh()
 }
 
 /// One rebound of a particle from the statistical anisotropic rough wall
@@ -142,6 +173,7 @@ pub fn rebound<R: Rng + ?Sized>(
             gamma_star: 0.0,
             normal: j,
             tries: 0,
+            candidates: 0,
         };
     }
     let smooth = Rebound {
@@ -151,6 +183,7 @@ pub fn rebound<R: Rng + ?Sized>(
         gamma_star: 0.0,
         normal: j,
         tries: 1,
+        candidates: 1,
     };
     let smooth_wall = wall.delta_xi == 0.0 && wall.delta_zeta == 0.0;
     let bad_psi = !(psi > 0.0 && psi.is_finite());
@@ -160,6 +193,7 @@ pub fn rebound<R: Rng + ?Sized>(
             velocity: u,
             spin: w,
             tries: if bad_psi { MAX_TRIES } else { 1 },
+            candidates: if bad_psi { MAX_TRIES } else { 1 },
             ..smooth
         };
     }
@@ -167,6 +201,7 @@ pub fn rebound<R: Rng + ?Sized>(
     let (alpha, beta) = incident_angles(&u_in);
     let moments = rotated_moments(wall, beta);
     let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
+    let mut candidates = 0u32;
     for tries in 1..=MAX_TRIES {
         // Steps 2–3.
         let gamma = sampler.sample(rng);
@@ -183,11 +218,10 @@ pub fn rebound<R: Rng + ?Sized>(
             continue;
         }
         // Step 5.
+        candidates += 1;
         let (u, w) = law.collide(u_in, omega_in, n, diameter_m);
         // Step 6.
-        let alpha_out = vertical_angle(&u);
-        let p = single_collision_probability(&u, alpha_out, wall, psi);
-        if p <= 0.0 || (p < 1.0 && rng.gen::<f64>() >= p) {
+        if !accept_single_collision(&u, wall, psi, rng) {
             continue;
         }
         // Step 7.
@@ -198,6 +232,7 @@ pub fn rebound<R: Rng + ?Sized>(
             gamma_star,
             normal: n,
             tries,
+            candidates,
         };
     }
     let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
@@ -205,6 +240,40 @@ pub fn rebound<R: Rng + ?Sized>(
         velocity: u,
         spin: w,
         tries: MAX_TRIES,
+        candidates,
         ..smooth
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+
+    #[test]
+    fn squeezed_acceptance_has_the_probability_of_eq34() {
+        let wall = Deviations {
+            delta_xi: 0.04,
+            delta_zeta: 0.13,
+        };
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(3);
+        for (a_deg, b) in [
+            (0.5, 0.3),
+            (2.0, 1.0),
+            (5.0, -2.0),
+            (20.0, 0.0),
+            (0.01, 1.5),
+        ] {
+            let u = crate::angles::velocity_from_angles(2.0, f64::to_radians(a_deg), b);
+            let (ao, _) = crate::angles::incident_angles(&u);
+            let p = single_collision_probability(&u, ao, &wall, 2.0);
+            let n = 200_000;
+            let k = (0..n)
+                .filter(|_| accept_single_collision(&u, &wall, 2.0, &mut rng))
+                .count();
+            let f = k as f64 / n as f64;
+            let se = (p * (1.0 - p) / n as f64).sqrt().max(1e-9);
+            assert!((f - p).abs() < 5.0 * se + 1e-12, "α⁺={a_deg}: {f} vs {p}");
+        }
     }
 }

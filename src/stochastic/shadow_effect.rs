@@ -55,6 +55,10 @@ use rand::Rng;
 use rand_distr::{Exp1, StandardNormal};
 use std::f64::consts::{FRAC_PI_2, PI};
 
+/// `1/3 − 1/π²`: `−g''(w) − 1/(π − w)² = Σ_{k ∉ {0, 1}} (w − kπ)^{−2}` is convex on
+/// `(0, π)` and takes this value at both ends, so it never exceeds it.
+const SQUEEZE_C0: f64 = 1.0 / 3.0 - 1.0 / (PI * PI);
+
 /// `sin(x)/x`, accurate also for tiny `x`.
 #[inline]
 fn sinc(x: f64) -> f64 {
@@ -118,7 +122,13 @@ impl ShadowSampler {
         }
         // Mode of x·exp(−(x+a)²/2s²): root of x² + a x − s² = 0 (a < 0, so no cancellation).
         let x0 = ((-a + (a * a + 4.0 * s * s).sqrt()) * 0.5).min(PI - 1e-3);
-        let k = dlog_sinc(x0);
+        // k = g'(x0) = cot x0 − 1/x0 and sin x0 / x0 from one sin_cos (series near 0).
+        let (k, sinc_x0) = if x0 < 1e-3 {
+            (dlog_sinc(x0), sinc(x0))
+        } else {
+            let (sn, cs) = x0.sin_cos();
+            (cs / sn - 1.0 / x0, sn / x0)
+        };
         let mu = -a + k * s * s;
         let m = mu / s;
         let p_rayleigh = if m > 0.0 {
@@ -131,7 +141,7 @@ impl ShadowSampler {
             s,
             x_max,
             x0,
-            sinc_x0: sinc(x0),
+            sinc_x0,
             k,
             m,
             p_rayleigh,
@@ -178,6 +188,24 @@ impl ShadowSampler {
         }
     }
 
+    /// Acceptance ratio `r(x) = sinc(x) / (sinc(x0) e^{k(x − x0)})` of a proposal `x = γ − α⁻`.
+    #[inline]
+    fn ratio(&self, x: f64) -> f64 {
+        sinc(x) / (self.sinc_x0 * (self.k * (x - self.x0)).exp())
+    }
+
+    /// A cheap lower bound of [`Self::ratio`]: `1 − C(w)(x − x0)²/2`, `w = max(x, x0)`.
+    #[inline]
+    fn squeeze(&self, x: f64) -> f64 {
+        let pw = PI - x.max(self.x0);
+        let dx = x - self.x0;
+        if pw > 0.1 {
+            1.0 - 0.5 * (1.0 / (pw * pw) + SQUEEZE_C0) * dx * dx
+        } else {
+            0.0
+        }
+    }
+
     /// One proposal: `Some(γ)` if accepted. Exposed so that the bench and tests can
     /// count proposals per accepted sample.
     #[inline]
@@ -191,9 +219,12 @@ impl ShadowSampler {
         if x > self.x_max || x <= 0.0 {
             return None;
         }
-        // r(x) = sinc(x) / (sinc(x0) e^{k(x − x0)}) ∈ [0, 1].
-        let r = sinc(x) / (self.sinc_x0 * (self.k * (x - self.x0)).exp());
-        if rng.gen::<f64>() < r {
+        // Accept with r(x) = sinc(x) / (sinc(x0) e^{k(x − x0)}) ∈ [0, 1]. Squeeze first:
+        // ln r ≥ −C(w)(x − x0)²/2 with w = max(x, x0) and C(w) = 1/(π − w)² + 1/3 − 1/π²
+        // ≥ −g''(w) (module doc), and e^{−t} ≥ 1 − t, so most proposals are accepted
+        // without sin/exp. Same decision for the same uniform: the samples are unchanged.
+        let u: f64 = rng.gen();
+        if u < self.squeeze(x) || u < self.ratio(x) {
             let gamma = self.s * d + self.k * self.s * self.s;
             // γ ≤ α⁻ only by rounding when x is a few ulps: a null event, rejected.
             (gamma > self.alpha).then_some(gamma.min(FRAC_PI_2))
@@ -381,6 +412,21 @@ mod tests {
                 for _ in 0..2000 {
                     let g = sm.sample(&mut rng);
                     assert!(g > deg(a) && g <= FRAC_PI_2 && g.is_finite());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn squeeze_is_below_the_acceptance_ratio() {
+        for &a in &[-0.01, -1.0, -12.5, -45.0, -80.0, -90.0] {
+            for &s in &[0.01, 1.0, 3.8, 10.0, 20.0] {
+                let sm = ShadowSampler::new(deg(a), deg(s));
+                for i in 1..2000 {
+                    let x = sm.x_max * i as f64 / 2000.0;
+                    let (q, r) = (sm.squeeze(x), sm.ratio(x));
+                    assert!(q <= r * (1.0 + 1e-12), "a={a} s={s} x={x}: {q} > {r}");
+                    assert!(r <= 1.0 + 1e-12, "a={a} s={s} x={x}: r = {r}");
                 }
             }
         }

@@ -184,8 +184,12 @@ pub fn read_run(dir: &Path, flag: &str) -> Result<RunOutputs> {
             )));
         }
     }
-    let summary = CsvTable::read(&sp, &SUMMARY_HEADER)?;
-    let pdfs = CsvTable::read(&pp, &PDFS_HEADER)?;
+    let named = |e: Error| match e {
+        Error::Input(m) => Error::Input(format!("`{flag}` {m}")),
+        other => other,
+    };
+    let summary = CsvTable::read(&sp, &SUMMARY_HEADER).map_err(named)?;
+    let pdfs = CsvTable::read(&pp, &PDFS_HEADER).map_err(named)?;
     let mut out = RunOutputs::default();
     let ia = SUMMARY_HEADER
         .iter()

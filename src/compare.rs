@@ -35,8 +35,11 @@ pub const COMPARISON_HEADER: [&str; 9] = [
 /// the whole condition).
 pub const UNMATCHED_HEADER: [&str; 4] = ["alpha_in_deg", "beta_in_deg", "quantity", "only_in"];
 
-/// Rows of `pdfs.csv` that are not probability densities and are not compared.
-const NOT_PDFS: [&str; 1] = ["p_single_given_alpha_out"];
+/// Rows of `pdfs.csv` that are not probability densities and are not compared: the
+/// single-collision probability curves (`p_single_given_alpha_out`, …).
+fn is_pdf(quantity: &str) -> bool {
+    !quantity.starts_with("p_single")
+}
 
 /// Quantities drawn as overlay figures (when present in both runs).
 const OVERLAYS: [(&str, &str); 7] = [
@@ -249,7 +252,7 @@ pub fn read_run(dir: &Path, flag: &str) -> Result<RunOutputs> {
         out.pdfs.insert(
             k,
             list.into_iter()
-                .filter(|(q, _)| !NOT_PDFS.contains(&q.as_str()))
+                .filter(|(q, _)| is_pdf(q))
                 .map(|(q, b)| (q, BinnedPdf::new(b)))
                 .collect(),
         );
@@ -490,6 +493,9 @@ pub fn run_compare(
     let a = read_run(a_dir, "--a")?;
     let b = read_run(b_dir, "--b")?;
     let (rows, unmatched) = compare_runs(&a, &b);
+    // Whole conditions one line each; quantities (model-specific curves such as
+    // `gamma_model` or `dbeta_first`) one line per name.
+    let mut only_q: BTreeMap<(String, &str), usize> = BTreeMap::new();
     for (al, be, q, w) in &unmatched {
         let run = if *w == "a" { a_dir } else { b_dir };
         if q.is_empty() {
@@ -498,11 +504,15 @@ pub fn run_compare(
                 run.display()
             );
         } else {
-            eprintln!(
-                "warning: quantity `{q}` at α⁻ = {al}°, β⁻ = {be}° is only in {} (listed in unmatched.csv)",
-                run.display()
-            );
+            *only_q.entry((q.clone(), *w)).or_default() += 1;
         }
+    }
+    for ((q, w), n) in &only_q {
+        let run = if *w == "a" { a_dir } else { b_dir };
+        eprintln!(
+            "note: quantity `{q}` is only in {} ({n} condition(s), listed in unmatched.csv)",
+            run.display()
+        );
     }
     if rows.is_empty() {
         return Err(Error::Input(format!(

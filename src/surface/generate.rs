@@ -113,6 +113,18 @@ pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
     }
 }
 
+/// Peak memory of [`generate`] for `p` in bytes (heights plus the half-spectrum).
+pub fn generation_bytes(p: &SurfaceSpec) -> u64 {
+    let n = p.nodes.max(1) as u64;
+    let flat = p.rms_height_m == 0.0;
+    match (p.corr_length_x_m, p.corr_length_z_m) {
+        _ if flat => 8 * n * n,
+        (None, None) | (Some(_), None) => 8 * n + 16 * (n / 2 + 1),
+        (None, Some(_)) => 8 * n * n,
+        (Some(_), Some(_)) => 8 * n * n + 16 * (n / 2 + 1) * n,
+    }
+}
+
 /// Fraction of the variance carried by each DFT mode `k = 0..n` of a periodic field on
 /// `n` nodes of spacing `spacing` with autocorrelation `exp(−x²/c²)`.
 ///

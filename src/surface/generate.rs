@@ -43,7 +43,7 @@ pub const NEGLIGIBLE: f64 = 1e-40;
 pub const NOISE_BLOCK: usize = 16;
 
 /// Output rows transformed per task in the `x` pass (an even number: rows go in pairs).
-const ROW_BLOCK: usize = 8;
+const ROW_BLOCK: usize = 16;
 
 /// Generates the Garcia–Stoll surface of `p` with the noise of `seed`
 /// (Radenkovic & Simonin 2021, Eqs. 1–2).

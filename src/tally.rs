@@ -142,6 +142,10 @@ fn mean_std(xs: impl Iterator<Item = f64> + Clone) -> (f64, f64, usize) {
     (m, sd, n)
 }
 
+/// Below this magnitude (degrees) a value is rounding noise around an exact zero (e.g. `ζ'` on a
+/// 2-D wall computed through Eq. 23): it is binned as 0, so that ±1e-15 does not straddle a bin edge.
+const ZERO_SNAP_DEG: f64 = 1e-9;
+
 /// Density histogram (per degree) of `values` (degrees) on `[lo, hi]` with bins aligned on
 /// multiples of `width` from `lo`; only the span from the first to the last occupied bin is kept.
 pub fn density(values: &[f64], lo: f64, hi: f64, width: f64) -> Vec<Bin> {
@@ -152,6 +156,7 @@ pub fn density(values: &[f64], lo: f64, hi: f64, width: f64) -> Vec<Bin> {
         if !v.is_finite() {
             continue;
         }
+        let v = if v.abs() < ZERO_SNAP_DEG { 0.0 } else { v };
         let i = (((v - lo) / width).floor().max(0.0) as usize).min(nbins - 1);
         counts[i] += 1;
         n += 1;
@@ -390,5 +395,12 @@ mod tests {
         assert_eq!(r.summary[15], "0.5");
         assert_eq!(r.summary[17], "2");
         assert_eq!(r.summary[19], "");
+    }
+
+    #[test]
+    fn rounding_noise_around_zero_lands_in_one_bin() {
+        let bins = density(&[1e-15, -1e-15, 0.0, -0.0], -90.0, 90.0, 1.0);
+        assert_eq!(bins.len(), 1);
+        assert_eq!((bins[0].lo, bins[0].hi), (0.0, 1.0));
     }
 }

@@ -183,7 +183,7 @@ fn two_d_roughness_and_flat_walls_are_exact_with_finite_statistics() {
 #[test]
 fn bad_cases_fail_with_one_line_and_exit_2_writing_nothing() {
     let tmp = tempfile::tempdir().unwrap();
-    let cases: Vec<(&str, String, &str)> = vec![
+    let mut cases: Vec<(&str, String, &str)> = vec![
         (
             "unknown key",
             SMALL.replace("nodes = 256", "nodes = 256\nnodez = 3"),
@@ -233,6 +233,23 @@ fn bad_cases_fail_with_one_line_and_exit_2_writing_nothing() {
             "nodes",
         ),
     ];
+    // 40 000² nodes need 25.6 GB: refused up front where that exceeds free memory.
+    let avail_kb: Option<u64> = std::fs::read_to_string("/proc/meminfo").ok().and_then(|t| {
+        let l = t
+            .lines()
+            .find(|l| l.starts_with("MemAvailable:"))?
+            .to_owned();
+        l.split_whitespace().nth(1)?.parse().ok()
+    });
+    if avail_kb.is_some_and(|kb| kb * 1024 < 25_000_000_000) {
+        cases.push((
+            "grid too large for memory",
+            SMALL
+                .replace("nodes = 256", "nodes = 40000")
+                .replace("length_um = 256.0", "length_um = 40000.0"),
+            "nodes",
+        ));
+    }
     for (what, text, key) in cases {
         let case = write_case(tmp.path(), "bad.toml", &text);
         let out = tmp.path().join("out");

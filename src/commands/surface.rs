@@ -7,10 +7,11 @@
 
 use crate::cli::SurfaceArgs;
 use crate::commands::Context;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::{fmt_num, prepare_out_dir, CsvTable};
 use crate::surface::figure::height_map_svg;
+use crate::surface::generate::generation_bytes;
 use crate::surface::heights_io::write_heights;
 use crate::surface::stats::{surface_stats, HistogramSpec, RotatedStats, SurfaceStats};
 use crate::surface::{generate, HeightField};
@@ -63,6 +64,7 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     let spec = ctx.case.surface_spec()?;
     let betas = ctx.case.beta_star()?;
     let target = spec.deviations();
+    check_memory(&spec)?;
 
     let t0 = Instant::now();
     let field = generate(&spec, ctx.seed);
@@ -102,6 +104,36 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
         .set_run("stats_s", toml::Value::Float(round_ms(t_stats)));
     ctx.manifest.write(&dir)?;
     Ok(())
+}
+
+/// Refuses a grid whose generation would not fit in the available memory (Linux:
+/// `MemAvailable` of /proc/meminfo) instead of letting the allocation abort the process.
+fn check_memory(spec: &crate::case::SurfaceSpec) -> Result<()> {
+    let need = generation_bytes(spec);
+    let Some(avail) = mem_available_bytes() else {
+        return Ok(());
+    };
+    if need > avail {
+        let gib = |b: u64| format!("{:.1} GiB", b as f64 / (1u64 << 30) as f64);
+        return Err(Error::invalid(
+            "surface.nodes",
+            spec.nodes,
+            &format!(
+                "a grid that fits in memory: {} nodes per side need {} and {} are available",
+                spec.nodes,
+                gib(need),
+                gib(avail)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn mem_available_bytes() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024)
 }
 
 fn round_ms(s: f64) -> f64 {

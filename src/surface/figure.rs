@@ -87,6 +87,8 @@ pub fn height_map_svg(path: &Path, f: &HeightField, title: &str) -> Result<()> {
         chart
             .configure_mesh()
             .disable_mesh()
+            .label_style(("sans-serif", 12))
+            .axis_desc_style(("sans-serif", 13))
             .x_desc("x (µm)")
             .y_desc("z (µm)")
             .draw()
@@ -102,6 +104,9 @@ pub fn height_map_svg(path: &Path, f: &HeightField, title: &str) -> Result<()> {
         cbar.configure_mesh()
             .disable_mesh()
             .disable_x_axis()
+            .y_labels(8)
+            .label_style(("sans-serif", 12))
+            .axis_desc_style(("sans-serif", 13))
             .y_desc("height (µm)")
             .draw()
             .map_err(draw_err)?;

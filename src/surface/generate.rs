@@ -43,7 +43,7 @@ pub const NEGLIGIBLE: f64 = 1e-40;
 pub const NOISE_BLOCK: usize = 16;
 
 /// Output rows transformed per task in the `x` pass (an even number: rows go in pairs).
-const ROW_BLOCK: usize = 8;
+const ROW_BLOCK: usize = 16;
 
 /// Generates the Garcia–Stoll surface of `p` with the noise of `seed`
 /// (Radenkovic & Simonin 2021, Eqs. 1–2).
@@ -110,6 +110,18 @@ pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
                 heights,
             }
         }
+    }
+}
+
+/// Peak memory of [`generate`] for `p` in bytes (heights plus the half-spectrum).
+pub fn generation_bytes(p: &SurfaceSpec) -> u64 {
+    let n = p.nodes.max(1) as u64;
+    let flat = p.rms_height_m == 0.0;
+    match (p.corr_length_x_m, p.corr_length_z_m) {
+        _ if flat => 8 * n * n,
+        (None, None) | (Some(_), None) => 8 * n + 16 * (n / 2 + 1),
+        (None, Some(_)) => 8 * n * n,
+        (Some(_), Some(_)) => 8 * n * n + 16 * (n / 2 + 1) * n,
     }
 }
 

@@ -486,17 +486,17 @@ fn chunk_kernel(
     rots: &[Rotation],
     hist_stride: usize,
     acc: &mut Chunk,
+    buf: &mut RowBuf,
 ) {
-    let mut buf = RowBuf::new(2 * f.nx);
     for iz in rows {
         let with_hist = !acc.hists.is_empty() && iz % hist_stride == 0;
         row_gradients(f, iz, &mut buf.gx, &mut buf.gz);
-        let s2 = row_normals(&mut buf);
+        let s2 = row_normals(buf);
         acc.n += buf.gx.len() as f64;
         acc.slope2[0] += s2[0];
         acc.slope2[1] += s2[1];
         // The principal frame first: its angles serve every quarter turn.
-        let base = row_rotated(&mut buf, 1.0, 0.0);
+        let base = row_rotated(buf, 1.0, 0.0);
         for (k, rot) in rots.iter().enumerate() {
             let Rotation::Quarter(q) = *rot else { continue };
             let sums = quarter_sums(q, &base);
@@ -517,7 +517,7 @@ fn chunk_kernel(
             let Rotation::General(c, s) = *rot else {
                 continue;
             };
-            let sums = row_rotated(&mut buf, c, s);
+            let sums = row_rotated(buf, c, s);
             for (a, v) in acc.rot[k].iter_mut().zip(sums) {
                 *a += v;
             }
@@ -538,8 +538,9 @@ fn chunk_kernel_avx2(
     rots: &[Rotation],
     hist_stride: usize,
     acc: &mut Chunk,
+    buf: &mut RowBuf,
 ) {
-    chunk_kernel(f, rows, rots, hist_stride, acc)
+    chunk_kernel(f, rows, rots, hist_stride, acc, buf)
 }
 
 fn run_chunk(
@@ -548,13 +549,14 @@ fn run_chunk(
     rots: &[Rotation],
     hist_stride: usize,
     acc: &mut Chunk,
+    buf: &mut RowBuf,
 ) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the CPU supports AVX2 (checked just above).
-        return unsafe { chunk_kernel_avx2(f, rows, rots, hist_stride, acc) };
+        return unsafe { chunk_kernel_avx2(f, rows, rots, hist_stride, acc, buf) };
     }
-    chunk_kernel(f, rows, rots, hist_stride, acc)
+    chunk_kernel(f, rows, rots, hist_stride, acc, buf)
 }
 
 /// `asin` of `LANES` values, bit-identical to [`asin_fast`] lane by lane. When no lane
@@ -661,12 +663,15 @@ pub fn surface_stats(
     } else {
         (0..f.nz.div_ceil(ROWS_PER_CHUNK))
             .into_par_iter()
-            .map(|c| {
-                let mut acc = empty.clone();
-                let rows = c * ROWS_PER_CHUNK..((c + 1) * ROWS_PER_CHUNK).min(f.nz);
-                run_chunk(f, rows, &trig, hist_stride, &mut acc);
-                acc
-            })
+            .map_init(
+                || RowBuf::new(2 * f.nx),
+                |buf, c| {
+                    let mut acc = empty.clone();
+                    let rows = c * ROWS_PER_CHUNK..((c + 1) * ROWS_PER_CHUNK).min(f.nz);
+                    run_chunk(f, rows, &trig, hist_stride, &mut acc, buf);
+                    acc
+                },
+            )
             .collect()
     };
 

@@ -1,9 +1,11 @@
-//! `rebound compare`.
+//! `rebound compare --a DIR --b DIR --out DIR`: KS and L1 distances, means and stds of
+//! the PDFs of two runs (see `crate::compare`).
 
 use crate::cli::CompareArgs;
-use crate::error::{Error, Result};
+use crate::error::Result;
 
-/// Runs the subcommand. Not implemented yet: refuses with exit status 2 rather than fake output.
-pub fn run(_args: &CompareArgs) -> Result<()> {
-    Err(Error::NotImplemented("`rebound compare` (issue #4)".into()))
+/// Runs the subcommand.
+pub fn run(args: &CompareArgs) -> Result<()> {
+    crate::compare::run_compare(&args.a, &args.b, &args.out, &args.label_a, &args.label_b)?;
+    Ok(())
 }

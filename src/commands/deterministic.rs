@@ -2,7 +2,7 @@
 //! rough surface for every incident condition of the case
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
-use crate::case::{warn, Case, IncidentCondition, Scene, WallSource};
+use crate::case::{warn, Case, IncidentCondition, Scene, SurfaceSpec, WallSource};
 use crate::cli::DeterministicArgs;
 use crate::commands::Context;
 use crate::deterministic::scene::{choose_surface, SceneOptions, SurfaceChoice};
@@ -115,27 +115,23 @@ impl SurfacePlan {
     }
 }
 
-/// Generates the planned surface with the Garcia–Stoll generator of `crate::surface`.
+/// Generates the planned surface with the Garcia–Stoll generator of `crate::surface`
+/// (Radenkovic & Simonin 2021, Eqs. 1–2).
 pub fn generate_surface(plan: &SurfacePlan, seed: u64) -> Result<HeightField> {
-    let (_l, _n, _h, _cx, _cz) = plan.grid();
-    let _ = seed;
-    Err(Error::NotImplemented(
-        "surface generation (`crate::surface::generate`, issue #2) is not on main yet".into(),
-    ))
+    let (length_m, nodes, rms_height_m, corr_length_x_m, corr_length_z_m) = plan.grid();
+    let spec = SurfaceSpec {
+        length_m,
+        nodes,
+        rms_height_m,
+        corr_length_x_m,
+        corr_length_z_m,
+    };
+    Ok(crate::surface::generate::generate(&spec, seed))
 }
 
 /// Reads a height field saved by `rebound surface --heights FILE`.
 pub fn read_surface(path: &Path) -> Result<HeightField> {
-    if !path.is_file() {
-        return Err(Error::Input(format!(
-            "--surface file `{}` not found",
-            path.display()
-        )));
-    }
-    Err(Error::NotImplemented(format!(
-        "--surface `{}`: reading saved height fields (`crate::surface::heights_io`, issue #2) is not on main yet",
-        path.display()
-    )))
+    crate::surface::heights_io::read_heights(path)
 }
 
 /// RMS of the triangle normals' angle fluctuations `(ξ − 90°, ζ − 90°)` (rad): the

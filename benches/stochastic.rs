@@ -1,0 +1,171 @@
+//! Accepted rebounds per second of the stochastic model (issue 4 targets on 2 cores:
+//! ≥ 5 M/s elastic (2.5°, 7.5°) at α⁻ = −12.5°, ≥ 2 M/s Sommerfeld–Huber Sec. 4 scene,
+//! ≥ 1 M/s at grazing α⁻ = −0.5°), and proposals per accepted γ of the shadow sampler.
+//!
+//! Each batch runs `N` particles in parallel with rayon (one RNG stream per particle, as
+//! `rebound stochastic` does). Run: `cargo bench --bench stochastic`.
+use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
+use nalgebra::Vector3;
+use rayon::prelude::*;
+use rebound::case::SpeedLaw;
+use rebound::collision::{CollisionLaw, ShParams};
+use rebound::rng;
+use rebound::stochastic::rebound;
+use rebound::stochastic::shadow_effect::ShadowSampler;
+use rebound::stochastic::simulate::{draw_speed, incident_velocity};
+use rebound::wall::{delta_gamma, Deviations};
+use std::time::Instant;
+
+const N: u64 = 200_000;
+
+struct Scene {
+    name: &'static str,
+    wall: Deviations,
+    law: CollisionLaw,
+    alpha_deg: f64,
+    beta_deg: f64,
+    speed: SpeedLaw,
+}
+
+fn scenes() -> Vec<Scene> {
+    let d = |x: f64, z: f64| Deviations {
+        delta_xi: x.to_radians(),
+        delta_zeta: z.to_radians(),
+    };
+    let fixed = SpeedLaw {
+        mean_m_s: 6.0,
+        std_m_s: 0.0,
+    };
+    vec![
+        Scene {
+            name: "elastic_2.5_7.5_alpha-12.5_beta60",
+            wall: d(2.5, 7.5),
+            law: CollisionLaw::Elastic,
+            alpha_deg: -12.5,
+            beta_deg: 60.0,
+            speed: fixed,
+        },
+        Scene {
+            name: "sommerfeld-huber_sec4_3.8_7.5_alpha-15_beta60",
+            wall: d(3.8, 7.5),
+            law: CollisionLaw::SommerfeldHuber(ShParams::glass_steel()),
+            alpha_deg: -15.0,
+            beta_deg: 60.0,
+            speed: SpeedLaw {
+                mean_m_s: 5.91,
+                std_m_s: 1.16,
+            },
+        },
+        Scene {
+            name: "elastic_2.5_7.5_grazing_alpha-0.5_beta60",
+            wall: d(2.5, 7.5),
+            law: CollisionLaw::Elastic,
+            alpha_deg: -0.5,
+            beta_deg: 60.0,
+            speed: fixed,
+        },
+    ]
+}
+
+/// One batch of `n` accepted rebounds in parallel; returns the total candidate walls.
+fn batch(s: &Scene, n: u64, seed: u64) -> u64 {
+    let per_unit = incident_velocity(s.alpha_deg.to_radians(), s.beta_deg.to_radians(), 1.0);
+    (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let mut r = rng::stream(seed, &[rng::domain::STOCHASTIC, 0, i]);
+            let u = per_unit * draw_speed(&s.speed, &mut r);
+            let out = rebound(u, Vector3::zeros(), &s.wall, &s.law, 2.0, 500e-6, &mut r);
+            black_box(out.velocity);
+            out.tries as u64
+        })
+        .sum()
+}
+
+fn bench_rebounds(c: &mut Criterion) {
+    let mut g = c.benchmark_group("stochastic_rebounds");
+    g.throughput(Throughput::Elements(N));
+    g.sample_size(20);
+    for s in scenes() {
+        g.bench_function(s.name, |bch| {
+            let mut seed = 0;
+            bch.iter(|| {
+                seed += 1;
+                batch(&s, N, seed)
+            })
+        });
+    }
+    g.finish();
+}
+
+fn bench_sampler(c: &mut Criterion) {
+    let mut g = c.benchmark_group("shadow_sampler");
+    g.throughput(Throughput::Elements(1));
+    for (a, dg) in [(-0.01, 3.8), (-12.5, 3.8), (-90.0, 15.0)] {
+        let sm = ShadowSampler::new(f64::to_radians(a), f64::to_radians(dg));
+        let mut r = rng::stream(1, &[9]);
+        g.bench_function(format!("alpha{a}_dgamma{dg}"), |b| {
+            b.iter(|| black_box(sm.sample(&mut r)))
+        });
+    }
+    g.finish();
+}
+
+/// CPU seconds (user + system) of this process so far, from `/proc/self/stat` (Linux;
+/// clock ticks of 10 ms), `None` elsewhere.
+fn cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    let rest = &stat[stat.rfind(')')? + 2..];
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks: f64 = f.get(11)?.parse::<f64>().ok()? + f.get(12)?.parse::<f64>().ok()?;
+    Some(ticks / 100.0)
+}
+
+/// Plain-timer summary printed once: rebounds/s (wall clock, all threads), candidate
+/// walls per rebound, and proposals per accepted γ of the sampler at the worst points.
+fn report(_: &mut Criterion) {
+    println!(
+        "\n== stochastic model summary ({} rayon threads) ==",
+        rayon::current_num_threads()
+    );
+    for s in scenes() {
+        batch(&s, N, 99); // warm-up
+        let reps = 5;
+        let cpu0 = cpu_seconds();
+        let t = Instant::now();
+        let mut tries = 0;
+        for k in 0..reps {
+            tries += batch(&s, 1_000_000, 1000 + k);
+        }
+        let secs = t.elapsed().as_secs_f64();
+        let cpu = cpu_seconds().zip(cpu0).map(|(b, a)| b - a);
+        println!(
+            "{:48} {:6.2} M accepted rebounds/s wall clock; {} ns CPU per rebound; {:.4} candidate walls/rebound, Δγ(β⁻) = {:.2}°",
+            s.name,
+            reps as f64 * 1e6 / secs / 1e6,
+            cpu.map_or("?".to_string(), |c| format!("{:.0}", c / (reps as f64 * 1e6) * 1e9)),
+            tries as f64 / (reps as f64 * 1e6),
+            delta_gamma(&s.wall, s.beta_deg.to_radians()).to_degrees()
+        );
+    }
+    let mut worst = (0.0, 0.0, 0.0);
+    let mut r = rng::stream(2, &[3]);
+    for a in [-0.01, -0.5, -2.5, -12.5, -45.0, -89.99, -90.0] {
+        for dg in [0.01, 0.5, 2.0, 3.8, 7.5, 15.0, 20.0] {
+            let sm = ShadowSampler::new(f64::to_radians(a), f64::to_radians(dg));
+            let n = 200_000;
+            let total: u64 = (0..n).map(|_| sm.sample_counted(&mut r).1 as u64).sum();
+            let per = total as f64 / n as f64;
+            if per > worst.0 {
+                worst = (per, a, dg);
+            }
+        }
+    }
+    println!(
+        "shadow sampler: worst {:.4} proposals per accepted γ (α⁻ = {}°, Δγ = {}°) on α⁻ ∈ [−90°, −0.01°] × Δγ ∈ [0.01°, 20°]",
+        worst.0, worst.1, worst.2
+    );
+}
+
+criterion_group!(benches, report, bench_rebounds, bench_sampler);
+criterion_main!(benches);

@@ -1,0 +1,594 @@
+//! `rebound compare`: distances between the PDFs of two runs with the `summary.csv` /
+//! `pdfs.csv` schema of `crate::tally` (e.g. `deterministic` "DS" against `stochastic`
+//! "SM", as in Radenkovic & Simonin 2021, Figs. 10–11, 14–17).
+//!
+//! For every incident condition and PDF quantity present in both runs: the
+//! Kolmogorov–Smirnov distance of the binned CDFs, the L1 distance of the densities,
+//! and the mean and standard deviation of each binned PDF.
+//!
+//! A binned PDF is piecewise constant: density `p_i` on `[lo_i, hi_i)`. Two PDFs may
+//! have different bins; both are refined onto the union of their edges, where they are
+//! still piecewise constant, so L1 is exact and the (piecewise-linear) CDFs differ most
+//! at an edge, where KS is evaluated.
+
+use crate::error::{Error, Result};
+use crate::figures::{plot_grid_svg, Kind, Plot, Series};
+use crate::output::{fmt_num, write_atomic, CsvTable};
+use crate::tally::{PDFS_HEADER, SUMMARY_HEADER};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// Columns of `comparison.csv`, exactly as issue 4 specifies.
+pub const COMPARISON_HEADER: [&str; 9] = [
+    "alpha_in_deg",
+    "beta_in_deg",
+    "quantity",
+    "ks",
+    "l1",
+    "mean_a",
+    "mean_b",
+    "std_a",
+    "std_b",
+];
+
+/// Columns of `unmatched.csv`: what only one of the runs has (an empty `quantity` means
+/// the whole condition).
+pub const UNMATCHED_HEADER: [&str; 4] = ["alpha_in_deg", "beta_in_deg", "quantity", "only_in"];
+
+/// Rows of `pdfs.csv` that are not probability densities and are not compared: the
+/// single-collision probability curves (`p_single_given_alpha_out`, …).
+fn is_pdf(quantity: &str) -> bool {
+    !quantity.starts_with("p_single")
+}
+
+/// Quantities drawn as overlay figures (when present in both runs).
+const OVERLAYS: [(&str, &str); 7] = [
+    ("alpha_out", "α⁺ (deg)"),
+    ("alpha_out_xy", "α⁺_xy (deg)"),
+    ("dbeta", "β⁺ − β⁻ (deg)"),
+    ("gamma_first", "γ (deg)"),
+    ("gamma_star_first", "γ* (deg)"),
+    ("xi_first", "ξ − 90° (deg)"),
+    ("zeta_first", "ζ − 90° (deg)"),
+];
+
+/// A piecewise-constant density on contiguous or gapped bins (any unit of `x`).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BinnedPdf {
+    /// Bins `(lo, hi, density)`, sorted by `lo`, non-overlapping.
+    pub bins: Vec<(f64, f64, f64)>,
+}
+
+impl BinnedPdf {
+    /// From bins in any order; drops empty or non-finite bins.
+    pub fn new(mut bins: Vec<(f64, f64, f64)>) -> Self {
+        bins.retain(|&(l, h, p)| l.is_finite() && h.is_finite() && p.is_finite() && h > l);
+        bins.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Self { bins }
+    }
+
+    /// Total probability `Σ p_i (hi_i − lo_i)`.
+    pub fn mass(&self) -> f64 {
+        self.bins
+            .iter()
+            .map(|&(l, h, p)| p.max(0.0) * (h - l))
+            .sum()
+    }
+
+    /// Density at `x` (0 outside every bin), normalised to unit mass.
+    fn density_at(&self, x: f64, mass: f64) -> f64 {
+        if mass <= 0.0 {
+            return 0.0;
+        }
+        // Bins are few (≤ a few hundred): a binary search on `lo`.
+        let i = self.bins.partition_point(|b| b.0 <= x);
+        if i == 0 {
+            return 0.0;
+        }
+        let (l, h, p) = self.bins[i - 1];
+        if x >= l && x < h {
+            p.max(0.0) / mass
+        } else {
+            0.0
+        }
+    }
+
+    /// Mean and standard deviation of the binned law (bin centres, weights `p_i w_i`).
+    pub fn mean_std(&self) -> (f64, f64) {
+        let mass = self.mass();
+        if mass <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let mean = self
+            .bins
+            .iter()
+            .map(|&(l, h, p)| 0.5 * (l + h) * p.max(0.0) * (h - l))
+            .sum::<f64>()
+            / mass;
+        let var = self
+            .bins
+            .iter()
+            .map(|&(l, h, p)| (0.5 * (l + h) - mean).powi(2) * p.max(0.0) * (h - l))
+            .sum::<f64>()
+            / mass;
+        (mean, var.max(0.0).sqrt())
+    }
+}
+
+/// Kolmogorov–Smirnov distance `sup |F_a − F_b|` and L1 distance `∫|p_a − p_b|` of two
+/// binned PDFs, each normalised to unit mass (an empty PDF counts as all-zero).
+pub fn distances(a: &BinnedPdf, b: &BinnedPdf) -> (f64, f64) {
+    let (ma, mb) = (a.mass(), b.mass());
+    let mut edges: Vec<f64> = a
+        .bins
+        .iter()
+        .chain(b.bins.iter())
+        .flat_map(|&(l, h, _)| [l, h])
+        .collect();
+    edges.sort_by(|x, y| x.total_cmp(y));
+    edges.dedup();
+    let (mut fa, mut fb, mut ks, mut l1) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for w in edges.windows(2) {
+        let (l, h) = (w[0], w[1]);
+        let mid = 0.5 * (l + h);
+        let pa = a.density_at(mid, ma);
+        let pb = b.density_at(mid, mb);
+        l1 += (pa - pb).abs() * (h - l);
+        fa += pa * (h - l);
+        fb += pb * (h - l);
+        ks = ks.max((fa - fb).abs());
+    }
+    (ks.min(1.0), l1.min(2.0))
+}
+
+/// An incident condition as written in the CSV files: `(alpha_in_deg, beta_in_deg)`.
+pub type ConditionKey = (String, String);
+
+/// One run's outputs: per condition (the CSV strings of α⁻, β⁻), per quantity, a PDF;
+/// and the `summary.csv` rows.
+#[derive(Clone, Debug, Default)]
+pub struct RunOutputs {
+    /// Conditions in file order, with their parsed angles.
+    pub conditions: Vec<(String, String, f64, f64)>,
+    /// `(α⁻, β⁻) → quantity → PDF`, quantities in file order.
+    pub pdfs: BTreeMap<(String, String), Vec<(String, BinnedPdf)>>,
+    /// `(α⁻, β⁻) → (mean_dbeta_deg, std_dbeta_deg)` from `summary.csv`.
+    pub dbeta: BTreeMap<(String, String), (f64, f64)>,
+}
+
+fn parse_num(s: &str, path: &Path, what: &str) -> Result<f64> {
+    s.trim().parse::<f64>().map_err(|_| {
+        Error::Input(format!(
+            "{}: not a rebound output (`{what}` = \"{s}\" is not a number)",
+            path.display()
+        ))
+    })
+}
+
+/// Reads `summary.csv` and `pdfs.csv` of a run directory; `flag` (e.g. `--a`) names it
+/// in errors. A directory without both files, or with other headers, is not a rebound
+/// output: a one-line `Error::Input`.
+pub fn read_run(dir: &Path, flag: &str) -> Result<RunOutputs> {
+    if !dir.is_dir() {
+        return Err(Error::Input(format!(
+            "`{flag}` {}: not a directory",
+            dir.display()
+        )));
+    }
+    let (sp, pp) = (dir.join("summary.csv"), dir.join("pdfs.csv"));
+    for p in [&sp, &pp] {
+        if !p.is_file() {
+            return Err(Error::Input(format!(
+                "`{flag}` {}: not a rebound output (no {})",
+                dir.display(),
+                p.file_name()
+                    .map(|n| n.to_string_lossy())
+                    .unwrap_or_default()
+            )));
+        }
+    }
+    let named = |e: Error| match e {
+        Error::Input(m) => Error::Input(format!("`{flag}` {m}")),
+        other => other,
+    };
+    let summary = CsvTable::read(&sp, &SUMMARY_HEADER).map_err(named)?;
+    let pdfs = CsvTable::read(&pp, &PDFS_HEADER).map_err(named)?;
+    let mut out = RunOutputs::default();
+    let ia = SUMMARY_HEADER
+        .iter()
+        .position(|h| *h == "mean_dbeta_deg")
+        .unwrap_or(7);
+    let is = SUMMARY_HEADER
+        .iter()
+        .position(|h| *h == "std_dbeta_deg")
+        .unwrap_or(8);
+    for row in &summary.rows {
+        if row.len() != SUMMARY_HEADER.len() {
+            return Err(Error::Input(format!(
+                "{}: not a rebound output (ragged row)",
+                sp.display()
+            )));
+        }
+        let (a, b) = (row[0].clone(), row[1].clone());
+        let (af, bf) = (
+            parse_num(&a, &sp, "alpha_in_deg")?,
+            parse_num(&b, &sp, "beta_in_deg")?,
+        );
+        if !out.conditions.iter().any(|c| c.0 == a && c.1 == b) {
+            out.conditions.push((a.clone(), b.clone(), af, bf));
+        }
+        if let (Ok(m), Ok(s)) = (row[ia].parse::<f64>(), row[is].parse::<f64>()) {
+            out.dbeta.insert((a, b), (m, s));
+        }
+    }
+    type RawBins = Vec<(String, Vec<(f64, f64, f64)>)>;
+    let mut raw: BTreeMap<ConditionKey, RawBins> = BTreeMap::new();
+    for row in &pdfs.rows {
+        if row.len() != PDFS_HEADER.len() {
+            return Err(Error::Input(format!(
+                "{}: not a rebound output (ragged row)",
+                pp.display()
+            )));
+        }
+        let key = (row[0].clone(), row[1].clone());
+        let q = row[2].clone();
+        let lo = parse_num(&row[3], &pp, "bin_lo")?;
+        let hi = parse_num(&row[4], &pp, "bin_hi")?;
+        let v = parse_num(&row[5], &pp, "value")?;
+        if !out.conditions.iter().any(|c| c.0 == key.0 && c.1 == key.1) {
+            let (af, bf) = (
+                parse_num(&key.0, &pp, "alpha_in_deg")?,
+                parse_num(&key.1, &pp, "beta_in_deg")?,
+            );
+            out.conditions.push((key.0.clone(), key.1.clone(), af, bf));
+        }
+        let list = raw.entry(key).or_default();
+        match list.iter_mut().find(|e| e.0 == q) {
+            Some(e) => e.1.push((lo, hi, v)),
+            None => list.push((q, vec![(lo, hi, v)])),
+        }
+    }
+    for (k, list) in raw {
+        out.pdfs.insert(
+            k,
+            list.into_iter()
+                .filter(|(q, _)| is_pdf(q))
+                .map(|(q, b)| (q, BinnedPdf::new(b)))
+                .collect(),
+        );
+    }
+    Ok(out)
+}
+
+/// One row of `comparison.csv`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ComparisonRow {
+    pub alpha_in: String,
+    pub beta_in: String,
+    pub quantity: String,
+    pub ks: f64,
+    pub l1: f64,
+    pub mean_a: f64,
+    pub mean_b: f64,
+    pub std_a: f64,
+    pub std_b: f64,
+}
+
+/// What only one run has: `(α⁻, β⁻, quantity or "", "a" | "b")`.
+pub type Unmatched = (String, String, String, &'static str);
+
+/// Compares two runs: rows for every condition and quantity in both (in the order of
+/// run A), and the list of what only one of them has.
+pub fn compare_runs(a: &RunOutputs, b: &RunOutputs) -> (Vec<ComparisonRow>, Vec<Unmatched>) {
+    let mut rows = Vec::new();
+    let mut unmatched = Vec::new();
+    let empty = Vec::new();
+    for (ka, kb, _, _) in &a.conditions {
+        let key = (ka.clone(), kb.clone());
+        if !b.conditions.iter().any(|c| c.0 == *ka && c.1 == *kb) {
+            unmatched.push((ka.clone(), kb.clone(), String::new(), "a"));
+            continue;
+        }
+        let qa = a.pdfs.get(&key).unwrap_or(&empty);
+        let qb = b.pdfs.get(&key).unwrap_or(&empty);
+        for (q, pa) in qa {
+            match qb.iter().find(|e| e.0 == *q) {
+                Some((_, pb)) => {
+                    let (ks, l1) = distances(pa, pb);
+                    let (mean_a, std_a) = pa.mean_std();
+                    let (mean_b, std_b) = pb.mean_std();
+                    rows.push(ComparisonRow {
+                        alpha_in: ka.clone(),
+                        beta_in: kb.clone(),
+                        quantity: q.clone(),
+                        ks,
+                        l1,
+                        mean_a,
+                        mean_b,
+                        std_a,
+                        std_b,
+                    });
+                }
+                None => unmatched.push((ka.clone(), kb.clone(), q.clone(), "a")),
+            }
+        }
+        for (q, _) in qb {
+            if !qa.iter().any(|e| e.0 == *q) {
+                unmatched.push((ka.clone(), kb.clone(), q.clone(), "b"));
+            }
+        }
+    }
+    for (ka, kb, _, _) in &b.conditions {
+        if !a.conditions.iter().any(|c| c.0 == *ka && c.1 == *kb) {
+            unmatched.push((ka.clone(), kb.clone(), String::new(), "b"));
+        }
+    }
+    (rows, unmatched)
+}
+
+/// `comparison.csv` of the rows.
+pub fn comparison_table(rows: &[ComparisonRow]) -> CsvTable {
+    let mut t = CsvTable::new(&COMPARISON_HEADER);
+    for r in rows {
+        t.push(vec![
+            r.alpha_in.clone(),
+            r.beta_in.clone(),
+            r.quantity.clone(),
+            fmt_num(r.ks),
+            fmt_num(r.l1),
+            fmt_num(r.mean_a),
+            fmt_num(r.mean_b),
+            fmt_num(r.std_a),
+            fmt_num(r.std_b),
+        ]);
+    }
+    t
+}
+
+/// `unmatched.csv` of what only one run has.
+pub fn unmatched_table(list: &[Unmatched]) -> CsvTable {
+    let mut t = CsvTable::new(&UNMATCHED_HEADER);
+    for (a, b, q, w) in list {
+        t.push(vec![a.clone(), b.clone(), q.clone(), w.to_string()]);
+    }
+    t
+}
+
+fn step_points(p: &BinnedPdf) -> Vec<(f64, f64)> {
+    p.bins.iter().map(|&(l, h, v)| (0.5 * (l + h), v)).collect()
+}
+
+/// Overlay figures (labels `label_a`, `label_b`, e.g. "DS" and "SM"): one file per
+/// quantity with a panel per matched condition, and the mean/std of β⁺ − β⁻ against β⁻
+/// and |α⁻| (Figs. 16–17) when the runs sweep them. Returns the file names.
+pub fn write_overlays(
+    dir: &Path,
+    a: &RunOutputs,
+    b: &RunOutputs,
+    label_a: &str,
+    label_b: &str,
+) -> Result<Vec<String>> {
+    let mut names = Vec::new();
+    let matched: Vec<&(String, String, f64, f64)> = a
+        .conditions
+        .iter()
+        .filter(|c| b.conditions.iter().any(|d| d.0 == c.0 && d.1 == c.1))
+        .collect();
+    for (q, xl) in OVERLAYS {
+        let mut plots = Vec::new();
+        for c in &matched {
+            let key = (c.0.clone(), c.1.clone());
+            let find = |r: &RunOutputs| {
+                r.pdfs
+                    .get(&key)
+                    .and_then(|l| l.iter().find(|e| e.0 == q).map(|e| e.1.clone()))
+            };
+            if let (Some(pa), Some(pb)) = (find(a), find(b)) {
+                plots.push(Plot {
+                    title: format!("α⁻ = {}°, β⁻ = {}°", c.0, c.1),
+                    x_label: xl.into(),
+                    y_label: "PDF (1/deg)".into(),
+                    series: vec![
+                        Series::new(label_a, step_points(&pa), Kind::Step),
+                        Series::new(label_b, step_points(&pb), Kind::Dashed),
+                    ],
+                    ..Default::default()
+                });
+            }
+        }
+        if !plots.is_empty() {
+            let name = format!("overlay_{q}.svg");
+            let cols = plots.len().clamp(1, 3);
+            plot_grid_svg(&dir.join(&name), &plots, cols)?;
+            names.push(name);
+        }
+    }
+    // Figs. 16–17: E(β⁺ − β⁻) and Δβ⁺ of both runs.
+    for (along_beta, name) in [
+        (true, "overlay_fig16_dbeta_vs_beta_in.svg"),
+        (false, "overlay_fig17_dbeta_vs_alpha_in.svg"),
+    ] {
+        let mut keys: Vec<f64> = matched
+            .iter()
+            .map(|c| if along_beta { c.2 } else { c.3 })
+            .collect();
+        keys.sort_by(|x, y| x.total_cmp(y));
+        keys.dedup();
+        let mut mean = Vec::new();
+        let mut std = Vec::new();
+        for k in keys {
+            for (r, label, kind) in [(a, label_a, Kind::Line), (b, label_b, Kind::Dashed)] {
+                let mut pts: Vec<(f64, f64, f64)> = matched
+                    .iter()
+                    .filter(|c| (if along_beta { c.2 } else { c.3 }) == k)
+                    .filter_map(|c| {
+                        r.dbeta
+                            .get(&(c.0.clone(), c.1.clone()))
+                            .map(|&(m, s)| (if along_beta { c.3 } else { -c.2 }, m, s))
+                    })
+                    .collect();
+                if pts.len() < 2 {
+                    continue;
+                }
+                pts.sort_by(|x, y| x.0.total_cmp(&y.0));
+                let lab = if along_beta {
+                    format!("{label}, α⁻ = {k}°")
+                } else {
+                    format!("{label}, β⁻ = {k}°")
+                };
+                mean.push(Series::new(
+                    lab.clone(),
+                    pts.iter().map(|p| (p.0, p.1)).collect(),
+                    kind,
+                ));
+                std.push(Series::new(
+                    lab,
+                    pts.iter().map(|p| (p.0, p.2)).collect(),
+                    kind,
+                ));
+            }
+        }
+        if mean.is_empty() {
+            continue;
+        }
+        let xl = if along_beta {
+            "β⁻ (deg)"
+        } else {
+            "|α⁻| (deg)"
+        };
+        plot_grid_svg(
+            &dir.join(name),
+            &[
+                Plot {
+                    title: "mean transverse deviation".into(),
+                    x_label: xl.into(),
+                    y_label: "E(β⁺ − β⁻) (deg)".into(),
+                    series: mean,
+                    ..Default::default()
+                },
+                Plot {
+                    title: "std of the transverse deviation".into(),
+                    x_label: xl.into(),
+                    y_label: "Δβ⁺ (deg)".into(),
+                    series: std,
+                    ..Default::default()
+                },
+            ],
+            2,
+        )?;
+        names.push(name.to_string());
+    }
+    Ok(names)
+}
+
+/// Writes `comparison.csv`, `unmatched.csv`, the overlays and a small `run.toml` into
+/// `out` (created). Both inputs are read and checked before anything is written.
+pub fn run_compare(
+    a_dir: &Path,
+    b_dir: &Path,
+    out: &Path,
+    label_a: &str,
+    label_b: &str,
+) -> Result<(usize, usize)> {
+    let a = read_run(a_dir, "--a")?;
+    let b = read_run(b_dir, "--b")?;
+    let (rows, unmatched) = compare_runs(&a, &b);
+    // Whole conditions one line each; quantities (model-specific curves such as
+    // `gamma_model` or `dbeta_first`) one line per name.
+    let mut only_q: BTreeMap<(String, &str), usize> = BTreeMap::new();
+    for (al, be, q, w) in &unmatched {
+        let run = if *w == "a" { a_dir } else { b_dir };
+        if q.is_empty() {
+            eprintln!(
+                "warning: condition α⁻ = {al}°, β⁻ = {be}° is only in {} (listed in unmatched.csv)",
+                run.display()
+            );
+        } else {
+            *only_q.entry((q.clone(), *w)).or_default() += 1;
+        }
+    }
+    for ((q, w), n) in &only_q {
+        let run = if *w == "a" { a_dir } else { b_dir };
+        eprintln!(
+            "note: quantity `{q}` is only in {} ({n} condition(s), listed in unmatched.csv)",
+            run.display()
+        );
+    }
+    if rows.is_empty() {
+        return Err(Error::Input(format!(
+            "`--a` {} and `--b` {} have no incident condition and quantity in common",
+            a_dir.display(),
+            b_dir.display()
+        )));
+    }
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    comparison_table(&rows).write(&out.join("comparison.csv"))?;
+    unmatched_table(&unmatched).write(&out.join("unmatched.csv"))?;
+    let figs = write_overlays(out, &a, &b, label_a, label_b)?;
+    let mut run = toml::Table::new();
+    run.insert("command".into(), "compare".into());
+    run.insert("version".into(), env!("CARGO_PKG_VERSION").into());
+    run.insert("a".into(), a_dir.display().to_string().into());
+    run.insert("b".into(), b_dir.display().to_string().into());
+    run.insert("label_a".into(), label_a.into());
+    run.insert("label_b".into(), label_b.into());
+    run.insert("rows".into(), toml::Value::Integer(rows.len() as i64));
+    run.insert(
+        "unmatched".into(),
+        toml::Value::Integer(unmatched.len() as i64),
+    );
+    let mut root = toml::Table::new();
+    root.insert("run".into(), toml::Value::Table(run));
+    root.insert(
+        "figures".into(),
+        toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
+    );
+    let text = toml::to_string_pretty(&root).map_err(|e| Error::Io(format!("run.toml: {e}")))?;
+    write_atomic(&out.join("run.toml"), text.as_bytes())?;
+    Ok((rows.len(), unmatched.len()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn uniform(lo: f64, hi: f64, n: usize) -> BinnedPdf {
+        let w = (hi - lo) / n as f64;
+        BinnedPdf::new(
+            (0..n)
+                .map(|i| (lo + i as f64 * w, lo + (i + 1) as f64 * w, 1.0 / (hi - lo)))
+                .collect(),
+        )
+    }
+
+    #[test]
+    fn identical_pdfs_have_zero_distance() {
+        let a = uniform(0.0, 10.0, 20);
+        assert_eq!(distances(&a, &a), (0.0, 0.0));
+        // Same law on different bins.
+        let b = uniform(0.0, 10.0, 7);
+        let (ks, l1) = distances(&a, &b);
+        assert!(ks < 1e-12 && l1 < 1e-12);
+    }
+
+    #[test]
+    fn disjoint_pdfs_have_maximal_distance() {
+        let (ks, l1) = distances(&uniform(0.0, 1.0, 4), &uniform(2.0, 3.0, 4));
+        assert!((ks - 1.0).abs() < 1e-12 && (l1 - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn shifted_uniform_ks_and_l1() {
+        // U(0,1) vs U(0.5,1.5): KS = 0.5, L1 = 1.
+        let (ks, l1) = distances(&uniform(0.0, 1.0, 10), &uniform(0.5, 1.5, 10));
+        assert!((ks - 0.5).abs() < 1e-12 && (l1 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn mean_and_std_of_a_uniform_histogram() {
+        let (m, s) = uniform(0.0, 10.0, 10).mean_std();
+        assert!((m - 5.0).abs() < 1e-12);
+        // Bin centres 0.5..9.5: variance (n² − 1)/12 = 99/12.
+        assert!((s - (99.0f64 / 12.0).sqrt()).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,15 @@
+//! The anisotropic stochastic rebound model of Radenkovic & Simonin 2021
+//! (Sec. 3.3–3.6, Fig. 13; procedure written out in the physics notes §3).
+//!
+//! * [`shadow_effect`]: the exact sampler and density of `P_eff(γ | α⁻)` (Eqs. 31–33).
+//! * [`rebound_model`]: [`rebound`], one rebound — the entry point a CFD code calls
+//!   once per wall collision.
+//! * [`simulate`]: many rebounds of one incident condition, parallel and reproducible.
+//! * [`plots`]: the figures of `rebound stochastic`.
+pub mod plots;
+pub mod rebound_model;
+pub mod shadow_effect;
+pub mod simulate;
+
+pub use rebound_model::{rebound, single_collision_probability, Rebound, MAX_TRIES};
+pub use shadow_effect::ShadowSampler;

@@ -1,0 +1,279 @@
+//! One rebound from the statistical anisotropic rough wall: the stochastic procedure of
+//! Radenkovic & Simonin 2021, Sec. 3.6 and Fig. 13 (written out in the physics notes §3).
+//!
+//! This is the library entry point a CFD (Euler–Lagrange) code calls once per wall
+//! collision: it needs only the incident state, the wall's two deviations, the
+//! collision law and a random generator — no surface, no tables.
+
+use super::shadow_effect::ShadowSampler;
+use crate::angles::{incident_angles, normal_from_gamma};
+use crate::collision::CollisionLaw;
+use crate::wall::{conditional_gamma_star, rotated_moments, Deviations};
+use nalgebra::Vector3;
+use rand::Rng;
+use rand_distr::StandardNormal;
+
+/// Upper bound on the candidate walls drawn for one rebound (a guard: the expected
+/// number is ~1–3 for every admissible input).
+pub const MAX_TRIES: u32 = 100_000;
+
+/// The outcome of [`rebound`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rebound {
+    /// Rebound velocity `U⁺` (m/s).
+    pub velocity: Vector3<f64>,
+    /// Rebound angular velocity `ω⁺` (rad/s).
+    pub spin: Vector3<f64>,
+    /// Inclination `γ` of the accepted virtual wall in the incident plane (rad, Eq. 20).
+    pub gamma: f64,
+    /// Inclination `γ*` of the accepted virtual wall normal to the incident plane (rad, Eq. 21).
+    pub gamma_star: f64,
+    /// Unit normal of the accepted virtual wall (Eq. 23, exact unit vector).
+    pub normal: Vector3<f64>,
+    /// Candidate walls drawn (≥ 1): steps 2–6 of the procedure were run this many times.
+    /// `0` means the particle was not moving towards the wall (`u_in.y ≥ 0` or a
+    /// non-finite input) and was returned unchanged; [`MAX_TRIES`] means the guard was hit
+    /// and the rebound is the one off the mean (smooth) wall.
+    pub tries: u32,
+    /// Candidate rebounds computed (steps 5–6 reached, i.e. `U⁻·n < 0`): `1/candidates`
+    /// estimates the single-collision probability (a run's `p_single` is
+    /// `Σ accepted / Σ candidates`).
+    pub candidates: u32,
+}
+
+impl Rebound {
+    /// Whether every candidate was rejected until the [`MAX_TRIES`] guard.
+    pub fn capped(&self) -> bool {
+        self.tries >= MAX_TRIES
+    }
+}
+
+/// Radenkovic & Simonin 2021, Eq. (34): `P(n = 1 | α⁺) = tanh(ψ α⁺ / Δγ(β⁺))` for
+/// `α⁺ > 0`, with `Δγ(β⁺)` of Eq. (35); `Δγ(β⁺) = 0` (smooth wall in that plane) gives 1.
+///
+/// `cos²β⁺ = u⁺²/(u⁺² + w⁺²)` is taken from the velocity directly (no trigonometry).
+#[inline]
+pub fn single_collision_probability(
+    u_out: &Vector3<f64>,
+    alpha_out: f64,
+    wall: &Deviations,
+    psi: f64,
+) -> f64 {
+    if alpha_out <= 0.0 {
+        return 0.0;
+    }
+    let h2 = u_out.x * u_out.x + u_out.z * u_out.z;
+    let var = if h2 > 0.0 {
+        (u_out.x * u_out.x * wall.delta_xi * wall.delta_xi
+            + u_out.z * u_out.z * wall.delta_zeta * wall.delta_zeta)
+            / h2
+    } else {
+        // β⁺ undefined (vertical rebound): β⁺ = 0 by the convention of notes §1.
+        wall.delta_xi * wall.delta_xi
+    };
+    if var <= 0.0 {
+        1.0
+    } else {
+        (psi * alpha_out / var.sqrt()).tanh()
+    }
+}
+
+/// Accepts a candidate rebound with the probability [`single_collision_probability`]
+/// (Eqs. 34–35), from the velocity alone and mostly without `asin`/`tanh`:
+/// with `y = v⁺/|U⁺|` and `t₀ = ψ y / Δγ(β⁺) ≤ ψ α⁺/Δγ(β⁺)` (`asin y ≥ y`),
+/// `tanh(t₀) ≥ (t₀ + t₀²)/(1 + t₀ + t₀²)` (from `e^{2t} ≥ 1 + 2t + 2t²`) is a squeeze, and
+/// `tanh(t) = 1` exactly in `f64` for `t ≥ 20` (no uniform is drawn then).
+#[inline]
+fn accept_single_collision<R: Rng + ?Sized>(
+    u_out: &Vector3<f64>,
+    wall: &Deviations,
+    psi: f64,
+    rng: &mut R,
+) -> bool {
+    let s = u_out.norm();
+    if s.is_nan() || s <= 0.0 || u_out.y <= 0.0 {
+        return false;
+    }
+    let y = (u_out.y / s).min(1.0);
+    let h2 = u_out.x * u_out.x + u_out.z * u_out.z;
+    let var = if h2 > 0.0 {
+        (u_out.x * u_out.x * wall.delta_xi * wall.delta_xi
+            + u_out.z * u_out.z * wall.delta_zeta * wall.delta_zeta)
+            / h2
+    } else {
+        wall.delta_xi * wall.delta_xi
+    };
+    if var <= 0.0 {
+        return true;
+    }
+    let sd = var.sqrt();
+    let t0 = psi * y / sd;
+    if t0 >= 20.0 {
+        return true;
+    }
+    let u: f64 = rng.gen();
+    let q = t0 + t0 * t0;
+    u * (1.0 + q) < q || u < (psi * y.asin() / sd).tanh()
+}
+
+/// One rebound of a particle from the statistical anisotropic rough wall
+/// (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; physics notes §3 steps 1–7).
+///
+/// 1. `α⁻, β⁻` of `u_in`, then `Δγ, Δγ*, Cov(γ, γ*)` (Eq. 26).
+/// 2. `γ` from the shadow-effect law `P_eff(γ | α⁻)` (Eqs. 31–33), sampled exactly
+///    ([`ShadowSampler`]).
+/// 3. `γ*` from the conditional normal law given `γ` (Eqs. 29–30).
+/// 4. The unit normal `n` (Eq. 23, exact unit vector); if `U⁻·n ≥ 0`, back to 2.
+/// 5. The collision law in the frame of `n` ([`CollisionLaw::collide`], Eqs. 36–42).
+/// 6. `α⁺`; reject if `α⁺ ≤ 0` or with probability `1 − tanh(ψ α⁺/Δγ(β⁺))`
+///    (Eqs. 34–35) and go back to 2 with the same incident state.
+/// 7. Return `U⁺, ω⁺`.
+///
+/// `psi` is ψ of Eq. (34) (2 in the paper); `diameter_m` the particle diameter (m).
+/// A smooth wall (`Δξ = Δζ = 0`) is one collision with the mean wall, exactly. A
+/// non-positive or non-finite `psi` cannot accept any candidate: the smooth-wall
+/// collision is returned with `tries = MAX_TRIES` (callers validate `psi`).
+///
+/// Precondition: the particle moves towards the wall, `u_in.y < 0`; otherwise the
+/// input is returned unchanged with `tries = 0`.
+///
+/// ```
+/// use nalgebra::Vector3;
+/// use rand::SeedableRng;
+/// use rebound::collision::{CollisionLaw, ShParams};
+/// use rebound::stochastic::rebound;
+/// use rebound::wall::Deviations;
+///
+/// // Glass bead (D = 500 µm) hitting a steel wall at α⁻ = −15°, β⁻ = 60°.
+/// let wall = Deviations { delta_xi: 3.8_f64.to_radians(), delta_zeta: 7.5_f64.to_radians() };
+/// let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
+/// let u_in = rebound::angles::velocity_from_angles(6.0, (-15f64).to_radians(), 60f64.to_radians());
+/// let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(42);
+/// let out = rebound(u_in, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
+/// assert!(out.velocity.y > 0.0);                      // leaves the wall
+/// assert!(out.velocity.norm() <= u_in.norm() + 1e-12); // no energy gain
+/// assert!(out.tries >= 1);
+/// ```
+pub fn rebound<R: Rng + ?Sized>(
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    rng: &mut R,
+) -> Rebound {
+    let j = Vector3::new(0.0, 1.0, 0.0);
+    let finite = u_in.iter().chain(omega_in.iter()).all(|c| c.is_finite());
+    if !finite || u_in.y >= 0.0 {
+        return Rebound {
+            velocity: u_in,
+            spin: omega_in,
+            gamma: 0.0,
+            gamma_star: 0.0,
+            normal: j,
+            tries: 0,
+            candidates: 0,
+        };
+    }
+    let smooth = Rebound {
+        velocity: Vector3::zeros(),
+        spin: Vector3::zeros(),
+        gamma: 0.0,
+        gamma_star: 0.0,
+        normal: j,
+        tries: 1,
+        candidates: 1,
+    };
+    let smooth_wall = wall.delta_xi == 0.0 && wall.delta_zeta == 0.0;
+    let bad_psi = !(psi > 0.0 && psi.is_finite());
+    if smooth_wall || bad_psi {
+        let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
+        return Rebound {
+            velocity: u,
+            spin: w,
+            tries: if bad_psi { MAX_TRIES } else { 1 },
+            candidates: if bad_psi { MAX_TRIES } else { 1 },
+            ..smooth
+        };
+    }
+    // Step 1.
+    let (alpha, beta) = incident_angles(&u_in);
+    let moments = rotated_moments(wall, beta);
+    let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
+    let mut candidates = 0u32;
+    for tries in 1..=MAX_TRIES {
+        // Steps 2–3.
+        let gamma = sampler.sample(rng);
+        let (mean, var) = conditional_gamma_star(&moments, gamma);
+        let gamma_star = if var > 0.0 {
+            let z: f64 = rng.sample(StandardNormal);
+            mean + var.sqrt() * z
+        } else {
+            mean
+        };
+        // Step 4.
+        let n = normal_from_gamma(gamma, gamma_star, beta);
+        if u_in.dot(&n) >= 0.0 {
+            continue;
+        }
+        // Step 5.
+        candidates += 1;
+        let (u, w) = law.collide(u_in, omega_in, n, diameter_m);
+        // Step 6.
+        if !accept_single_collision(&u, wall, psi, rng) {
+            continue;
+        }
+        // Step 7.
+        return Rebound {
+            velocity: u,
+            spin: w,
+            gamma,
+            gamma_star,
+            normal: n,
+            tries,
+            candidates,
+        };
+    }
+    let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
+    Rebound {
+        velocity: u,
+        spin: w,
+        tries: MAX_TRIES,
+        candidates,
+        ..smooth
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+
+    #[test]
+    fn squeezed_acceptance_has_the_probability_of_eq34() {
+        let wall = Deviations {
+            delta_xi: 0.04,
+            delta_zeta: 0.13,
+        };
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(3);
+        for (a_deg, b) in [
+            (0.5, 0.3),
+            (2.0, 1.0),
+            (5.0, -2.0),
+            (20.0, 0.0),
+            (0.01, 1.5),
+        ] {
+            let u = crate::angles::velocity_from_angles(2.0, f64::to_radians(a_deg), b);
+            let (ao, _) = crate::angles::incident_angles(&u);
+            let p = single_collision_probability(&u, ao, &wall, 2.0);
+            let n = 200_000;
+            let k = (0..n)
+                .filter(|_| accept_single_collision(&u, &wall, 2.0, &mut rng))
+                .count();
+            let f = k as f64 / n as f64;
+            let se = (p * (1.0 - p) / n as f64).sqrt().max(1e-9);
+            assert!((f - p).abs() < 5.0 * se + 1e-12, "α⁺={a_deg}: {f} vs {p}");
+        }
+    }
+}

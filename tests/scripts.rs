@@ -1,0 +1,102 @@
+//! The reproduction scripts in reduced mode (issue 6): every expected file appears with its
+//! header, so a script cannot rot silently. Runs `scripts/reproduce-all.sh` with
+//! `REBOUND_QUICK=1` into a temporary directory, using the binary under test.
+
+use std::path::Path;
+use std::process::Command;
+
+fn header(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    text.lines().next().unwrap_or("").to_string()
+}
+
+#[test]
+fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let out = tempfile::tempdir().unwrap();
+    let status = Command::new("bash")
+        .arg(root.join("scripts/reproduce-all.sh"))
+        .env("REBOUND_QUICK", "1")
+        .env("REBOUND_BIN", env!("CARGO_BIN_EXE_rebound"))
+        .env("REBOUND_RESULTS", out.path())
+        .status()
+        .unwrap();
+    assert!(status.success(), "reproduce-all.sh failed");
+    let o = out.path();
+    let summary = rebound::tally::SUMMARY_HEADER.join(",");
+    let pdfs = rebound::tally::PDFS_HEADER.join(",");
+    let comparison = "alpha_in_deg,beta_in_deg,quantity,ks,l1,mean_a,mean_b,std_a,std_b";
+    let mut expect: Vec<(String, String)> = vec![
+        ("radenkovic2021/table1/surface_summary.csv".into(), "nodes,length_um,spacing_um,rms_height_um,target_rms_height_um,rms_slope_x,target_rms_slope_x,rms_slope_z,target_rms_slope_z,delta_xi_deg,target_delta_xi_deg,delta_zeta_deg,target_delta_zeta_deg,max_height_um".into()),
+        ("radenkovic2021/table1/normal_angles.csv".into(), "beta_star_deg,delta_xi_star_deg,delta_zeta_star_deg,rho_xi_zeta,rho_xi_eta,rho_eta_zeta,model_delta_xi_star_deg,model_delta_zeta_star_deg,model_rho_xi_zeta".into()),
+        ("radenkovic2021/fig4/fig4.csv".into(), "axis,h_over_cl,rms_slope,delta_rad,eq14_rad".into()),
+        ("speed_vs_error.csv".into(), "model,particles,spacing_per_corr_length,wall_time_s,us_per_particle,max_ks_alpha_out,max_ks_dbeta,max_abs_mean_alpha_out_err_deg".into()),
+    ];
+    for scene in [
+        "sec3-aniso",
+        "sec3-aniso-rev",
+        "sec4-glass-steel",
+        "sec4-glass-steel-2d",
+        "sec4-glass-steel-iso",
+        "sec4-glass-steel-fig16",
+        "sec4-glass-steel-fig17",
+    ] {
+        for model in ["deterministic", "stochastic"] {
+            expect.push((
+                format!("radenkovic2021/{scene}/{model}/summary.csv"),
+                summary.clone(),
+            ));
+            expect.push((
+                format!("radenkovic2021/{scene}/{model}/pdfs.csv"),
+                pdfs.clone(),
+            ));
+        }
+        expect.push((
+            format!("radenkovic2021/{scene}/compare/comparison.csv"),
+            comparison.into(),
+        ));
+    }
+    let force = "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s";
+    for fig in ["fig4", "fig6", "fig8", "fig9", "fig10", "fig11", "fig12"] {
+        expect.push((format!("hu2021/{fig}/force_sweep.csv"), force.into()));
+    }
+    for (file, head) in &expect {
+        assert_eq!(&header(&o.join(file)), head, "{file}");
+    }
+    // Every run leaves its manifest and at least one figure.
+    for dir in [
+        "radenkovic2021/table1",
+        "radenkovic2021/sec3-aniso/deterministic",
+        "radenkovic2021/sec3-aniso/stochastic",
+        "hu2021/fig6",
+    ] {
+        assert!(o.join(dir).join("run.toml").is_file(), "{dir}/run.toml");
+        let svgs = std::fs::read_dir(o.join(dir))
+            .unwrap()
+            .filter(|e| {
+                e.as_ref()
+                    .unwrap()
+                    .path()
+                    .extension()
+                    .is_some_and(|x| x == "svg")
+            })
+            .count();
+        assert!(svgs > 0, "{dir} has no figure");
+    }
+    let report = std::fs::read_to_string(o.join("REPORT.md")).unwrap();
+    for section in [
+        "Table 1",
+        "Fig. 4",
+        "Sec. 3",
+        "stochastic model (SM)",
+        "Sec. 4.2",
+        "Hu et al.",
+        "Speed against error",
+    ] {
+        assert!(report.contains(section), "REPORT.md lacks {section}");
+    }
+    assert!(
+        !report.contains("*Not run"),
+        "a stage did not run:\n{report}"
+    );
+}

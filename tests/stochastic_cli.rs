@@ -1,0 +1,267 @@
+//! `rebound stochastic` through the binary: outputs, reproducibility across thread
+//! counts, Eq. (15) conversion, and the bad-input rules of issue 4.
+use std::path::Path;
+use std::process::Command;
+
+fn rebound(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_rebound"))
+        .args(args)
+        .output()
+        .expect("run rebound")
+}
+
+fn write_case(dir: &Path, name: &str, body: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, body).unwrap();
+    p.display().to_string()
+}
+
+const BASE: &str = r#"name = "t"
+seed = 5
+[wall]
+delta_xi_deg = 3.8
+delta_zeta_deg = 7.5
+[incidence]
+alpha_deg = [-0.01, -15.0, -90.0]
+beta_deg = [0.0, 60.0]
+speed_mean_m_s = 5.91
+speed_std_m_s = 1.16
+[particles]
+count = 3000
+diameter_um = 500.0
+[collision]
+model = "sommerfeld-huber"
+preset = "glass-steel"
+[stochastic]
+psi = 2.0
+"#;
+
+fn read(p: &Path) -> String {
+    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+#[test]
+fn outputs_are_byte_identical_for_one_and_two_threads() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = write_case(tmp.path(), "c.toml", BASE);
+    let mut files = Vec::new();
+    for t in ["1", "2"] {
+        let out = tmp.path().join(format!("t{t}"));
+        let o = rebound(&[
+            "stochastic",
+            "--case",
+            &case,
+            "--threads",
+            t,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        files.push((read(&out.join("summary.csv")), read(&out.join("pdfs.csv"))));
+    }
+    assert_eq!(files[0], files[1]);
+}
+
+#[test]
+fn default_run_has_the_shared_schema_model_curve_and_figures() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("o");
+    let o = rebound(&[
+        "stochastic",
+        "--particles",
+        "4000",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary = read(&out.join("summary.csv"));
+    let mut lines = summary.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header, rebound::tally::SUMMARY_HEADER.to_vec());
+    let rows: Vec<Vec<String>> = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    // Built-in default: Sec. 4 scene, α⁻ ∈ {−5, −15, −25}, β⁻ ∈ {0, 60}.
+    assert_eq!(rows.len(), 6);
+    let col = |n: &str| header.iter().position(|h| *h == n).unwrap();
+    for r in &rows {
+        for empty in [
+            "mean_dbeta_first_deg",
+            "std_dbeta_first_deg",
+            "mean_collisions",
+            "max_collisions",
+            "lost",
+        ] {
+            assert_eq!(r[col(empty)], "", "{empty}");
+        }
+        let p: f64 = r[col("p_single")].parse().unwrap();
+        assert!(p > 0.5 && p <= 1.0, "{p}");
+        assert_eq!(r[col("delta_xi_deg")], "3.8");
+        assert_eq!(r[col("delta_zeta_deg")], "7.5");
+        let speed: f64 = r[col("mean_speed_ratio")].parse().unwrap();
+        assert!(speed > 0.0 && speed < 1.0, "{speed}");
+        assert!(!r.iter().any(|c| c.contains("NaN") || c.contains("inf")));
+    }
+    let pdfs = read(&out.join("pdfs.csv"));
+    assert!(pdfs.starts_with("alpha_in_deg,beta_in_deg,quantity,bin_lo,bin_hi,value\n"));
+    // gamma_model integrates to ~1 (per degree, on 1° bins) for each condition.
+    for (a, b) in [("-5", "0"), ("-25", "60")] {
+        let total: f64 = pdfs
+            .lines()
+            .filter(|l| l.starts_with(&format!("{a},{b},gamma_model,")))
+            .map(|l| {
+                let f: Vec<f64> = l.split(',').skip(3).map(|x| x.parse().unwrap()).collect();
+                f[2] * (f[1] - f[0])
+            })
+            .sum();
+        assert!((total - 1.0).abs() < 0.02, "{a},{b}: {total}");
+    }
+    for f in [
+        "fig10_gamma.svg",
+        "fig11_gamma_star_given_gamma.svg",
+        "fig14_15_rebound_angles.svg",
+        "run.toml",
+    ] {
+        assert!(out.join(f).is_file(), "{f}");
+    }
+    assert!(read(&out.join("run.toml")).contains("psi = 2.0"));
+}
+
+#[test]
+fn surface_parameters_are_converted_with_eq15_without_building_a_surface() {
+    let tmp = tempfile::tempdir().unwrap();
+    // Table 1's surface: h = 0.37 µm, c_Lx = 12 µm, c_Lz = 4 µm → Δξ = 2.498°, Δζ = 7.495°.
+    let case = write_case(
+        tmp.path(),
+        "s.toml",
+        r#"name = "s"
+[surface]
+length_um = 5000.0
+nodes = 5001
+rms_height_um = 0.37
+corr_length_x_um = 12.0
+corr_length_z_um = 4.0
+[incidence]
+alpha_deg = [-12.5]
+[particles]
+count = 1000
+"#,
+    );
+    let out = tmp.path().join("o");
+    let t = std::time::Instant::now();
+    let o = rebound(&[
+        "stochastic",
+        "--case",
+        &case,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // A 5001² surface would take seconds; the model needs none.
+    assert!(t.elapsed().as_secs_f64() < 5.0);
+    let s = read(&out.join("summary.csv"));
+    let row: Vec<&str> = s.lines().nth(1).unwrap().split(',').collect();
+    assert!(
+        (row[2].parse::<f64>().unwrap() - 2.498).abs() < 0.001,
+        "{}",
+        row[2]
+    );
+    assert!(
+        (row[3].parse::<f64>().unwrap() - 7.495).abs() < 0.001,
+        "{}",
+        row[3]
+    );
+    assert!(read(&out.join("run.toml")).contains("wall_from_surface"));
+}
+
+/// Runs a bad case: exit status 2, one stderr line naming `key`, no output directory.
+fn bad(case_body: &str, key: &str, extra: &[&str]) {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = write_case(tmp.path(), "bad.toml", case_body);
+    let out = tmp.path().join("never");
+    let mut args = vec![
+        "stochastic",
+        "--case",
+        &case,
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let o = rebound(&args);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{key}: {err}");
+    let lines: Vec<&str> = err.lines().filter(|l| !l.starts_with("warning")).collect();
+    assert_eq!(lines.len(), 1, "{key}: {err}");
+    assert!(lines[0].contains(key), "{key}: {err}");
+    assert!(!out.exists(), "{key}: output written");
+}
+
+#[test]
+fn bad_input_is_one_line_naming_the_key_with_exit_2_and_nothing_written() {
+    bad(
+        &BASE.replace("psi = 2.0", "psi = 0.0"),
+        "stochastic.psi",
+        &[],
+    );
+    bad(
+        &BASE.replace("psi = 2.0", "psi = -1.0"),
+        "stochastic.psi",
+        &[],
+    );
+    bad(
+        &BASE.replace("delta_xi_deg = 3.8", "delta_xi_deg = -1.0"),
+        "delta_xi_deg",
+        &[],
+    );
+    bad(
+        &BASE.replace("delta_zeta_deg = 7.5", "delta_zeta_deg = 25.0"),
+        "delta_zeta_deg",
+        &[],
+    );
+    bad(
+        &BASE.replace("speed_std_m_s = 1.16", "speed_std_m_s = -0.5"),
+        "speed_std_m_s",
+        &[],
+    );
+    bad(
+        &BASE.replace("alpha_deg = [-0.01, -15.0, -90.0]", "alpha_deg = []"),
+        "alpha_deg",
+        &[],
+    );
+    bad(
+        &BASE.replace("beta_deg = [0.0, 60.0]", "beta_deg = []"),
+        "beta_deg",
+        &[],
+    );
+    bad(BASE, "--particles", &["--particles", "0"]);
+    bad(
+        &BASE.replace("psi = 2.0", "psi = 2.0\nkappa = 1.0"),
+        "kappa",
+        &[],
+    );
+}
+
+#[test]
+fn roughness_beyond_the_low_roughness_range_warns_but_runs() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = write_case(
+        tmp.path(),
+        "w.toml",
+        &BASE.replace("delta_zeta_deg = 7.5", "delta_zeta_deg = 12.0"),
+    );
+    let out = tmp.path().join("o");
+    let o = rebound(&[
+        "stochastic",
+        "--case",
+        &case,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    assert!(
+        err.contains("warning") && err.contains("delta_zeta_deg"),
+        "{err}"
+    );
+    assert!(out.join("summary.csv").is_file());
+}

@@ -4,15 +4,13 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use rebound::case::{IncidentCondition, SpeedLaw};
+use rebound::cli::{CommonArgs, DeterministicArgs};
 use rebound::collision::CollisionLaw;
+use rebound::commands::deterministic::{generate_surface, SurfacePlan};
 use rebound::deterministic::scene::{choose_surface, SceneOptions};
 use rebound::deterministic::{run_condition, Tracker};
 use rebound::surface::HeightField;
-use rebound::wall::Deviations;
 use std::time::Duration;
-
-#[path = "../tests/deterministic_support/mod.rs"]
-mod support;
 
 const UNIT: SpeedLaw = SpeedLaw {
     mean_m_s: 1.0,
@@ -22,14 +20,7 @@ const UNIT: SpeedLaw = SpeedLaw {
 /// The surface `deterministic` would choose for the wall (default scene options).
 fn surface(dxi: f64, dze: f64, seed: u64) -> HeightField {
     let c = choose_surface(dxi.to_radians(), dze.to_radians(), &SceneOptions::default()).unwrap();
-    support::gaussian_surface(
-        c.nodes,
-        c.spacing_m,
-        c.rms_height_m,
-        c.corr_length_x_m,
-        c.corr_length_z_m,
-        seed,
-    )
+    generate_surface(&SurfacePlan::Auto(c), seed).unwrap()
 }
 
 fn histories(c: &mut Criterion) {
@@ -79,43 +70,27 @@ fn histories(c: &mut Criterion) {
     g.finish();
 }
 
-/// The whole aniso.toml scene (12 conditions × 10⁵ particles), surface included.
+/// The whole aniso.toml scene (12 conditions × 10⁵ particles) through the command:
+/// surface generation, tracking, tallies, CSVs, figures and run.toml.
 fn whole_case(c: &mut Criterion) {
+    let dir = std::env::temp_dir().join(format!("rebound-bench-det-{}", std::process::id()));
+    let args = DeterministicArgs {
+        common: CommonArgs {
+            case: Some("cases/aniso.toml".into()),
+            out: Some(dir.clone()),
+            seed: None,
+            threads: None,
+        },
+        surface: None,
+        particles: Some(100_000),
+    };
     let mut g = c.benchmark_group("deterministic_case");
-    g.sample_size(10).measurement_time(Duration::from_secs(30));
+    g.sample_size(10).measurement_time(Duration::from_secs(40));
     g.bench_function("aniso_1e5_per_condition", |b| {
-        b.iter(|| {
-            let f = surface(2.5, 7.5, 2);
-            let t = Tracker::new(&f, 1000).unwrap();
-            let dv = Deviations {
-                delta_xi: 2.5f64.to_radians(),
-                delta_zeta: 7.5f64.to_radians(),
-            };
-            let mut k = 0;
-            let mut rows = 0;
-            for a in [-2.5f64, -12.5, -32.5] {
-                for beta in [0.0f64, 30.0, 60.0, 90.0] {
-                    let r = run_condition(
-                        &t,
-                        &CollisionLaw::Elastic,
-                        500e-6,
-                        IncidentCondition {
-                            alpha_in: a.to_radians(),
-                            beta_in: beta.to_radians(),
-                        },
-                        k,
-                        100_000,
-                        2,
-                        &UNIT,
-                    );
-                    rows += r.tally(&dv, 2.0, 1.0).pdfs.len();
-                    k += 1;
-                }
-            }
-            rows
-        })
+        b.iter(|| rebound::commands::deterministic::run(&args).unwrap())
     });
     g.finish();
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 criterion_group!(benches, histories, whole_case);

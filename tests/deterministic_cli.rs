@@ -161,3 +161,105 @@ fn bad_surface_files() {
     std::fs::write(&empty, b"").unwrap();
     refuses(&[], &["--surface", empty.to_str().unwrap()], "empty.bin");
 }
+
+fn run_ok(args: &[&str]) -> String {
+    let (code, _, err) = rebound(args);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    err
+}
+
+#[test]
+fn outputs_are_byte_identical_for_one_and_two_threads() {
+    let dir = tempfile::tempdir().unwrap();
+    let case = case_with(
+        dir.path(),
+        &[(
+            "model = \"elastic\"",
+            "model = \"sommerfeld-huber\"\npreset = \"glass-steel\"",
+        )],
+    );
+    let mut outs = Vec::new();
+    for threads in ["1", "2"] {
+        let out = dir.path().join(format!("out{threads}"));
+        let err = run_ok(&[
+            "deterministic",
+            "--case",
+            case.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--threads",
+            threads,
+        ]);
+        assert!(!err.contains("warning"), "{err}");
+        outs.push(out);
+    }
+    for f in ["summary.csv", "pdfs.csv"] {
+        let a = std::fs::read(outs[0].join(f)).unwrap();
+        let b = std::fs::read(outs[1].join(f)).unwrap();
+        assert!(a == b, "{f} differs between --threads 1 and 2");
+    }
+    let summary = std::fs::read_to_string(outs[0].join("summary.csv")).unwrap();
+    let rows: Vec<&str> = summary.lines().collect();
+    assert_eq!(rows.len(), 3);
+    for row in &rows[1..] {
+        assert!(row.ends_with(",0"), "lost must be 0: {row}");
+        assert!(!row.contains(",,"), "empty cell: {row}");
+    }
+    let manifest = std::fs::read_to_string(outs[0].join("run.toml")).unwrap();
+    for key in [
+        "[surface_choice]",
+        "particles_per_s",
+        "wall_time_s",
+        "measured_delta_zeta_deg",
+    ] {
+        assert!(manifest.contains(key), "run.toml lacks {key}");
+    }
+    for fig in [
+        "fig06_alpha_out.svg",
+        "fig07_dbeta.svg",
+        "fig08_xi_first.svg",
+        "fig09_zeta_first.svg",
+        "fig12_p_single.svg",
+    ] {
+        assert!(outs[0].join(fig).is_file(), "{fig}");
+    }
+}
+
+#[test]
+fn a_saved_surface_is_reused_and_a_damaged_one_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let surf_case = dir.path().join("surf.toml");
+    std::fs::write(
+        &surf_case,
+        "name = 's'\n[surface]\nlength_um = 640.0\nnodes = 320\nrms_height_um = 1.0\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n",
+    )
+    .unwrap();
+    let heights = dir.path().join("wall.rbhf");
+    run_ok(&[
+        "surface",
+        "--case",
+        surf_case.to_str().unwrap(),
+        "--heights",
+        heights.to_str().unwrap(),
+        "--out",
+        dir.path().join("s").to_str().unwrap(),
+    ]);
+    let case = case_with(dir.path(), &[]);
+    let out = dir.path().join("det");
+    run_ok(&[
+        "deterministic",
+        "--case",
+        case.to_str().unwrap(),
+        "--surface",
+        heights.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let manifest = std::fs::read_to_string(out.join("run.toml")).unwrap();
+    assert!(manifest.contains("source = \"file\""));
+    // A truncated copy is refused with the file's name.
+    let bytes = std::fs::read(&heights).unwrap();
+    let cut = dir.path().join("cut.rbhf");
+    std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
+    refuses(&[], &["--surface", cut.to_str().unwrap()], "cut.rbhf");
+}

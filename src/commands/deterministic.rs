@@ -2,13 +2,15 @@
 //! rough surface for every incident condition of the case
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
-use crate::case::{warn, Case, IncidentCondition, Scene, SurfaceSpec, WallSource};
+use crate::case::{warn, Case, IncidentCondition, Scene, WallSource};
 use crate::cli::DeterministicArgs;
 use crate::commands::Context;
 use crate::deterministic::scene::{choose_surface, SceneOptions, SurfaceChoice};
 use crate::deterministic::{plots, run_condition, Tracker, DEFAULT_MAX_COLLISIONS};
 use crate::error::{Error, Result};
 use crate::output::prepare_out_dir;
+use crate::surface::generate;
+use crate::surface::heights_io::read_heights;
 use crate::surface::HeightField;
 use crate::tally::{write_summary_and_pdfs, ConditionResult};
 use crate::wall::Deviations;
@@ -119,19 +121,31 @@ impl SurfacePlan {
 /// (Radenkovic & Simonin 2021, Eqs. 1–2).
 pub fn generate_surface(plan: &SurfacePlan, seed: u64) -> Result<HeightField> {
     let (length_m, nodes, rms_height_m, corr_length_x_m, corr_length_z_m) = plan.grid();
-    let spec = SurfaceSpec {
-        length_m,
-        nodes,
-        rms_height_m,
-        corr_length_x_m,
-        corr_length_z_m,
-    };
-    Ok(crate::surface::generate::generate(&spec, seed))
+    Ok(generate(
+        &crate::case::SurfaceSpec {
+            length_m,
+            nodes,
+            rms_height_m,
+            corr_length_x_m,
+            corr_length_z_m,
+        },
+        seed,
+    ))
 }
 
-/// Reads a height field saved by `rebound surface --heights FILE`.
+/// Reads a height field saved by `rebound surface --heights FILE`; every problem is a
+/// one-line input error naming the file.
 pub fn read_surface(path: &Path) -> Result<HeightField> {
-    crate::surface::heights_io::read_heights(path)
+    if !path.is_file() {
+        return Err(Error::Input(format!(
+            "--surface file `{}` not found",
+            path.display()
+        )));
+    }
+    read_heights(path).map_err(|e| match e {
+        Error::Input(m) => Error::Input(format!("--surface {m}")),
+        other => other,
+    })
 }
 
 /// RMS of the triangle normals' angle fluctuations `(ξ − 90°, ζ − 90°)` (rad): the
@@ -348,8 +362,8 @@ fn timing_row(
     lost: &crate::deterministic::LostCounts,
 ) -> toml::Value {
     let mut t = toml::Table::new();
-    t.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
-    t.insert("beta_in_deg".into(), f(cond.beta_in_deg()));
+    t.insert("alpha_in_deg".into(), f(round(cond.alpha_in_deg(), 9)));
+    t.insert("beta_in_deg".into(), f(round(cond.beta_in_deg(), 9)));
     t.insert("seconds".into(), f(round(secs, 4)));
     t.insert(
         "particles_per_s".into(),

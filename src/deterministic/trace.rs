@@ -107,6 +107,9 @@ enum Walk {
 struct Tiles {
     twx: usize,
     twz: usize,
+    /// `log2` of the tile widths (widths are powers of two): floor division by a shift.
+    shx: u32,
+    shz: u32,
     ntx: usize,
     ntz: usize,
     max: Vec<f64>,
@@ -211,6 +214,8 @@ impl<'a> Tracker<'a> {
                 Some(Tiles {
                     twx,
                     twz,
+                    shx: twx.trailing_zeros(),
+                    shz: twz.trailing_zeros(),
                     ntx,
                     ntz,
                     max,
@@ -423,9 +428,11 @@ impl<'a> Tracker<'a> {
                 Some((_, _, k)) => k,
                 None => Self::tri_at(sx, sz, dq),
             };
+            // On the surface after a hit; at the start the clearance is computed by
+            // the walk only if the first tile is not skipped (saves a cache miss).
             let g0 = match exclude {
                 Some(_) => 0.0,
-                None => o.y - Self::plane(self.corners(&cell), tri, sx, sz),
+                None => f64::NAN,
             };
             match self.walk(&o, &d, cell, tri, g0, exclude, &mut steps) {
                 Walk::Escape => {
@@ -492,7 +499,7 @@ impl<'a> Tracker<'a> {
     }
 
     /// Walks the straight segment `o + d t`, `t ≥ 0`, starting in `cell`,
-    /// triangle `tri`, with clearance `g0` at `t = 0`. Triangle `exclude` (the one
+    /// triangle `tri`, with clearance `g0` at `t = 0` (NaN: not known yet). Triangle `exclude` (the one
     /// just left) cannot be hit.
     #[allow(clippy::too_many_arguments)]
     fn walk(
@@ -521,9 +528,9 @@ impl<'a> Tracker<'a> {
         };
         let mut t_cur = 0.0_f64;
         let mut g_cur = g0;
-        let (twx, twz) = match &self.tiles {
-            Some(t) => (t.twx as i64, t.twz as i64),
-            None => (1, 1),
+        let (shx, shz) = match &self.tiles {
+            Some(t) => (t.shx, t.shz),
+            None => (0, 0),
         };
         let mut checked_tile = (i64::MIN, i64::MIN);
         loop {
@@ -533,7 +540,7 @@ impl<'a> Tracker<'a> {
             }
             // Coarse skip: on entering a tile, jump over whole tiles the ray passes above.
             if let Some(tiles) = &self.tiles {
-                let tile = (cell.ix.div_euclid(twx), cell.iz.div_euclid(twz));
+                let tile = (cell.ix >> shx, cell.iz >> shz);
                 if tile == checked_tile {
                     // Already known to need the cell walk.
                 } else if let Some((t_new, c_new, g_new)) =
@@ -552,7 +559,7 @@ impl<'a> Tracker<'a> {
                             Walk::Lost(LostReason::BelowSurface)
                         };
                     }
-                    checked_tile = (cell.ix.div_euclid(twx), cell.iz.div_euclid(twz));
+                    checked_tile = (cell.ix >> shx, cell.iz >> shz);
                 } else {
                     checked_tile = tile;
                 }
@@ -560,6 +567,11 @@ impl<'a> Tracker<'a> {
             let hc = self.corners(&cell);
             let x0 = cell.ix as f64 * dx;
             let z0 = cell.iz as f64 * dz;
+            if g_cur.is_nan() {
+                let sx = (((o.x + d.x * t_cur) - x0) / dx).clamp(0.0, 1.0);
+                let sz = (((o.z + d.z * t_cur) - z0) / dz).clamp(0.0, 1.0);
+                g_cur = o.y + d.y * t_cur - Self::plane(hc, tri, sx, sz);
+            }
             let t_x = if d.x > 0.0 {
                 ((x0 + dx - o.x) * inv_ux).max(t_cur)
             } else if d.x < 0.0 {
@@ -725,10 +737,10 @@ impl<'a> Tracker<'a> {
         let mut last_axis_x = true;
         loop {
             // Tile of the current cell (unwrapped) and its exit time.
-            let tx = c.ix.div_euclid(twx);
-            let tz = c.iz.div_euclid(twz);
-            let wtx = c.wx / tiles.twx;
-            let wtz = c.wz / tiles.twz;
+            let tx = c.ix >> tiles.shx;
+            let tz = c.iz >> tiles.shz;
+            let wtx = c.wx >> tiles.shx;
+            let wtz = c.wz >> tiles.shz;
             debug_assert!(wtx < tiles.ntx && wtz < tiles.ntz);
             let tmax = tiles.max[wtz * tiles.ntx + wtx];
             let tx_exit = if d.x > 0.0 {

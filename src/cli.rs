@@ -27,6 +27,8 @@ pub enum Command {
     ForceSweep(ForceSweepArgs),
     /// Compare the PDFs of two runs (e.g. deterministic vs stochastic).
     Compare(CompareArgs),
+    /// Write results/REPORT.md (ours beside the papers' numbers) from the reproduction outputs.
+    Report(ReportArgs),
 }
 
 /// Options every simulation subcommand takes.
@@ -102,6 +104,13 @@ pub struct CompareArgs {
     pub label_b: String,
 }
 
+#[derive(Args, Debug, Clone)]
+pub struct ReportArgs {
+    /// Root of the reproduction outputs (as written by scripts/reproduce-all.sh).
+    #[arg(long, value_name = "DIR", default_value = "results")]
+    pub results: PathBuf,
+}
+
 /// Runs a parsed command inside a rayon pool of the requested size.
 pub fn run(cli: Cli) -> Result<()> {
     let threads = match &cli.command {
@@ -109,7 +118,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Deterministic(a) => a.common.threads,
         Command::Stochastic(a) => a.common.threads,
         Command::ForceSweep(a) => a.common.threads,
-        Command::Compare(_) => None,
+        Command::Compare(_) | Command::Report(_) => None,
     };
     let threads = match threads {
         Some(0) => {
@@ -132,5 +141,6 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Stochastic(a) => commands::stochastic::run(a),
         Command::ForceSweep(a) => commands::force_sweep::run(a),
         Command::Compare(a) => commands::compare::run(a),
+        Command::Report(a) => commands::report::run(a),
     })
 }

@@ -3,6 +3,7 @@
 pub mod compare;
 pub mod deterministic;
 pub mod force_sweep;
+pub mod report;
 pub mod stochastic;
 pub mod surface;
 

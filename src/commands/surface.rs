@@ -1,12 +1,247 @@
-//! `rebound surface`.
+//! `rebound surface`: generate the Garcia–Stoll surface of the case and measure the
+//! statistics of Radenkovic & Simonin 2021, Table 1 (Eqs. 7–9, 14–15).
+//!
+//! Outputs in `--out`: `surface_summary.csv`, `normal_angles.csv`, `height_map.svg`,
+//! `normal_angle_pdfs.svg`, `run.toml` (timings only there), and with `--heights FILE`
+//! the height field in the format of [`crate::surface::heights_io`].
 
 use crate::cli::SurfaceArgs;
 use crate::commands::Context;
-use crate::error::{Error, Result};
+use crate::error::Result;
+use crate::figures::{plot_grid_svg, Kind, Plot, Series};
+use crate::output::{fmt_num, prepare_out_dir, CsvTable};
+use crate::surface::figure::height_map_svg;
+use crate::surface::heights_io::write_heights;
+use crate::surface::stats::{surface_stats, HistogramSpec, RotatedStats, SurfaceStats};
+use crate::surface::{generate, HeightField};
+use crate::wall::{self, rotated_moments, Deviations};
+use std::path::Path;
+use std::time::Instant;
 
-/// Runs the subcommand. Not implemented yet: checks the case, then refuses with exit
-/// status 2 rather than writing fake output.
+/// The built-in case: the surface of Table 1 (L = 5 mm, N = 5001, h = 0.37 µm,
+/// c_Lx = 12 µm, c_Lz = 4 µm).
+pub const TABLE1_TOML: &str = include_str!("../../configs/cases/table1.toml");
+
+/// Columns of `surface_summary.csv` (issue #2).
+pub const SUMMARY_HEADER: [&str; 14] = [
+    "nodes",
+    "length_um",
+    "spacing_um",
+    "rms_height_um",
+    "target_rms_height_um",
+    "rms_slope_x",
+    "target_rms_slope_x",
+    "rms_slope_z",
+    "target_rms_slope_z",
+    "delta_xi_deg",
+    "target_delta_xi_deg",
+    "delta_zeta_deg",
+    "target_delta_zeta_deg",
+    "max_height_um",
+];
+
+/// Columns of `normal_angles.csv` (issue #2).
+pub const ANGLES_HEADER: [&str; 9] = [
+    "beta_star_deg",
+    "delta_xi_star_deg",
+    "delta_zeta_star_deg",
+    "rho_xi_zeta",
+    "rho_xi_eta",
+    "rho_eta_zeta",
+    "model_delta_xi_star_deg",
+    "model_delta_zeta_star_deg",
+    "model_rho_xi_zeta",
+];
+
+/// Bins of the `ξ*`, `ζ*` histograms.
+const HIST_BINS: usize = 100;
+
+/// Runs the subcommand: validate everything first (nothing is written on bad input),
+/// then generate, measure, and write.
 pub fn run(args: &SurfaceArgs) -> Result<()> {
-    Context::new(&args.common, "surface", "name = \"default\"\n")?;
-    Err(Error::NotImplemented("`rebound surface` (issue #2)".into()))
+    let mut ctx = Context::new(&args.common, "surface", TABLE1_TOML)?;
+    let spec = ctx.case.surface_spec()?;
+    let betas = ctx.case.beta_star()?;
+    let target = spec.deviations();
+
+    let t0 = Instant::now();
+    let field = generate(&spec, ctx.seed);
+    let t_gen = t0.elapsed().as_secs_f64();
+    let half_range = (4.0 * target.delta_xi.max(target.delta_zeta)).max(1f64.to_radians());
+    let hist = HistogramSpec {
+        half_range,
+        bins: HIST_BINS,
+    };
+    let stats = surface_stats(&field, &betas, Some(hist));
+    let t_stats = t0.elapsed().as_secs_f64() - t_gen;
+
+    prepare_out_dir(&ctx.out_dir)?;
+    let dir = ctx.out_dir.clone();
+    summary_table(&spec, &target, &stats).write(&dir.join("surface_summary.csv"))?;
+    angles_table(&target, &stats).write(&dir.join("normal_angles.csv"))?;
+    height_map_svg(
+        &dir.join("height_map.svg"),
+        &field,
+        &format!(
+            "{}: heights, window of {} × {} nodes",
+            ctx.case.name,
+            field.nx.min(256),
+            field.nx.max(field.nz).min(256)
+        ),
+    )?;
+    pdf_figure(&dir.join("normal_angle_pdfs.svg"), &target, &stats)?;
+    if let Some(path) = &args.heights {
+        write_heights(path, &field)?;
+        ctx.manifest
+            .set_run("heights_file", path.display().to_string().into());
+    }
+    ctx.manifest.set("grid", grid_table(&field));
+    ctx.manifest
+        .set_run("generate_s", toml::Value::Float(round_ms(t_gen)));
+    ctx.manifest
+        .set_run("stats_s", toml::Value::Float(round_ms(t_stats)));
+    ctx.manifest.write(&dir)?;
+    Ok(())
+}
+
+fn round_ms(s: f64) -> f64 {
+    (s * 1e3).round() / 1e3
+}
+
+/// How the field is stored (see `HeightField`): `nz = 1` for a surface constant along z.
+fn grid_table(f: &HeightField) -> toml::Value {
+    let mut t = toml::Table::new();
+    t.insert("nx".into(), toml::Value::Integer(f.nx as i64));
+    t.insert("nz".into(), toml::Value::Integer(f.nz as i64));
+    t.insert("dx_m".into(), toml::Value::Float(f.dx));
+    t.insert("dz_m".into(), toml::Value::Float(f.dz));
+    t.insert(
+        "statistics".into(),
+        "every triangle of the grid (two per cell), equally weighted".into(),
+    );
+    toml::Value::Table(t)
+}
+
+/// Target rms slope `√2 h / c_L` (Radenkovic & Simonin 2021, Eq. 14); 0 for `c_L = ∞`.
+fn target_slope(h: f64, c: Option<f64>) -> f64 {
+    c.map_or(0.0, |c| wall::deviation_from_surface(h, c))
+}
+
+fn summary_table(
+    spec: &crate::case::SurfaceSpec,
+    target: &Deviations,
+    s: &SurfaceStats,
+) -> CsvTable {
+    let um = |m: f64| fmt_num(m * 1e6);
+    let deg = |r: f64| fmt_num(r.to_degrees());
+    let mut t = CsvTable::new(&SUMMARY_HEADER);
+    t.push(vec![
+        spec.nodes.to_string(),
+        um(spec.length_m),
+        um(spec.spacing_m()),
+        um(s.rms_height_m),
+        um(spec.rms_height_m),
+        fmt_num(s.rms_slope_x),
+        fmt_num(target_slope(spec.rms_height_m, spec.corr_length_x_m)),
+        fmt_num(s.rms_slope_z),
+        fmt_num(target_slope(spec.rms_height_m, spec.corr_length_z_m)),
+        deg(s.delta_xi),
+        deg(target.delta_xi),
+        deg(s.delta_zeta),
+        deg(target.delta_zeta),
+        um(s.max_height_m),
+    ]);
+    t
+}
+
+/// Model columns: Eq. (9) with the target deviations of Eq. (15), and Eq. (8). At
+/// multiples of 90° the covariance is exactly 0 (not `cos(π/2) ≈ 6e-17` times something).
+fn model_row(target: &Deviations, beta_star: f64) -> (f64, f64, f64) {
+    let mut m = rotated_moments(target, beta_star);
+    let q = beta_star / std::f64::consts::FRAC_PI_2;
+    if (q - q.round()).abs() < 1e-12 {
+        m.cov = 0.0;
+    }
+    (m.var_a.sqrt(), m.var_b.sqrt(), m.rho())
+}
+
+fn angles_table(target: &Deviations, s: &SurfaceStats) -> CsvTable {
+    let deg = |r: f64| fmt_num(r.to_degrees());
+    let mut t = CsvTable::new(&ANGLES_HEADER);
+    for r in &s.rotated {
+        let (mx, mz, mrho) = model_row(target, r.beta_star);
+        t.push(vec![
+            deg(r.beta_star),
+            deg(r.delta_xi_star),
+            deg(r.delta_zeta_star),
+            fmt_num(r.rho_xi_zeta),
+            fmt_num(r.rho_xi_eta),
+            fmt_num(r.rho_eta_zeta),
+            deg(mx),
+            deg(mz),
+            fmt_num(mrho),
+        ]);
+    }
+    t
+}
+
+/// Normal density of std `sd` (degrees) on `[-half, half]`, per degree (Eqs. 12–13 for
+/// the fluctuations `ξ* − 90°`, `ζ* − 90°`). Empty for `sd = 0` (a Dirac peak).
+fn normal_curve(sd: f64, half: f64) -> Vec<(f64, f64)> {
+    if sd <= 0.0 {
+        return Vec::new();
+    }
+    let n = 200;
+    (0..=n)
+        .map(|i| {
+            let x = -half + 2.0 * half * i as f64 / n as f64;
+            let y = (-0.5 * (x / sd).powi(2)).exp() / (sd * (2.0 * std::f64::consts::PI).sqrt());
+            (x, y)
+        })
+        .collect()
+}
+
+fn pdf_panel(target: &Deviations, r: &RotatedStats) -> Plot {
+    let (mx, mz, _) = model_row(target, r.beta_star);
+    let per_deg = |h: &crate::surface::stats::Histogram| -> Vec<(f64, f64)> {
+        h.density()
+            .into_iter()
+            .map(|(x, p)| (x.to_degrees(), p.to_radians()))
+            .collect()
+    };
+    let mut series = Vec::new();
+    let mut half = 1.0;
+    if let Some(h) = &r.hist_xi {
+        half = h.half_range.to_degrees();
+        series.push(Series::new("ξ* − 90° (surface)", per_deg(h), Kind::Step));
+    }
+    if let Some(h) = &r.hist_zeta {
+        series.push(Series::new("ζ* − 90° (surface)", per_deg(h), Kind::Step));
+    }
+    series.push(Series::new(
+        "Eq. (12)",
+        normal_curve(mx.to_degrees(), half),
+        Kind::Dashed,
+    ));
+    series.push(Series::new(
+        "Eq. (13)",
+        normal_curve(mz.to_degrees(), half),
+        Kind::Dashed,
+    ));
+    Plot {
+        title: format!("β* = {}°", fmt_num(r.beta_star.to_degrees())),
+        x_label: "angle − 90° (deg)".into(),
+        y_label: "PDF (1/deg)".into(),
+        series,
+        x_range: Some((-half, half)),
+        ..Plot::default()
+    }
+}
+
+fn pdf_figure(path: &Path, target: &Deviations, s: &SurfaceStats) -> Result<()> {
+    let plots: Vec<Plot> = s.rotated.iter().map(|r| pdf_panel(target, r)).collect();
+    if plots.is_empty() {
+        return Ok(());
+    }
+    plot_grid_svg(path, &plots, plots.len().min(2))
 }

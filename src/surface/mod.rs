@@ -1,3 +1,8 @@
 //! Rough walls as generated surfaces (Radenkovic & Simonin 2021, Sec. 2).
+pub mod figure;
+pub mod generate;
 pub mod height_field;
+pub mod heights_io;
+pub mod stats;
+pub use generate::generate;
 pub use height_field::HeightField;

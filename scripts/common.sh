@@ -1,0 +1,42 @@
+# Sourced by the reproduction scripts: where the binary and the results are, the
+# reduced mode, and a `run` that prints each command before running it.
+#
+#   REBOUND_RESULTS  output root (default: <repo>/results)
+#   REBOUND_BIN      the rebound binary (default: build target/release/rebound once)
+#   REBOUND_QUICK=1  reduced mode: few particles, small surfaces (used by the tests)
+set -euo pipefail
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+OUT=${REBOUND_RESULTS:-$ROOT/results}
+QUICK=${REBOUND_QUICK:-0}
+if [ -z "${REBOUND_BIN:-}" ]; then
+  if [ -z "${REBOUND_BUILT:-}" ]; then
+    (cd "$ROOT" && cargo build --release --quiet)
+    export REBOUND_BUILT=1
+  fi
+  REBOUND_BIN=$ROOT/target/release/rebound
+fi
+export REBOUND_BIN REBOUND_RESULTS=$OUT REBOUND_QUICK=$QUICK
+# Shipped cases are found under configs/ from the repository root.
+cd "$ROOT"
+
+run() {
+  echo "+ rebound $*"
+  "$REBOUND_BIN" "$@"
+}
+
+# Particle counts: full mode, reduced mode.
+particles() { if [ "$QUICK" = 1 ]; then echo "$2"; else echo "$1"; fi; }
+
+# Stage timings accumulate in one file so that reproduce-all.sh can print them all at the end.
+STAGE_LOG=${REBOUND_STAGE_LOG:-$OUT/.stage-times}
+export REBOUND_STAGE_LOG=$STAGE_LOG
+mkdir -p "$OUT"
+stage_start() { STAGE_NAME=$1; STAGE_T0=$(date +%s.%N); echo "== $1"; }
+stage_end() {
+  local t1; t1=$(date +%s.%N)
+  printf '%-44s %8.1f s\n' "$STAGE_NAME" "$(awk -v a="$t1" -v b="$STAGE_T0" 'BEGIN{print a-b}')" >> "$STAGE_LOG"
+}
+print_stages() {
+  echo "== time per stage ($1)"
+  cat "$STAGE_LOG"
+}

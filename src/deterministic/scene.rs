@@ -1,0 +1,191 @@
+//! The surface a deterministic scene needs when the case gives only the
+//! normal-angle deviations `Δξ`, `Δζ` of the wall.
+//!
+//! Radenkovic & Simonin 2021, Eq. (15): `Δ = √2 h / c_L`, so only `h / c_L`
+//! matters; the rms height is arbitrary (elastic bouncing has no length scale,
+//! and Sommerfeld–Huber only the particle diameter in the spin, which drops out of
+//! the contact-point velocity `u + (D/2) ω`). The grid spacing and the side are
+//! chosen from the correlation lengths: spacing `≤ c_L,min / spacing_per_corr_length`,
+//! side `≥ side_per_corr_length · c_L,max`, with an FFT-friendly node count.
+
+/// Knobs of the choice (case section `[deterministic]`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneOptions {
+    /// Correlation lengths per grid spacing along the shorter correlation length.
+    pub spacing_per_corr_length: f64,
+    /// Side of the surface in units of the longer correlation length.
+    pub side_per_corr_length: f64,
+    /// RMS height (m), arbitrary.
+    pub rms_height_m: f64,
+}
+
+impl Default for SceneOptions {
+    fn default() -> Self {
+        SceneOptions {
+            spacing_per_corr_length: 8.0,
+            side_per_corr_length: 100.0,
+            rms_height_m: 1e-6,
+        }
+    }
+}
+
+/// Largest node count per side the automatic choice accepts (64 Mi nodes).
+pub const MAX_NODES: usize = 8192;
+
+/// A square periodic surface: `nodes × nodes`, side `length_m`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceChoice {
+    pub length_m: f64,
+    pub nodes: usize,
+    pub spacing_m: f64,
+    pub rms_height_m: f64,
+    /// `None`: no roughness along that axis (`Δ = 0`).
+    pub corr_length_x_m: Option<f64>,
+    pub corr_length_z_m: Option<f64>,
+}
+
+/// Correlation length from a normal-angle deviation: `c_L = √2 h / Δ`
+/// (Radenkovic & Simonin 2021, Eq. 15); `None` for `Δ = 0` (no roughness).
+pub fn corr_length(rms_height: f64, delta: f64) -> Option<f64> {
+    if delta > 0.0 {
+        Some(std::f64::consts::SQRT_2 * rms_height / delta)
+    } else {
+        None
+    }
+}
+
+/// Smallest `n ≥ target` whose only prime factors are 2, 3 and 5.
+pub fn next_smooth(target: usize) -> usize {
+    let mut n = target.max(1);
+    loop {
+        let mut m = n;
+        for p in [2, 3, 5] {
+            while m.is_multiple_of(p) {
+                m /= p;
+            }
+        }
+        if m == 1 {
+            return n;
+        }
+        n += 1;
+    }
+}
+
+/// The surface for deviations `delta_xi`, `delta_zeta` (rad).
+///
+/// The node count is a multiple of 8 (for the tracker's tile map) times a
+/// 5-smooth number. A smooth wall (both deviations zero) gets a small flat grid.
+pub fn choose_surface(
+    delta_xi: f64,
+    delta_zeta: f64,
+    opt: &SceneOptions,
+) -> Result<SurfaceChoice, String> {
+    for (key, v) in [("delta_xi_deg", delta_xi), ("delta_zeta_deg", delta_zeta)] {
+        if !(v.is_finite() && v >= 0.0) {
+            return Err(format!(
+                "invalid `{key}` = {}: allowed finite values ≥ 0",
+                v.to_degrees()
+            ));
+        }
+    }
+    if !(opt.spacing_per_corr_length.is_finite() && opt.spacing_per_corr_length >= 1.0) {
+        return Err(format!(
+            "invalid `deterministic.spacing_per_corr_length` = {}: allowed ≥ 1",
+            opt.spacing_per_corr_length
+        ));
+    }
+    if !(opt.side_per_corr_length.is_finite() && opt.side_per_corr_length >= 1.0) {
+        return Err(format!(
+            "invalid `deterministic.side_per_corr_length` = {}: allowed ≥ 1",
+            opt.side_per_corr_length
+        ));
+    }
+    if !(opt.rms_height_m.is_finite() && opt.rms_height_m > 0.0) {
+        return Err(format!(
+            "invalid `deterministic.rms_height_um` = {}: allowed > 0",
+            opt.rms_height_m * 1e6
+        ));
+    }
+    let h = opt.rms_height_m;
+    let cx = corr_length(h, delta_xi);
+    let cz = corr_length(h, delta_zeta);
+    let cs: Vec<f64> = [cx, cz].into_iter().flatten().collect();
+    if cs.is_empty() {
+        // Smooth wall: any grid will do.
+        let nodes = 16;
+        let spacing = h;
+        return Ok(SurfaceChoice {
+            length_m: nodes as f64 * spacing,
+            nodes,
+            spacing_m: spacing,
+            rms_height_m: 0.0,
+            corr_length_x_m: None,
+            corr_length_z_m: None,
+        });
+    }
+    let c_min = cs.iter().copied().fold(f64::INFINITY, f64::min);
+    let c_max = cs.iter().copied().fold(0.0, f64::max);
+    let spacing = c_min / opt.spacing_per_corr_length;
+    // The ratio is exact in theory; forgive the last bits of rounding.
+    let target = (opt.side_per_corr_length * c_max / spacing * (1.0 - 1e-12)).ceil();
+    if target.is_nan() || target > MAX_NODES as f64 {
+        return Err(format!(
+            "the wall needs {target} nodes per side (> {MAX_NODES}) for spacing c_L,min/{} and side {}·c_L,max: \
+             lower `deterministic.spacing_per_corr_length` or `deterministic.side_per_corr_length`",
+            opt.spacing_per_corr_length, opt.side_per_corr_length
+        ));
+    }
+    let nodes = 8 * next_smooth((target as usize).div_ceil(8));
+    Ok(SurfaceChoice {
+        length_m: nodes as f64 * spacing,
+        nodes,
+        spacing_m: spacing,
+        rms_height_m: h,
+        corr_length_x_m: cx,
+        corr_length_z_m: cz,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn smooth_numbers() {
+        assert_eq!(next_smooth(7), 8);
+        assert_eq!(next_smooth(300), 300);
+        assert_eq!(next_smooth(301), 320);
+        assert_eq!(next_smooth(1), 1);
+    }
+
+    #[test]
+    fn aniso_wall_gets_fine_spacing_and_large_side() {
+        let d = |x: f64| x.to_radians();
+        let c = choose_surface(d(2.5), d(7.5), &SceneOptions::default()).unwrap();
+        let cx = c.corr_length_x_m.unwrap();
+        let cz = c.corr_length_z_m.unwrap();
+        // Eq. (15): c_L = √2 h / Δ, so c_Lx / c_Lz = Δζ / Δξ = 3.
+        assert!((cx / cz - 3.0).abs() < 1e-12);
+        assert!(c.spacing_m <= cz / 8.0 * (1.0 + 1e-12));
+        assert!(c.length_m >= 100.0 * cx);
+        assert_eq!(c.nodes % 8, 0);
+        assert_eq!(next_smooth(c.nodes / 8), c.nodes / 8);
+        assert_eq!(c.nodes, 2400);
+    }
+
+    #[test]
+    fn two_d_and_smooth_walls() {
+        let c = choose_surface(3.8f64.to_radians(), 0.0, &SceneOptions::default()).unwrap();
+        assert!(c.corr_length_z_m.is_none());
+        assert_eq!(c.nodes, 800);
+        let f = choose_surface(0.0, 0.0, &SceneOptions::default()).unwrap();
+        assert_eq!(f.rms_height_m, 0.0);
+        assert!(choose_surface(-1.0, 0.0, &SceneOptions::default()).is_err());
+        assert!(choose_surface(
+            0.5f64.to_radians(),
+            10f64.to_radians(),
+            &SceneOptions::default()
+        )
+        .is_err());
+    }
+}

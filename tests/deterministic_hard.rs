@@ -1,0 +1,182 @@
+//! Hard cases of physics notes §9 for the deterministic tracker, the shipped case
+//! files, and thread-count independence of the outputs.
+
+mod deterministic_support;
+use deterministic_support::*;
+use rebound::case::SpeedLaw;
+use rebound::collision::{CollisionLaw, ShParams};
+use rebound::deterministic::{ConditionRun, Tracker};
+use rebound::surface::HeightField;
+use rebound::tally::tables;
+use std::time::Instant;
+
+fn laws() -> [CollisionLaw; 2] {
+    [
+        CollisionLaw::Elastic,
+        CollisionLaw::SommerfeldHuber(ShParams::glass_steel()),
+    ]
+}
+
+const GS_SPEED: SpeedLaw = SpeedLaw {
+    mean_m_s: 5.91,
+    std_m_s: 1.16,
+};
+
+/// Every summary cell and PDF value of a condition is a finite number.
+fn assert_finite(r: &ConditionRun, dv: &rebound::wall::Deviations, what: &str) {
+    assert_eq!(r.lost.total(), 0, "{what}: {}", r.lost.describe());
+    let t = r.tally(dv, 2.0, 1.0);
+    for (k, cell) in t.summary.iter().enumerate() {
+        let v: f64 = cell
+            .parse()
+            .unwrap_or_else(|_| panic!("{what}: summary cell {k} = {cell:?}"));
+        assert!(v.is_finite(), "{what}: summary cell {k}");
+    }
+    for (q, bins) in &t.pdfs {
+        assert!(!bins.is_empty(), "{what}: empty {q}");
+        assert!(
+            bins.iter().all(|b| b.value.is_finite() && b.lo.is_finite()),
+            "{what}: {q}"
+        );
+    }
+}
+
+#[test]
+fn grazing_and_normal_incidence_on_a_rough_wall() {
+    let f = wall(2.5, 7.5, 8.0, 40.0, 11);
+    let t = Tracker::new(&f, 1000).unwrap();
+    let dv = dev(2.5, 7.5);
+    for law in laws() {
+        for (k, (a, b)) in [(-0.01, 0.0), (-0.01, 60.0), (-0.01, 90.0), (-90.0, 0.0)]
+            .into_iter()
+            .enumerate()
+        {
+            let t0 = Instant::now();
+            let r = run(&t, &law, &dv, a, b, k as u64, 5000, GS_SPEED);
+            assert!(t0.elapsed().as_secs_f64() < 20.0, "a {a}: too slow");
+            assert_finite(&r, &dv, &format!("{law:?} a {a} b {b}"));
+            if matches!(law, CollisionLaw::Elastic) {
+                assert!(r
+                    .outcomes
+                    .iter()
+                    .all(|o| (o.speed_ratio - 1.0).abs() < 1e-12));
+            }
+        }
+    }
+}
+
+#[test]
+fn flat_wall_is_a_mirror_for_the_elastic_law() {
+    let f = HeightField {
+        nx: 16,
+        nz: 16,
+        dx: 1e-6,
+        dz: 1e-6,
+        heights: vec![0.0; 256],
+    };
+    let t = Tracker::new(&f, 1000).unwrap();
+    let dv = dev(0.0, 0.0);
+    for law in laws() {
+        for (k, a) in [-0.01, -12.5, -90.0].into_iter().enumerate() {
+            let r = run(&t, &law, &dv, a, 30.0, k as u64, 1000, GS_SPEED);
+            assert_finite(&r, &dv, &format!("flat {law:?} a {a}"));
+            for o in &r.outcomes {
+                assert_eq!(o.collisions, Some(1));
+                if matches!(law, CollisionLaw::Elastic) {
+                    assert!((o.alpha_out.to_degrees() + a).abs() < 1e-9);
+                    if a > -90.0 {
+                        assert!(o.dbeta.abs() < 1e-12);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn two_d_roughness_at_the_hard_angles() {
+    let f = wall(3.8, 0.0, 8.0, 40.0, 12);
+    let t = Tracker::new(&f, 1000).unwrap();
+    let dv = dev(3.8, 0.0);
+    for law in laws() {
+        for (k, (a, b)) in [
+            (-0.01, 0.0),
+            (-0.01, 90.0),
+            (-15.0, 0.0),
+            (-15.0, 90.0),
+            (-90.0, 0.0),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let r = run(&t, &law, &dv, a, b, k as u64, 5000, GS_SPEED);
+            assert_finite(&r, &dv, &format!("2-D {law:?} a {a} b {b}"));
+        }
+    }
+}
+
+#[test]
+fn outputs_are_identical_for_any_thread_count() {
+    let f = wall(2.5, 7.5, 8.0, 20.0, 13);
+    let t = Tracker::new(&f, 1000).unwrap();
+    let dv = dev(2.5, 7.5);
+    let bytes = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let results: Vec<_> = [(-2.5, 60.0), (-32.5, 0.0)]
+                .into_iter()
+                .enumerate()
+                .map(|(k, (a, b))| {
+                    run(
+                        &t,
+                        &CollisionLaw::SommerfeldHuber(ShParams::glass_steel()),
+                        &dv,
+                        a,
+                        b,
+                        k as u64,
+                        3000,
+                        GS_SPEED,
+                    )
+                    .tally(&dv, 2.0, 1.0)
+                })
+                .collect();
+            let (s, p) = tables(&results);
+            (s.to_bytes(), p.to_bytes())
+        })
+    };
+    let one = bytes(1);
+    let two = bytes(2);
+    let three = bytes(3);
+    assert!(one == two && two == three);
+}
+
+#[test]
+fn shipped_cases_resolve() {
+    use rebound::commands::deterministic::{deterministic_options, SurfacePlan};
+    for name in [
+        "aniso",
+        "aniso-rev",
+        "glass-steel",
+        "glass-steel-2d",
+        "glass-steel-iso",
+        "glass-steel-fig16",
+        "glass-steel-fig16-2d",
+        "glass-steel-fig17",
+        "glass-steel-fig17-2d",
+    ] {
+        let path = std::path::PathBuf::from(format!("cases/{name}.toml"));
+        let case = rebound::case::load(Some(&path), "").unwrap();
+        assert_eq!(case.name, name);
+        let scene = case.scene().unwrap();
+        let opt = deterministic_options(&case).unwrap();
+        let plan = SurfacePlan::for_scene(&scene, &opt.scene).unwrap();
+        assert!(matches!(plan, SurfacePlan::Auto(_)));
+        if name.starts_with("glass") {
+            assert!(matches!(scene.law, CollisionLaw::SommerfeldHuber(_)));
+            assert_eq!(scene.speed.mean_m_s, 5.91);
+        }
+    }
+}

@@ -108,11 +108,15 @@ fn without_shadow_effect_gamma_pair_has_the_moments_of_eq26() {
         let m = rotated_moments(&wall, f64::to_radians(b));
         let n = out.len() as f64;
         let (mg, vg) = (
-            out.iter().map(|r| r.gamma).sum::<f64>() / n,
-            out.iter().map(|r| r.gamma * r.gamma).sum::<f64>() / n,
+            out.iter().map(|r| r.first.gamma).sum::<f64>() / n,
+            out.iter().map(|r| r.first.gamma.powi(2)).sum::<f64>() / n,
         );
-        let vs = out.iter().map(|r| r.gamma_star.powi(2)).sum::<f64>() / n;
-        let cov = out.iter().map(|r| r.gamma * r.gamma_star).sum::<f64>() / n;
+        let vs = out.iter().map(|r| r.first.gamma_star.powi(2)).sum::<f64>() / n;
+        let cov = out
+            .iter()
+            .map(|r| r.first.gamma * r.first.gamma_star)
+            .sum::<f64>()
+            / n;
         let scale = m.var_a.max(m.var_b);
         assert!(mg.abs() < 0.02 * m.var_a.sqrt(), "mean γ {mg}");
         assert!(
@@ -141,8 +145,8 @@ fn gamma_star_given_gamma_follows_eq30() {
         let g0 = g0 * sd;
         let sel: Vec<f64> = out
             .iter()
-            .filter(|r| (r.gamma - g0).abs() < 0.05 * sd)
-            .map(|r| r.gamma_star - m.cov / m.var_a * (r.gamma - g0))
+            .filter(|r| (r.first.gamma - g0).abs() < 0.05 * sd)
+            .map(|r| r.first.gamma_star - m.cov / m.var_a * (r.first.gamma - g0))
             .collect();
         let (mean, std, k) = mean_std(sel.into_iter());
         let cmean = m.cov / m.var_a * g0;
@@ -286,4 +290,26 @@ fn hard_cases_give_finite_rebounds_quickly() {
         &mut rng,
     );
     assert_eq!(r.tries, 0);
+}
+
+#[test]
+fn first_wall_seen_follows_the_shadow_effect_law() {
+    // Figs. 10: γ of the first wall seen follows P_eff(γ | α⁻) (Eqs. 31–33); the exact 3-D
+    // visibility test U⁻·n < 0 (step 4) removes almost nothing beyond it.
+    use rebound::stochastic::shadow_effect::bin_probability;
+    for (wall, a, b) in [(dev(2.5, 7.5), -2.5, 0.0), (dev(3.8, 7.5), -5.0, 60.0)] {
+        let out = run(&wall, &sh(), a, b, 40_000);
+        let dg = rotated_moments(&wall, f64::to_radians(b)).var_a.sqrt();
+        let mut g: Vec<f64> = out.iter().map(|r| r.first.gamma).collect();
+        g.sort_by(|x, y| x.total_cmp(y));
+        let n = g.len() as f64;
+        let mut ks: f64 = 0.0;
+        for k in 0..=60 {
+            let x = f64::to_radians(a) + k as f64 * 0.2 * dg;
+            let model = bin_probability(-1.0, x, f64::to_radians(a), dg);
+            let emp = g.partition_point(|v| *v <= x) as f64 / n;
+            ks = ks.max((model - emp).abs());
+        }
+        assert!(ks < 0.012, "α⁻={a} β⁻={b}: KS {ks}");
+    }
 }

@@ -17,6 +17,26 @@ use rand_distr::StandardNormal;
 /// number is ~1–3 for every admissible input).
 pub const MAX_TRIES: u32 = 100_000;
 
+/// A virtual wall element: its inclinations and unit normal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeenWall {
+    /// Inclination `γ` in the incident plane (rad, Eq. 20).
+    pub gamma: f64,
+    /// Inclination `γ*` normal to the incident plane (rad, Eq. 21).
+    pub gamma_star: f64,
+    /// Unit normal (Eq. 23, exact unit vector).
+    pub normal: Vector3<f64>,
+}
+
+impl SeenWall {
+    /// The mean (smooth) wall: `γ = γ* = 0`, `n = j`.
+    pub const FLAT: SeenWall = SeenWall {
+        gamma: 0.0,
+        gamma_star: 0.0,
+        normal: Vector3::new(0.0, 1.0, 0.0),
+    };
+}
+
 /// The outcome of [`rebound`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Rebound {
@@ -39,6 +59,12 @@ pub struct Rebound {
     /// estimates the single-collision probability (a run's `p_single` is
     /// `Σ accepted / Σ candidates`).
     pub candidates: u32,
+    /// The first wall element the particle *sees* (first candidate with `U⁻·n < 0`,
+    /// before any single-collision rejection): `γ` follows `P_eff(γ | α⁻)` and `γ*` given
+    /// `γ` Eq. (30) exactly — the analogue of the deterministic model's first normal
+    /// (Radenkovic & Simonin 2021, Figs. 10–11). The accepted wall (`gamma`,
+    /// `gamma_star`, `normal`) is biased towards walls that give single collisions.
+    pub first: SeenWall,
 }
 
 impl Rebound {
@@ -174,6 +200,7 @@ pub fn rebound<R: Rng + ?Sized>(
             normal: j,
             tries: 0,
             candidates: 0,
+            first: SeenWall::FLAT,
         };
     }
     let smooth = Rebound {
@@ -184,6 +211,7 @@ pub fn rebound<R: Rng + ?Sized>(
         normal: j,
         tries: 1,
         candidates: 1,
+        first: SeenWall::FLAT,
     };
     let smooth_wall = wall.delta_xi == 0.0 && wall.delta_zeta == 0.0;
     let bad_psi = !(psi > 0.0 && psi.is_finite());
@@ -202,6 +230,7 @@ pub fn rebound<R: Rng + ?Sized>(
     let moments = rotated_moments(wall, beta);
     let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
     let mut candidates = 0u32;
+    let mut first = SeenWall::FLAT;
     for tries in 1..=MAX_TRIES {
         // Steps 2–3.
         let gamma = sampler.sample(rng);
@@ -219,6 +248,13 @@ pub fn rebound<R: Rng + ?Sized>(
         }
         // Step 5.
         candidates += 1;
+        if candidates == 1 {
+            first = SeenWall {
+                gamma,
+                gamma_star,
+                normal: n,
+            };
+        }
         let (u, w) = law.collide(u_in, omega_in, n, diameter_m);
         // Step 6.
         if !accept_single_collision(&u, wall, psi, rng) {
@@ -233,6 +269,7 @@ pub fn rebound<R: Rng + ?Sized>(
             normal: n,
             tries,
             candidates,
+            first,
         };
     }
     let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
@@ -241,6 +278,7 @@ pub fn rebound<R: Rng + ?Sized>(
         spin: w,
         tries: MAX_TRIES,
         candidates,
+        first,
         ..smooth
     }
 }

@@ -76,7 +76,8 @@ impl ConditionRun {
 /// The tallied record of one stochastic rebound (radians; `β⁻ = beta_in`).
 pub fn outcome(r: &Rebound, u_in: &Vector3<f64>, beta_in: f64) -> Outcome {
     let (alpha_out, beta_out) = incident_angles(&r.velocity);
-    let (xi, zeta) = xi_zeta_of_normal(&r.normal);
+    // The first wall seen, like the deterministic model's first normal (Figs. 10–11).
+    let (xi, zeta) = xi_zeta_of_normal(&r.first.normal);
     let s_in = u_in.norm();
     Outcome {
         alpha_out,
@@ -85,8 +86,8 @@ pub fn outcome(r: &Rebound, u_in: &Vector3<f64>, beta_in: f64) -> Outcome {
         dbeta_first: None,
         xi_first: xi,
         zeta_first: zeta,
-        gamma_first: r.gamma,
-        gamma_star_first: r.gamma_star,
+        gamma_first: r.first.gamma,
+        gamma_star_first: r.first.gamma_star,
         collisions: None,
         speed_ratio: if s_in > 0.0 {
             r.velocity.norm() / s_in

@@ -9,10 +9,10 @@ use nalgebra::Vector3;
 use rayon::prelude::*;
 use rebound::case::SpeedLaw;
 use rebound::collision::{CollisionLaw, ShParams};
+use rebound::incidence::{draw_speed, incident_velocity};
 use rebound::rng;
 use rebound::stochastic::rebound;
 use rebound::stochastic::shadow_effect::ShadowSampler;
-use rebound::stochastic::simulate::{draw_speed, incident_velocity};
 use rebound::wall::{delta_gamma, Deviations};
 use std::time::Instant;
 

@@ -14,6 +14,7 @@ pub mod deterministic;
 pub mod error;
 pub mod figures;
 pub mod force;
+pub mod incidence;
 pub mod output;
 pub mod progress;
 pub mod report;

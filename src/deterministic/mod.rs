@@ -9,40 +9,13 @@ pub use trace::{Fate, History, HitInfo, LostReason, Tracker, DEFAULT_MAX_COLLISI
 use crate::angles::{gamma_from_normal, incident_angles, wrap_pi, xi_zeta_of_normal};
 use crate::case::{IncidentCondition, SpeedLaw};
 use crate::collision::CollisionLaw;
+use crate::incidence::{draw_speed, incident_velocity};
 use crate::rng;
 use crate::tally::{Bin, ConditionExtras, ConditionResult, Curve, Outcome};
 use crate::wall::{delta_gamma, Deviations};
 use nalgebra::Vector3;
 use rand::Rng;
-use rand_distr::{Distribution, Normal};
 use rayon::prelude::*;
-
-/// Draws the horizontal speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4);
-/// non-positive draws are redrawn (up to 64 times, then the mean is used).
-/// With `std = 0` nothing is drawn.
-fn draw_speed<R: Rng>(law: &SpeedLaw, r: &mut R) -> f64 {
-    if law.std_m_s > 0.0 {
-        if let Ok(n) = Normal::new(law.mean_m_s, law.std_m_s) {
-            for _ in 0..64 {
-                let v = n.sample(r);
-                if v > 0.0 && v.is_finite() {
-                    return v;
-                }
-            }
-        }
-    }
-    law.mean_m_s
-}
-
-/// Incident velocity for angles `alpha < 0`, `beta` (rad) and horizontal speed
-/// `u_h` (physics notes §1: `U = |U| (cos α cos β, sin α, −cos α sin β)`,
-/// `|U| = u_h / cos α`). At normal incidence (`cos α ≤ 1e-9`) the drawn speed is
-/// taken as `|U|`.
-pub fn incident_velocity(alpha: f64, beta: f64, u_h: f64) -> Vector3<f64> {
-    let ca = alpha.cos();
-    let speed = if ca > 1e-9 { u_h / ca } else { u_h };
-    Vector3::new(ca * beta.cos(), alpha.sin(), -ca * beta.sin()) * speed
-}
 
 /// Shoots `count` particles of one condition at the tracker's surface, in parallel;
 /// particle `i` draws its start `(x, z)` (uniform over the period) and its
@@ -285,6 +258,21 @@ impl ConditionRun {
                     Curve {
                         quantity: "p_single_model".into(),
                         bins: model,
+                    },
+                    // PDF of the first rebound angle: with `particles` it gives the
+                    // histories behind each bin of the two curves above.
+                    Curve {
+                        quantity: "alpha_first".into(),
+                        bins: crate::tally::density(
+                            &self
+                                .first_rebound
+                                .iter()
+                                .map(|r| r.0.to_degrees())
+                                .collect::<Vec<_>>(),
+                            -90.0,
+                            90.0,
+                            bin_width_deg,
+                        ),
                     },
                 ],
             },

@@ -32,6 +32,12 @@ impl Default for SceneOptions {
 /// Largest node count per side the automatic choice accepts (64 Mi nodes).
 pub const MAX_NODES: usize = 8192;
 
+/// A 2-D-roughness profile (one grid line) is this many times longer than a square wall's side.
+pub const ONE_D_SIDE_FACTOR: f64 = 100.0;
+
+/// Node limit of such a profile (one line: memory is no concern).
+pub const MAX_NODES_ONE_D: usize = 4_000_000;
+
 /// A square periodic surface: `nodes × nodes`, side `length_m`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceChoice {
@@ -126,13 +132,26 @@ pub fn choose_surface(
     let c_min = cs.iter().copied().fold(f64::INFINITY, f64::min);
     let c_max = cs.iter().copied().fold(0.0, f64::max);
     let spacing = c_min / opt.spacing_per_corr_length;
+    // 2-D roughness (Δζ = 0) is one profile along x, stored as a single grid line: it holds
+    // only side/c_L independent correlation lengths (a square wall holds their square), so a
+    // profile of 100 c_L has its Δξ scatter by about √(c_L/2L) ≈ 7 % between seeds, enough to
+    // shift the angle PDFs visibly. One line is cheap, so make it ONE_D_SIDE_FACTOR longer.
+    let one_d = cz.is_none() && cx.is_some();
+    let (side, max_nodes) = if one_d {
+        (
+            opt.side_per_corr_length * ONE_D_SIDE_FACTOR,
+            MAX_NODES_ONE_D,
+        )
+    } else {
+        (opt.side_per_corr_length, MAX_NODES)
+    };
     // The ratio is exact in theory; forgive the last bits of rounding.
-    let target = (opt.side_per_corr_length * c_max / spacing * (1.0 - 1e-12)).ceil();
-    if target.is_nan() || target > MAX_NODES as f64 {
+    let target = (side * c_max / spacing * (1.0 - 1e-12)).ceil();
+    if target.is_nan() || target > max_nodes as f64 {
         return Err(format!(
-            "the wall needs {target} nodes per side (> {MAX_NODES}) for spacing c_L,min/{} and side {}·c_L,max: \
+            "the wall needs {target} nodes per side (> {max_nodes}) for spacing c_L,min/{} and side {}·c_L,max: \
              lower `deterministic.spacing_per_corr_length` or `deterministic.side_per_corr_length`",
-            opt.spacing_per_corr_length, opt.side_per_corr_length
+            opt.spacing_per_corr_length, side
         ));
     }
     let nodes = 8 * next_smooth((target as usize).div_ceil(8));
@@ -159,6 +178,15 @@ mod tests {
     }
 
     #[test]
+    fn two_d_roughness_gets_a_long_profile() {
+        let c = choose_surface(3.8f64.to_radians(), 0.0, &SceneOptions::default()).unwrap();
+        let cx = c.corr_length_x_m.unwrap();
+        assert!(c.corr_length_z_m.is_none());
+        assert!(c.length_m >= 100.0 * ONE_D_SIDE_FACTOR * cx);
+        assert!(c.spacing_m <= cx / 8.0 * (1.0 + 1e-12));
+    }
+
+    #[test]
     fn aniso_wall_gets_fine_spacing_and_large_side() {
         let d = |x: f64| x.to_radians();
         let c = choose_surface(d(2.5), d(7.5), &SceneOptions::default()).unwrap();
@@ -177,7 +205,7 @@ mod tests {
     fn two_d_and_smooth_walls() {
         let c = choose_surface(3.8f64.to_radians(), 0.0, &SceneOptions::default()).unwrap();
         assert!(c.corr_length_z_m.is_none());
-        assert_eq!(c.nodes, 800);
+        assert_eq!(c.nodes, 80_000);
         let f = choose_surface(0.0, 0.0, &SceneOptions::default()).unwrap();
         assert_eq!(f.rms_height_m, 0.0);
         assert!(choose_surface(-1.0, 0.0, &SceneOptions::default()).is_err());

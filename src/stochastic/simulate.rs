@@ -6,39 +6,12 @@ use super::shadow_effect;
 use crate::angles::{incident_angles, wrap_pi, xi_zeta_of_normal};
 use crate::case::{IncidentCondition, SpeedLaw};
 use crate::collision::CollisionLaw;
+use crate::incidence::{draw_speed, incident_velocity};
 use crate::rng;
 use crate::tally::{Bin, Curve, Outcome};
 use crate::wall::{rotated_moments, Deviations};
 use nalgebra::Vector3;
-use rand::Rng;
-use rand_distr::{Distribution, Normal};
 use rayon::prelude::*;
-
-/// Horizontal incident speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4);
-/// non-positive draws are redrawn (up to 64 times, then the mean is used). With
-/// `std = 0` nothing is drawn. (The same rule as `deterministic`.)
-pub fn draw_speed<R: Rng + ?Sized>(law: &SpeedLaw, r: &mut R) -> f64 {
-    if law.std_m_s > 0.0 {
-        if let Ok(n) = Normal::new(law.mean_m_s, law.std_m_s) {
-            for _ in 0..64 {
-                let v = n.sample(r);
-                if v > 0.0 && v.is_finite() {
-                    return v;
-                }
-            }
-        }
-    }
-    law.mean_m_s
-}
-
-/// Incident velocity for `α < 0`, `β` (rad) and horizontal speed `u_h` (notes §1,
-/// `|U| = u_h / cos α`); at normal incidence (`cos α ≤ 1e−9`) `u_h` is taken as `|U|`.
-/// (The same rule as `deterministic`.)
-pub fn incident_velocity(alpha: f64, beta: f64, u_h: f64) -> Vector3<f64> {
-    let ca = alpha.cos();
-    let speed = if ca > 1e-9 { u_h / ca } else { u_h };
-    Vector3::new(ca * beta.cos(), alpha.sin(), -ca * beta.sin()) * speed
-}
 
 /// The model's parameters for a run.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,0 +1,59 @@
+//! Incident particles: the horizontal-speed law and the incident velocity, shared by the
+//! deterministic tracker and the stochastic model so both shoot the same particles.
+
+use crate::case::SpeedLaw;
+use nalgebra::Vector3;
+use rand::Rng;
+use rand_distr::{Distribution, Normal};
+
+/// Draws the horizontal speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4);
+/// non-positive draws are redrawn (up to 64 times, then the mean is used).
+/// With `std = 0` nothing is drawn.
+pub fn draw_speed<R: Rng + ?Sized>(law: &SpeedLaw, r: &mut R) -> f64 {
+    if law.std_m_s > 0.0 {
+        if let Ok(n) = Normal::new(law.mean_m_s, law.std_m_s) {
+            for _ in 0..64 {
+                let v = n.sample(r);
+                if v > 0.0 && v.is_finite() {
+                    return v;
+                }
+            }
+        }
+    }
+    law.mean_m_s
+}
+
+/// Incident velocity for angles `alpha < 0`, `beta` (rad) and horizontal speed
+/// `u_h` (physics notes §1: `U = |U| (cos α cos β, sin α, −cos α sin β)`,
+/// `|U| = u_h / cos α`). At normal incidence (`cos α ≤ 1e-9`) the drawn speed is
+/// taken as `|U|`.
+pub fn incident_velocity(alpha: f64, beta: f64, u_h: f64) -> Vector3<f64> {
+    let ca = alpha.cos();
+    let speed = if ca > 1e-9 { u_h / ca } else { u_h };
+    Vector3::new(ca * beta.cos(), alpha.sin(), -ca * beta.sin()) * speed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn horizontal_speed_is_the_drawn_one_and_angles_are_kept() {
+        let u = incident_velocity(-0.3, 1.0, 5.91);
+        assert!(((u.x * u.x + u.z * u.z).sqrt() - 5.91).abs() < 1e-12);
+        let (a, b) = crate::angles::incident_angles(&u);
+        assert!((a + 0.3).abs() < 1e-12 && (b - 1.0).abs() < 1e-12);
+        let down = incident_velocity(-std::f64::consts::FRAC_PI_2, 0.0, 2.0);
+        assert!((down.norm() - 2.0).abs() < 1e-12 && down.y < 0.0);
+    }
+
+    #[test]
+    fn speeds_are_positive() {
+        let mut r = crate::rng::stream(1, &[5]);
+        let law = SpeedLaw {
+            mean_m_s: 0.5,
+            std_m_s: 1.0,
+        };
+        assert!((0..10_000).all(|_| draw_speed(&law, &mut r) > 0.0));
+    }
+}

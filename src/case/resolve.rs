@@ -95,6 +95,23 @@ pub struct Scene {
     pub psi: f64,
 }
 
+impl Scene {
+    /// Applies `--particles N` (overrides `[particles] count`).
+    pub fn set_count(&mut self, particles: Option<u64>) -> Result<()> {
+        if let Some(n) = particles {
+            if n == 0 || n > 100_000_000 {
+                return Err(Error::invalid(
+                    "--particles",
+                    n,
+                    "an integer from 1 to 100000000",
+                ));
+            }
+            self.count = n as usize;
+        }
+        Ok(())
+    }
+}
+
 fn positive(key: &str, v: f64) -> Result<f64> {
     if v > 0.0 && v.is_finite() {
         Ok(v)

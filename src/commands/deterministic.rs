@@ -237,16 +237,7 @@ fn surface_table(
 pub fn run(args: &DeterministicArgs) -> Result<()> {
     let mut ctx = Context::new(&args.common, "deterministic", DEFAULT_CASE)?;
     let mut scene = ctx.case.scene()?;
-    if let Some(n) = args.particles {
-        if n == 0 || n > 100_000_000 {
-            return Err(Error::invalid(
-                "--particles",
-                n,
-                "an integer from 1 to 100000000",
-            ));
-        }
-        scene.count = n as usize;
-    }
+    scene.set_count(args.particles)?;
     let opt = deterministic_options(&ctx.case)?;
     // A saved surface replaces the generated one; the case's wall then only labels the
     // deviations (summary columns, Δγ of the Fig. 12 model).

@@ -5,7 +5,7 @@
 use crate::case::{warn, WallSource};
 use crate::cli::StochasticArgs;
 use crate::commands::Context;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::output::prepare_out_dir;
 use crate::stochastic::plots::write_figures;
 use crate::stochastic::simulate::{gamma_model_curve, run_condition, ConditionRun, ModelSetup};
@@ -56,16 +56,7 @@ fn round(x: f64, digits: i32) -> f64 {
 pub fn run(args: &StochasticArgs) -> Result<()> {
     let mut ctx = Context::new(&args.common, "stochastic", DEFAULT_CASE)?;
     let mut scene = ctx.case.scene()?;
-    if let Some(n) = args.particles {
-        if n == 0 || n > 100_000_000 {
-            return Err(Error::invalid(
-                "--particles",
-                n,
-                "an integer from 1 to 100000000",
-            ));
-        }
-        scene.count = n as usize;
-    }
+    scene.set_count(args.particles)?;
     let wall = scene.wall.deviations();
     if let WallSource::Surface(_) = scene.wall {
         let note = format!(

@@ -19,7 +19,7 @@
 
 use crate::error::{Error, Result};
 use crate::surface::HeightField;
-use std::io::{BufWriter, Read, Write};
+use std::io::{Read, Write};
 use std::path::Path;
 
 /// File magic.
@@ -32,19 +32,7 @@ pub const HEADER_LEN: usize = 40;
 /// Writes `f` to `path` (through a temporary file and a rename, so that nothing
 /// half-written is ever left under the final name).
 pub fn write_heights(path: &Path, f: &HeightField) -> Result<()> {
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| -> std::io::Result<()> {
-        let file = std::fs::File::create(&tmp)?;
-        let mut w = BufWriter::with_capacity(1 << 20, file);
+    crate::output::write_atomic_with(path, |w| {
         w.write_all(&header(f))?;
         let mut buf = Vec::with_capacity(4 * 65536);
         for chunk in f.heights.chunks(65536) {
@@ -54,15 +42,8 @@ pub fn write_heights(path: &Path, f: &HeightField) -> Result<()> {
             }
             w.write_all(&buf)?;
         }
-        let file = w.into_inner().map_err(|e| e.into_error())?;
-        file.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if let Err(e) = result {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(Error::io(path, e));
-    }
-    Ok(())
+        Ok(())
+    })
 }
 
 fn header(f: &HeightField) -> [u8; HEADER_LEN] {

@@ -12,7 +12,7 @@
 //! at an edge, where KS is evaluated.
 
 use crate::error::{Error, Result};
-use crate::figures::{plot_grid_svg, Kind, Plot, Series};
+use crate::figures::{plot_grid_svg, sweep_plots, sweep_series, Kind, Plot, Series};
 use crate::output::{fmt_num, write_atomic, CsvTable};
 use crate::tally::{PDFS_HEADER, SUMMARY_HEADER};
 use std::collections::BTreeMap;
@@ -418,7 +418,7 @@ pub fn write_overlays(
         let mut std = Vec::new();
         for k in keys {
             for (r, label, kind) in [(a, label_a, Kind::Line), (b, label_b, Kind::Dashed)] {
-                let mut pts: Vec<(f64, f64, f64)> = matched
+                let pts: Vec<(f64, f64, f64)> = matched
                     .iter()
                     .filter(|c| (if along_beta { c.2 } else { c.3 }) == k)
                     .filter_map(|c| {
@@ -427,25 +427,11 @@ pub fn write_overlays(
                             .map(|&(m, s)| (if along_beta { c.3 } else { -c.2 }, m, s))
                     })
                     .collect();
-                if pts.len() < 2 {
-                    continue;
+                let key = if along_beta { "α⁻" } else { "β⁻" };
+                if let Some((m, sd)) = sweep_series(label, key, k, pts, kind) {
+                    mean.push(m);
+                    std.push(sd);
                 }
-                pts.sort_by(|x, y| x.0.total_cmp(&y.0));
-                let lab = if along_beta {
-                    format!("{label}, α⁻ = {k}°")
-                } else {
-                    format!("{label}, β⁻ = {k}°")
-                };
-                mean.push(Series::new(
-                    lab.clone(),
-                    pts.iter().map(|p| (p.0, p.1)).collect(),
-                    kind,
-                ));
-                std.push(Series::new(
-                    lab,
-                    pts.iter().map(|p| (p.0, p.2)).collect(),
-                    kind,
-                ));
             }
         }
         if mean.is_empty() {
@@ -456,26 +442,7 @@ pub fn write_overlays(
         } else {
             "|α⁻| (deg)"
         };
-        plot_grid_svg(
-            &dir.join(name),
-            &[
-                Plot {
-                    title: "mean transverse deviation".into(),
-                    x_label: xl.into(),
-                    y_label: "E(β⁺ − β⁻) (deg)".into(),
-                    series: mean,
-                    ..Default::default()
-                },
-                Plot {
-                    title: "std of the transverse deviation".into(),
-                    x_label: xl.into(),
-                    y_label: "Δβ⁺ (deg)".into(),
-                    series: std,
-                    ..Default::default()
-                },
-            ],
-            2,
-        )?;
+        plot_grid_svg(&dir.join(name), &sweep_plots(mean, std, xl), 2)?;
         names.push(name.to_string());
     }
     Ok(names)

@@ -256,6 +256,47 @@ fn simplify(pts: Vec<(f64, f64)>, to_pixel: impl Fn((f64, f64)) -> (i32, i32)) -
     keep.into_iter().map(|i| pts[i]).collect()
 }
 
+/// The mean and std curves of one line of a sweep (Radenkovic & Simonin 2021, Figs. 16–17):
+/// `pts` are `(x, mean, std)` for the conditions where the swept key (`α⁻` or `β⁻`, named by
+/// `key`) equals `k`. `None` when fewer than two points make no curve.
+pub fn sweep_series(
+    label: &str,
+    key: &str,
+    k: f64,
+    mut pts: Vec<(f64, f64, f64)>,
+    kind: Kind,
+) -> Option<(Series, Series)> {
+    if pts.len() < 2 {
+        return None;
+    }
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let name = format!("{label}, {key} = {k}°");
+    Some((
+        Series::new(name.clone(), pts.iter().map(|p| (p.0, p.1)).collect(), kind),
+        Series::new(name, pts.iter().map(|p| (p.0, p.2)).collect(), kind),
+    ))
+}
+
+/// The two panels of Figs. 16–17: mean and std of `β⁺ − β⁻` against the swept angle.
+pub fn sweep_plots(mean: Vec<Series>, std: Vec<Series>, x_label: &str) -> [Plot; 2] {
+    [
+        Plot {
+            title: "mean transverse deviation".into(),
+            x_label: x_label.into(),
+            y_label: "E(β⁺ − β⁻) (deg)".into(),
+            series: mean,
+            ..Default::default()
+        },
+        Plot {
+            title: "std of the transverse deviation".into(),
+            x_label: x_label.into(),
+            y_label: "Δβ⁺ (deg)".into(),
+            series: std,
+            ..Default::default()
+        },
+    ]
+}
+
 /// `(bin centre, value)` points of a PDF, for a `Step` series.
 pub fn bins_to_points(bins: &[crate::tally::Bin]) -> Vec<(f64, f64)> {
     bins.iter()
@@ -284,5 +325,29 @@ mod tests {
         plot_svg(&p, &plot).unwrap();
         let s = std::fs::read_to_string(&p).unwrap();
         assert!(s.starts_with("<svg") && s.contains("DS") && s.contains("SM"));
+    }
+
+    #[test]
+    fn sweep_series_sorts_and_needs_two_points() {
+        assert!(sweep_series("DS", "α⁻", -15.0, vec![(10.0, 1.0, 2.0)], Kind::Line).is_none());
+        let (m, s) = sweep_series(
+            "DS",
+            "α⁻",
+            -15.0,
+            vec![(20.0, 1.0, 3.0), (10.0, 0.5, 2.0)],
+            Kind::Line,
+        )
+        .unwrap();
+        assert_eq!(m.points, vec![(10.0, 0.5), (20.0, 1.0)]);
+        assert_eq!(s.points, vec![(10.0, 2.0), (20.0, 3.0)]);
+        assert_eq!(m.label, "DS, α⁻ = -15°");
+    }
+
+    #[test]
+    fn simplify_keeps_the_drawing() {
+        // A flat run collapses to its ends; a corner survives.
+        let pts = vec![(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 1.0)];
+        let out = simplify(pts, |p| (p.0 as i32, p.1 as i32));
+        assert_eq!(out, vec![(0.0, 0.0), (2.0, 0.0), (2.0, 1.0)]);
     }
 }

@@ -12,7 +12,7 @@ use crate::collision::CollisionLaw;
 use crate::incidence::{draw_speed, incident_velocity};
 use crate::rng;
 use crate::tally::{Bin, ConditionExtras, ConditionResult, Curve, Outcome};
-use crate::wall::{delta_gamma, Deviations};
+use crate::wall::Deviations;
 use nalgebra::Vector3;
 use rand::Rng;
 use rayon::prelude::*;
@@ -130,19 +130,11 @@ pub struct ConditionRun {
     pub lost: LostCounts,
 }
 
-/// Radenkovic & Simonin 2021, Eq. (34) with Δγ(β⁺) of Eq. (35): probability that a
-/// rebound at `(α⁺, β⁺)` is the particle's last (a single collision). `Δγ = 0`
-/// (smooth wall) gives 1 for `α⁺ > 0`.
+/// Radenkovic & Simonin 2021, Eq. (34) with Δγ(β⁺) of Eq. (35), at rebound angles
+/// `(α⁺, β⁺)`: the stochastic model's own implementation, so both models use one formula.
 pub fn p_single_model(dev: &Deviations, psi: f64, alpha_out: f64, beta_out: f64) -> f64 {
-    if alpha_out <= 0.0 {
-        return 0.0;
-    }
-    let dg = delta_gamma(dev, beta_out);
-    if dg > 0.0 {
-        (psi * alpha_out / dg).tanh()
-    } else {
-        1.0
-    }
+    let u = crate::angles::velocity_from_angles(1.0, alpha_out, beta_out);
+    crate::stochastic::single_collision_probability(&u, alpha_out, dev, psi)
 }
 
 /// Per `α` bin of `bin_width_deg` on [−90°, 90°): the fraction of single-collision

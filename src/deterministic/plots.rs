@@ -3,7 +3,7 @@
 //! Panels are laid out with one row per `α⁻` and one column per `β⁻`.
 
 use crate::error::Result;
-use crate::figures::{plot_grid_svg, Kind, Plot, Series};
+use crate::figures::{plot_grid_svg, sweep_plots, sweep_series, Kind, Plot, Series};
 use crate::tally::{Bin, ConditionResult};
 use std::path::Path;
 
@@ -57,66 +57,46 @@ fn grid(
     plot_grid_svg(path, &plots, columns(results))
 }
 
+/// One figure: file name, axis labels and the `(quantity, legend, kind)` series of each panel.
+type Panel<'a> = (&'a str, &'a str, &'a str, Vec<(&'a str, &'a str, Kind)>);
+
 /// Writes every figure into `dir`; returns the file names.
 pub fn write_figures(dir: &Path, results: &[ConditionResult], label: &str) -> Result<Vec<String>> {
-    let mut names = Vec::new();
-    let mut put = |name: &str, r: Result<()>| -> Result<()> {
-        r?;
-        names.push(name.to_string());
-        Ok(())
-    };
-    put(
-        "fig06_alpha_out.svg",
-        grid(
-            &dir.join("fig06_alpha_out.svg"),
-            results,
+    const PDF: &str = "PDF (1/deg)";
+    let panels: [Panel; 5] = [
+        (
+            "fig06_alpha_out.svg",
             "α⁺ (deg)",
-            "PDF (1/deg)",
-            &[("alpha_out", label, Kind::Step)],
+            PDF,
+            vec![("alpha_out", label, Kind::Step)],
         ),
-    )?;
-    put(
-        "fig07_dbeta.svg",
-        grid(
-            &dir.join("fig07_dbeta.svg"),
-            results,
+        (
+            "fig07_dbeta.svg",
             "β⁺ − β⁻ (deg)",
-            "PDF (1/deg)",
-            &[
+            PDF,
+            vec![
                 ("dbeta_first", "first rebound (1C)", Kind::Dashed),
                 ("dbeta", "final rebound (MC)", Kind::Step),
             ],
         ),
-    )?;
-    put(
-        "fig08_xi_first.svg",
-        grid(
-            &dir.join("fig08_xi_first.svg"),
-            results,
+        (
+            "fig08_xi_first.svg",
             "ξ − 90° (deg)",
-            "PDF (1/deg)",
-            &[("xi_first", label, Kind::Step)],
+            PDF,
+            vec![("xi_first", label, Kind::Step)],
         ),
-    )?;
-    put(
-        "fig09_zeta_first.svg",
-        grid(
-            &dir.join("fig09_zeta_first.svg"),
-            results,
+        (
+            "fig09_zeta_first.svg",
             "ζ − 90° (deg)",
-            "PDF (1/deg)",
-            &[("zeta_first", label, Kind::Step)],
+            PDF,
+            vec![("zeta_first", label, Kind::Step)],
         ),
-    )?;
-    put(
-        "fig12_p_single.svg",
-        grid(
-            &dir.join("fig12_p_single.svg"),
-            results,
+        (
+            "fig12_p_single.svg",
             "α⁺ (deg)",
             "P(n = 1 | α⁺)",
-            &[
-                ("p_single_given_alpha_out", label, Kind::Markers),
+            vec![
+                ("p_single_given_alpha_first", label, Kind::Markers),
                 (
                     "p_single_model",
                     "tanh(2 α⁺/Δγ(β⁺)), Eqs. 34–35",
@@ -124,106 +104,47 @@ pub fn write_figures(dir: &Path, results: &[ConditionResult], label: &str) -> Re
                 ),
             ],
         ),
-    )?;
-    // Fig. 16: mean and std of β⁺ − β⁻ against β⁻, one series per α⁻.
-    if columns(results) >= 3 {
-        let mut alphas: Vec<f64> = Vec::new();
-        for r in results {
-            if !alphas.contains(&r.condition.alpha_in) {
-                alphas.push(r.condition.alpha_in);
+    ];
+    let mut names = Vec::new();
+    for (name, x_label, y_label, quantities) in &panels {
+        grid(&dir.join(name), results, x_label, y_label, quantities)?;
+        names.push(name.to_string());
+    }
+    // Figs. 16–17: mean and std of β⁺ − β⁻ against β⁻ (one line per α⁻) or |α⁻| (one per β⁻).
+    let mut alphas: Vec<f64> = results.iter().map(|r| r.condition.alpha_in_deg()).collect();
+    let mut betas: Vec<f64> = results.iter().map(|r| r.condition.beta_in_deg()).collect();
+    for v in [&mut alphas, &mut betas] {
+        v.sort_by(|a, b| a.total_cmp(b));
+        v.dedup();
+    }
+    for (along_beta, keys, name, x_label) in [
+        (true, &alphas, "fig16_dbeta_vs_beta.svg", "β⁻ (deg)"),
+        (false, &betas, "fig17_dbeta_vs_alpha.svg", "|α⁻| (deg)"),
+    ] {
+        let (mut mean, mut std) = (Vec::new(), Vec::new());
+        for &k in keys.iter() {
+            let pts = results
+                .iter()
+                .filter(|r| if along_beta { r.condition.alpha_in_deg() } else { r.condition.beta_in_deg() } == k)
+                .filter_map(|r| {
+                    let x = if along_beta { r.condition.beta_in_deg() } else { -r.condition.alpha_in_deg() };
+                    r.stat("dbeta").map(|(m, s)| (x, m, s))
+                })
+                .collect::<Vec<_>>();
+            // A sweep needs at least three points to be worth a figure.
+            if pts.len() < 3 {
+                continue;
+            }
+            let key = if along_beta { "α⁻" } else { "β⁻" };
+            if let Some((m, sd)) = sweep_series(label, key, k, pts, Kind::Line) {
+                mean.push(m);
+                std.push(sd);
             }
         }
-        let series = |k: usize| -> Vec<Series> {
-            alphas
-                .iter()
-                .map(|&a| {
-                    let pts = results
-                        .iter()
-                        .filter(|r| r.condition.alpha_in == a)
-                        .filter_map(|r| {
-                            r.stat("dbeta").map(|(m, s)| {
-                                (r.condition.beta_in_deg(), if k == 0 { m } else { s })
-                            })
-                        })
-                        .collect();
-                    Series::new(
-                        format!("α⁻ = {}°", crate::output::fmt_num(a.to_degrees())),
-                        pts,
-                        Kind::Line,
-                    )
-                })
-                .collect()
-        };
-        let plots = vec![
-            Plot {
-                title: "mean transverse deviation".into(),
-                x_label: "β⁻ (deg)".into(),
-                y_label: "E(β⁺ − β⁻) (deg)".into(),
-                series: series(0),
-                ..Default::default()
-            },
-            Plot {
-                title: "std of the transverse deviation".into(),
-                x_label: "β⁻ (deg)".into(),
-                y_label: "Δβ⁺ (deg)".into(),
-                series: series(1),
-                ..Default::default()
-            },
-        ];
-        put(
-            "fig16_dbeta_vs_beta.svg",
-            plot_grid_svg(&dir.join("fig16_dbeta_vs_beta.svg"), &plots, 2),
-        )?;
-    }
-    // Fig. 17: mean and std of β⁺ − β⁻ against |α⁻|, one series per β⁻.
-    let mut betas: Vec<f64> = Vec::new();
-    for r in results {
-        if !betas.contains(&r.condition.beta_in) {
-            betas.push(r.condition.beta_in);
+        if !mean.is_empty() {
+            plot_grid_svg(&dir.join(name), &sweep_plots(mean, std, x_label), 2)?;
+            names.push(name.to_string());
         }
-    }
-    if results.len() >= 5 * betas.len() {
-        let series = |k: usize| -> Vec<Series> {
-            betas
-                .iter()
-                .map(|&b| {
-                    let pts = results
-                        .iter()
-                        .filter(|r| r.condition.beta_in == b)
-                        .filter_map(|r| {
-                            r.stat("dbeta").map(|(m, s)| {
-                                (-r.condition.alpha_in_deg(), if k == 0 { m } else { s })
-                            })
-                        })
-                        .collect();
-                    Series::new(
-                        format!("β⁻ = {}°", crate::output::fmt_num(b.to_degrees())),
-                        pts,
-                        Kind::Line,
-                    )
-                })
-                .collect()
-        };
-        let plots = vec![
-            Plot {
-                title: "mean transverse deviation".into(),
-                x_label: "|α⁻| (deg)".into(),
-                y_label: "E(β⁺ − β⁻) (deg)".into(),
-                series: series(0),
-                ..Default::default()
-            },
-            Plot {
-                title: "std of the transverse deviation".into(),
-                x_label: "|α⁻| (deg)".into(),
-                y_label: "Δβ⁺ (deg)".into(),
-                series: series(1),
-                ..Default::default()
-            },
-        ];
-        put(
-            "fig17_dbeta_vs_alpha.svg",
-            plot_grid_svg(&dir.join("fig17_dbeta_vs_alpha.svg"), &plots, 2),
-        )?;
     }
     Ok(names)
 }

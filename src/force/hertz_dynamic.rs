@@ -264,7 +264,9 @@ pub fn simulate(p: &Particle, imp: &Impact, opts: &Options) -> Outcome {
     }
 }
 
-/// `hertz-dynamic` for one impact with the given step control.
+/// `hertz-dynamic` for one impact with the given step control: the elliptical Hertz contact of
+/// physics notes §7 integrated in time with the spheroid free to translate and rotate; for a
+/// sphere this is Hu et al. Eq. (1).
 pub fn evaluate(p: &Particle, imp: &Impact, opts: &Options) -> ForceResult {
     let out = simulate(p, imp, opts);
     let scale = p.force_scale(imp.u_n);

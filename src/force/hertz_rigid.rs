@@ -46,7 +46,8 @@ pub fn stiffness(e_star: f64, r1: f64, r2: f64) -> f64 {
     4.0 / 3.0 * e_star * (r1 * r2).sqrt().sqrt() / (f2 * f2.sqrt())
 }
 
-/// Complete elliptic integrals K(m), E(m) (parameter m = e²) by the arithmetic–geometric mean.
+/// Complete elliptic integrals K(m), E(m) (parameter m = e²) by the arithmetic–geometric mean
+/// (Abramowitz & Stegun 1964, §17.6), for the exact Hertz ellipse (Johnson 1985, §4.2).
 pub fn elliptic_ke(m: f64) -> (f64, f64) {
     elliptic_ke_kp(m, (1.0 - m).sqrt())
 }
@@ -110,7 +111,8 @@ pub fn stiffness_exact(e_star: f64, r1: f64, r2: f64) -> f64 {
     2.0 * PI / 3.0 * e_star / (a_curv * m / (k - e)).sqrt() / (k * k.sqrt())
 }
 
-/// Effective mass ratio `m_eff/m = 1 / (1 + d²/(I/m))` at the lowest point.
+/// Effective mass ratio `m_eff/m = 1 / (1 + d²/(I/m))` at the lowest point (physics notes §7:
+/// `1/m_eff = 1/m + d²/I`, impulse at lever arm `d` on a body free to rotate).
 pub fn mass_ratio(s: &Spheroid, lever_arm: f64) -> f64 {
     1.0 / (1.0 + lever_arm * lever_arm / s.inertia_per_mass())
 }
@@ -155,7 +157,8 @@ pub fn xi_and_mass_ratio(lambda: f64, beta: f64) -> (f64, f64) {
     (XI_SPHERE * (q.ln() * (1.0 / 15.0)).exp(), m_ratio)
 }
 
-/// Stiffness `k` and effective mass `m_eff` of the contact at inclination β (SI).
+/// Stiffness `k` of `F = k δ^{3/2}` (Johnson 1985, §4.2, elliptical contact) and effective mass
+/// `m_eff` (physics notes §7) of the contact at inclination β (SI).
 pub fn contact_parameters(p: &Particle, lambda: f64, beta: f64) -> (f64, f64) {
     let s = Spheroid::from_volume_diameter(p.diameter, lambda);
     let lp = s.lowest_point(beta);

@@ -641,6 +641,24 @@ pub fn hu(results: &Path, md: &mut String) -> Result<()> {
         }
         md.push_str("\n![Fig. 6 analogue](hu2021/fig6/fmax_vs_beta.svg) ![Fig. 9 analogue](hu2021/fig6/xi_vs_beta.svg)\n\n");
     }
+    if let Some(s) = Rows::read(&root.join("fig9/force_sweep.csv"))? {
+        md.push_str("**Eq. (8): the coefficient ξ of Eq. (7)** (Hu et al.'s fit, `hu2021`) beside the first-principles `hertz-rigid` (Fig. 9 setup):\n\n| β | ξ λ = 1.5 (Eq. 8) | hertz-rigid | ξ λ = 2 (Eq. 8) | hertz-rigid | ξ λ = 3 (Eq. 8) | hertz-rigid |\n|---|---|---|---|---|---|---|\n");
+        for beta in [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0] {
+            let mut row = format!("| {beta}° |");
+            for lam in [1.5, 2.0, 3.0] {
+                for model in ["hu2021", "hertz-rigid"] {
+                    let xi = s
+                        .with("model", model)
+                        .into_iter()
+                        .find(|r| num(r, "lambda") == Some(lam) && num(r, "beta_deg") == Some(beta))
+                        .and_then(|r| num(r, "xi"));
+                    let _ = write!(row, " {} |", f(xi, 4));
+                }
+            }
+            let _ = writeln!(md, "{row}");
+        }
+        md.push('\n');
+    }
     if let Some(s) = Rows::read(&root.join("fig11b/force_sweep.csv"))? {
         let at = |model: &str| {
             s.with("model", model)
@@ -812,6 +830,36 @@ pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("Reference: deterministic run with the finest grid and the most particles (`speed-vs-error/reference`). Wall times from each run's `run.toml` (2-core machine, surface generation included for the deterministic runs). Table: `speed_vs_error.csv`.\n\n| model | particles | c_L/δ | wall time (s) | µs per particle | max KS α⁺ | max KS β⁺ − β⁻ | max \\|mean α⁺ error\\| (°) |\n|---|---|---|---|---|---|---|---|\n");
     for r in &table.rows {
         let _ = writeln!(md, "| {} |", r.join(" | "));
+    }
+    // Cost per rebound, stochastic against deterministic, at equal particle counts.
+    let per = |model: &str, n: &str| {
+        table
+            .rows
+            .iter()
+            .find(|r| r[0] == model && r[1] == n && (model == "stochastic" || r[2] == "8"))
+            .and_then(|r| r[4].parse::<f64>().ok())
+    };
+    md.push_str("\nCost per rebound on the same scene (wall time per particle, surface generation included for the deterministic runs at c_L/δ = 8):\n\n| particles | deterministic (µs) | stochastic (µs) | deterministic / stochastic |\n|---|---|---|---|\n");
+    let mut counts: Vec<&String> = table
+        .rows
+        .iter()
+        .filter(|r| r[0] == "stochastic")
+        .map(|r| &r[1])
+        .collect();
+    counts.sort_by(|a, b| {
+        a.parse::<f64>()
+            .unwrap_or(0.0)
+            .total_cmp(&b.parse::<f64>().unwrap_or(0.0))
+    });
+    for n in counts {
+        let (d, sm) = (per("deterministic", n), per("stochastic", n));
+        let _ = writeln!(
+            md,
+            "| {n} | {} | {} | {} |",
+            f(d, 3),
+            f(sm, 3),
+            f(d.zip(sm).map(|(d, s)| d / s), 1)
+        );
     }
     md.push_str("\n![speed vs error](speed_vs_error.svg)\n\n");
     Ok(())

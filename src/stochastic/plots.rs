@@ -4,7 +4,9 @@
 
 use super::simulate::ConditionRun;
 use crate::error::Result;
-use crate::figures::{bins_to_points, plot_grid_svg, Kind, Plot, Series};
+use crate::figures::{
+    bins_to_points, plot_grid_svg, sweep_plots, sweep_series, Kind, Plot, Series,
+};
 use crate::tally::{density, ConditionResult};
 use crate::wall::{conditional_gamma_star, rotated_moments, Deviations};
 use std::path::Path;
@@ -162,7 +164,7 @@ pub fn write_figures(
         let mut mean = Vec::new();
         let mut std = Vec::new();
         for &k in keys {
-            let mut pts: Vec<(f64, f64, f64)> = results
+            let pts: Vec<(f64, f64, f64)> = results
                 .iter()
                 .filter(|r| {
                     if along_beta {
@@ -180,45 +182,16 @@ pub fn write_figures(
                     r.stat("dbeta").map(|(m, s)| (x, m, s))
                 })
                 .collect();
-            if pts.len() < 2 {
-                continue;
+            let key = if along_beta { "α⁻" } else { "β⁻" };
+            if let Some((m, sd)) = sweep_series(label, key, k, pts, Kind::Line) {
+                mean.push(m);
+                std.push(sd);
             }
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let name = if along_beta {
-                format!("{label}, α⁻ = {k}°")
-            } else {
-                format!("{label}, β⁻ = {k}°")
-            };
-            mean.push(Series::new(
-                name.clone(),
-                pts.iter().map(|p| (p.0, p.1)).collect(),
-                Kind::Line,
-            ));
-            std.push(Series::new(
-                name,
-                pts.iter().map(|p| (p.0, p.2)).collect(),
-                Kind::Line,
-            ));
         }
         if mean.is_empty() {
             return Vec::new();
         }
-        vec![
-            Plot {
-                title: "mean transverse deviation".into(),
-                x_label: xl.into(),
-                y_label: "E(β⁺ − β⁻) (deg)".into(),
-                series: mean,
-                ..Default::default()
-            },
-            Plot {
-                title: "std of the transverse deviation".into(),
-                x_label: xl.into(),
-                y_label: "Δβ⁺ (deg)".into(),
-                series: std,
-                ..Default::default()
-            },
-        ]
+        sweep_plots(mean, std, xl).to_vec()
     };
     for (along_beta, name) in [
         (true, "fig16_dbeta_vs_beta_in.svg"),

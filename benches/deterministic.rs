@@ -4,12 +4,14 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use rebound::case::{IncidentCondition, SpeedLaw};
-use rebound::cli::{CommonArgs, DeterministicArgs};
+use rebound::cli::{CommonArgs, DeterministicArgs, TallyArgs};
 use rebound::collision::CollisionLaw;
 use rebound::commands::deterministic::{generate_surface, SurfacePlan};
 use rebound::deterministic::scene::{choose_surface, SceneOptions};
-use rebound::deterministic::{run_condition, Tracker};
+use rebound::deterministic::{fill_block, tally_spec, ModelSetup, Tracker};
 use rebound::surface::HeightField;
+use rebound::tally::BlockTally;
+use rebound::wall::Deviations;
 use std::time::Duration;
 
 const UNIT: SpeedLaw = SpeedLaw {
@@ -23,49 +25,39 @@ fn surface(dxi: f64, dze: f64, seed: u64) -> HeightField {
     generate_surface(&SurfacePlan::Auto(c), seed).unwrap()
 }
 
+/// Histories `0..n` of one condition, tallied in one block on one thread (tracker, collision
+/// law and tally; no parallelism, so the figure is per core).
+fn one_block(t: &Tracker<'_>, n: u64) -> BlockTally {
+    let wall = Deviations {
+        delta_xi: 2.5f64.to_radians(),
+        delta_zeta: 7.5f64.to_radians(),
+    };
+    let setup = ModelSetup {
+        law: CollisionLaw::Elastic,
+        diameter_m: 500e-6,
+        speed: UNIT,
+        wall,
+        psi: 2.0,
+    };
+    let cond = IncidentCondition::from_degrees(-12.5, 0.0);
+    let mut block = BlockTally::new(&tally_spec(&wall, cond, 1.0), 0);
+    fill_block(t, &setup, &cond, 0, 1, (0, n), &mut block);
+    block
+}
+
 fn histories(c: &mut Criterion) {
     let f = surface(2.5, 7.5, 1);
     let t = Tracker::new(&f, 1000).unwrap();
-    let n = 200_000;
+    let n = 100_000;
     let mut g = c.benchmark_group("deterministic");
-    g.throughput(Throughput::Elements(n as u64));
+    g.throughput(Throughput::Elements(n));
     g.sample_size(10).measurement_time(Duration::from_secs(8));
-    {
-        g.bench_function("histories_aniso_a-12.5_b0", |b| {
-            b.iter(|| {
-                run_condition(
-                    &t,
-                    &CollisionLaw::Elastic,
-                    500e-6,
-                    IncidentCondition {
-                        alpha_in: (-12.5f64).to_radians(),
-                        beta_in: 0.0,
-                    },
-                    0,
-                    n,
-                    1,
-                    &UNIT,
-                )
-            })
-        });
-    }
+    g.bench_function("histories_aniso_a-12.5_b0_one_core", |b| {
+        b.iter(|| one_block(&t, n))
+    });
     let t_plain = Tracker::new(&f, 1000).unwrap().without_tiles();
-    g.bench_function("histories_aniso_a-12.5_b0_no_tile_map", |b| {
-        b.iter(|| {
-            run_condition(
-                &t_plain,
-                &CollisionLaw::Elastic,
-                500e-6,
-                IncidentCondition {
-                    alpha_in: (-12.5f64).to_radians(),
-                    beta_in: 0.0,
-                },
-                0,
-                n,
-                1,
-                &UNIT,
-            )
-        })
+    g.bench_function("histories_aniso_a-12.5_b0_one_core_no_tile_map", |b| {
+        b.iter(|| one_block(&t_plain, n))
     });
     g.finish();
 }
@@ -82,7 +74,10 @@ fn whole_case(c: &mut Criterion) {
             threads: None,
         },
         surface: None,
-        particles: Some(100_000),
+        tally: TallyArgs {
+            particles: Some(100_000),
+            ..Default::default()
+        },
     };
     let mut g = c.benchmark_group("deterministic_case");
     g.sample_size(10).measurement_time(Duration::from_secs(40));

@@ -29,7 +29,8 @@ TOML
   echo "$f"
 }
 
-if [ "$QUICK" = 1 ]; then REF_N=4000; REF_S=8; COUNTS="1000 2000"; SPACINGS="4 8"; else REF_N=1000000; REF_S=16; COUNTS="1000 10000 100000 1000000"; SPACINGS="4 8 16"; fi
+if [ "$QUICK" = 1 ]; then REF_N=4000; REF_S=8; COUNTS="1000 2000"; SPACINGS="4 8"; TARGETS="0.2"; CAP=200000
+else REF_N=1000000; REF_S=16; COUNTS="1000 10000 100000 1000000"; SPACINGS="4 8 16"; TARGETS="0.1 0.05 0.02 0.01"; CAP=10000000; fi
 
 stage_start "speed-vs-error: reference"
 run deterministic --case "$(case_file $REF_S)" --particles "$REF_N" --seed 99 --out "$S/reference"
@@ -55,6 +56,17 @@ stage_start "speed-vs-error: stochastic model"
 for n in $COUNTS; do
   run stochastic --case "$(case_file 8)" --particles "$n" --out "$S/sm-n$n"
   run compare --a "$S/reference" --b "$S/sm-n$n" --out "$S/sm-n$n/vs-reference" --label-a REF --label-b SM
+done
+stage_end
+
+# "How many particles do I need?" as a setting: run whole blocks until the standard errors of
+# mean α⁺ and mean β⁺ − β⁻ reach the target (at most CAP particles per condition).
+stage_start "speed-vs-error: target standard errors"
+for t in $TARGETS; do
+  run deterministic --case "$(case_file 8)" --target-se "$t" --particles "$CAP" --out "$S/det-t$t-s8"
+  run compare --a "$S/reference" --b "$S/det-t$t-s8" --out "$S/det-t$t-s8/vs-reference" --label-a REF --label-b DS
+  run stochastic --case "$(case_file 8)" --target-se "$t" --particles "$CAP" --out "$S/sm-t$t"
+  run compare --a "$S/reference" --b "$S/sm-t$t" --out "$S/sm-t$t/vs-reference" --label-a REF --label-b SM
 done
 stage_end
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "speed vs error"

@@ -58,6 +58,20 @@ pub fn alpha_xy(alpha_out: f64, beta_out: f64) -> f64 {
     (t / c).atan()
 }
 
+/// `α⁺_xy` of Eq. (43) from the velocity itself: `tan α⁺ / cos β⁺ = v/u`, so
+/// `α⁺_xy = arctan(v/u)` (one arctangent, no round trip through the angles); `±90°` for
+/// `u = 0`, `v ≠ 0`, and 0 for a velocity in the wall plane.
+#[inline]
+pub fn alpha_xy_of_velocity(u: &Vector3<f64>) -> f64 {
+    if u.y == 0.0 {
+        0.0
+    } else if u.x == 0.0 {
+        FRAC_PI_2.copysign(u.y)
+    } else {
+        (u.y / u.x).atan()
+    }
+}
+
 /// Horizontal unit vector along the incident plane, `t_p = cos β i − sin β k` (Radenkovic & Simonin 2021, Eq. 18).
 pub fn t_p(beta: f64) -> Vector3<f64> {
     Vector3::new(beta.cos(), 0.0, -beta.sin())
@@ -70,7 +84,12 @@ pub fn s_p(beta: f64) -> Vector3<f64> {
 
 /// Normal-vector angle fluctuations `(ξ', ζ')` from `(γ, γ*)` (Radenkovic & Simonin 2021, Eq. 23).
 pub fn xi_zeta_from_gamma(gamma: f64, gamma_star: f64, beta_in: f64) -> (f64, f64) {
-    let (s, c) = beta_in.sin_cos();
+    xi_zeta_rotated(gamma, gamma_star, beta_in.sin_cos())
+}
+
+/// Eq. (23) with `(sin β⁻, cos β⁻)` given (computed once per incident direction).
+#[inline]
+pub fn xi_zeta_rotated(gamma: f64, gamma_star: f64, (s, c): (f64, f64)) -> (f64, f64) {
     (c * gamma + s * gamma_star, -s * gamma + c * gamma_star)
 }
 
@@ -82,6 +101,13 @@ pub fn xi_zeta_from_gamma(gamma: f64, gamma_star: f64, beta_in: f64) -> (f64, f6
 /// rescaled onto the unit sphere with `n_y = 0` rather than returning NaN.
 pub fn normal_from_gamma(gamma: f64, gamma_star: f64, beta_in: f64) -> Vector3<f64> {
     let (xi_p, zeta_p) = xi_zeta_from_gamma(gamma, gamma_star, beta_in);
+    normal_from_xi_zeta(xi_p, zeta_p)
+}
+
+/// Unit wall normal from the fluctuations `(ξ', ζ')` (Radenkovic & Simonin 2021, Eqs. 3, 10;
+/// see [`normal_from_gamma`]).
+#[inline]
+pub fn normal_from_xi_zeta(xi_p: f64, zeta_p: f64) -> Vector3<f64> {
     // cos(π/2 + a) = −sin a
     let nx = -xi_p.sin();
     let nz = -zeta_p.sin();
@@ -147,6 +173,22 @@ mod tests {
         assert!((wrap_pi(PI) - PI).abs() < 1e-15);
         assert!((wrap_pi(-PI) - PI).abs() < 1e-15);
         assert!((wrap_pi(3.0 * PI / 2.0) + PI / 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn alpha_xy_from_the_velocity_is_eq43() {
+        for (a, b) in [(0.3, 0.0), (0.3, 0.5), (1.2, -2.0), (0.01, 3.0), (1.5, 1.0)] {
+            let u = velocity_from_angles(2.5, a, b);
+            assert!(
+                (alpha_xy_of_velocity(&u) - alpha_xy(a, b)).abs() < 1e-12,
+                "{a} {b}"
+            );
+        }
+        assert_eq!(
+            alpha_xy_of_velocity(&Vector3::new(0.0, 1.0, 2.0)),
+            FRAC_PI_2
+        );
+        assert_eq!(alpha_xy_of_velocity(&Vector3::new(1.0, 0.0, 2.0)), 0.0);
     }
 
     #[test]

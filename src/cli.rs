@@ -2,6 +2,8 @@
 
 use crate::commands;
 use crate::error::{Error, Result};
+use crate::runner::TallyOverrides;
+use crate::tally::Shard;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -29,6 +31,8 @@ pub enum Command {
     Compare(CompareArgs),
     /// Write results/REPORT.md (ours beside the papers' numbers) from the reproduction outputs.
     Report(ReportArgs),
+    /// Merge the partial tallies of `--shard K/N` runs into the outputs of one run.
+    Merge(MergeArgs),
 }
 
 /// Options every simulation subcommand takes.
@@ -58,6 +62,41 @@ pub struct SurfaceArgs {
     pub heights: Option<PathBuf>,
 }
 
+/// Options of the Monte Carlo subcommands (`deterministic`, `stochastic`).
+#[derive(Args, Debug, Clone, Default)]
+pub struct TallyArgs {
+    /// Particles per incident condition; overrides `[particles] count` (the cap under a target).
+    #[arg(long, value_name = "N")]
+    pub particles: Option<u64>,
+    /// Run whole blocks of particles until the standard errors of mean α⁺ and mean β⁺ − β⁻
+    /// are at most DEG degrees (or the count is reached); overrides `[particles] target_se_deg`.
+    #[arg(long, value_name = "DEG", value_parser = parse_target_se, allow_negative_numbers = true)]
+    pub target_se: Option<f64>,
+    /// Run only shard K of N (1 ≤ K ≤ N) and write a partial tally (`partial.toml`) instead
+    /// of outputs; `rebound merge` turns the N partial tallies into the outputs of one run.
+    #[arg(long, value_name = "K/N", value_parser = Shard::parse)]
+    pub shard: Option<Shard>,
+}
+
+impl TallyArgs {
+    pub fn overrides(&self) -> TallyOverrides {
+        TallyOverrides {
+            particles: self.particles,
+            target_se: self.target_se,
+            shard: self.shard,
+        }
+    }
+}
+
+fn parse_target_se(s: &str) -> std::result::Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v.is_finite() => Ok(v),
+        _ => Err(format!(
+            "`{s}` is not allowed: a positive standard error in degrees"
+        )),
+    }
+}
+
 #[derive(Args, Debug, Clone, Default)]
 pub struct DeterministicArgs {
     #[command(flatten)]
@@ -65,18 +104,29 @@ pub struct DeterministicArgs {
     /// Reuse a height field saved by `rebound surface --heights FILE` instead of generating one.
     #[arg(long, value_name = "FILE")]
     pub surface: Option<PathBuf>,
-    /// Particles per incident condition; overrides `[particles] count`.
-    #[arg(long, value_name = "N")]
-    pub particles: Option<u64>,
+    #[command(flatten)]
+    pub tally: TallyArgs,
 }
 
 #[derive(Args, Debug, Clone, Default)]
 pub struct StochasticArgs {
     #[command(flatten)]
     pub common: CommonArgs,
-    /// Particles per incident condition; overrides `[particles] count`.
+    #[command(flatten)]
+    pub tally: TallyArgs,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct MergeArgs {
+    /// Output directory [default: results/<case name>/<subcommand>/].
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Worker threads for the figures [default: all cores].
     #[arg(long, value_name = "N")]
-    pub particles: Option<u64>,
+    pub threads: Option<usize>,
+    /// The shards' output directories (or their partial.toml files), all N of one run.
+    #[arg(value_name = "SHARD_DIR")]
+    pub inputs: Vec<PathBuf>,
 }
 
 #[derive(Args, Debug, Clone, Default)]
@@ -118,6 +168,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Deterministic(a) => a.common.threads,
         Command::Stochastic(a) => a.common.threads,
         Command::ForceSweep(a) => a.common.threads,
+        Command::Merge(a) => a.threads,
         Command::Compare(_) | Command::Report(_) => None,
     };
     let threads = match threads {
@@ -142,5 +193,16 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::ForceSweep(a) => commands::force_sweep::run(a),
         Command::Compare(a) => commands::compare::run(a),
         Command::Report(a) => commands::report::run(a),
+        Command::Merge(a) => commands::merge::run(a),
     })
+}
+
+/// The first paragraph of a clap error, on one line (clap adds usage lines after it).
+pub fn one_line(rendered: &str) -> String {
+    rendered
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect::<Vec<_>>()
+        .join(" ")
 }

@@ -12,14 +12,17 @@
 //! at an edge, where KS is evaluated.
 
 use crate::error::{Error, Result};
-use crate::figures::{plot_grid_svg, sweep_plots, sweep_series, Kind, Plot, Series};
-use crate::output::{fmt_num, write_atomic, CsvTable};
-use crate::tally::{PDFS_HEADER, SUMMARY_HEADER};
+use crate::figures::{plot_grid_svg, sweep_plots, sweep_series, Kind, Plot, Series, SweepPoint};
+use crate::output::schema::{read_run as read_tables, ConditionKey, RunTables};
+use crate::output::{fmt_num, fmt_opt, write_atomic, CsvTable};
+use crate::tally::Quantity;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-/// Columns of `comparison.csv`, exactly as issue 4 specifies.
-pub const COMPARISON_HEADER: [&str; 9] = [
+/// Columns of `comparison.csv`: those of issue 4, then the standard errors of the two
+/// means and their difference in units of the combined error, `z = (mean_b − mean_a) /
+/// √(se_a² + se_b²)`.
+pub const COMPARISON_HEADER: [&str; 12] = [
     "alpha_in_deg",
     "beta_in_deg",
     "quantity",
@@ -29,16 +32,19 @@ pub const COMPARISON_HEADER: [&str; 9] = [
     "mean_b",
     "std_a",
     "std_b",
+    "se_mean_a",
+    "se_mean_b",
+    "z",
 ];
 
 /// Columns of `unmatched.csv`: what only one of the runs has (an empty `quantity` means
 /// the whole condition).
 pub const UNMATCHED_HEADER: [&str; 4] = ["alpha_in_deg", "beta_in_deg", "quantity", "only_in"];
 
-/// Rows of `pdfs.csv` that are not probability densities and are not compared: the
+/// Rows of `pdfs.csv` that are not probability densities are not compared: the
 /// single-collision probability curves (`p_single_given_alpha_out`, …).
 fn is_pdf(quantity: &str) -> bool {
-    !quantity.starts_with("p_single")
+    Quantity::from_name(quantity).is_none_or(|q| q.is_density())
 }
 
 /// Quantities drawn as overlay figures (when present in both runs).
@@ -141,123 +147,64 @@ pub fn distances(a: &BinnedPdf, b: &BinnedPdf) -> (f64, f64) {
     (ks.min(1.0), l1.min(2.0))
 }
 
-/// An incident condition as written in the CSV files: `(alpha_in_deg, beta_in_deg)`.
-pub type ConditionKey = (String, String);
-
-/// One run's outputs: per condition (the CSV strings of α⁻, β⁻), per quantity, a PDF;
-/// and the `summary.csv` rows.
+/// One run's outputs: per condition (the CSV strings of α⁻, β⁻), per quantity, a PDF, and
+/// the exact moments of `moments.csv`.
 #[derive(Clone, Debug, Default)]
 pub struct RunOutputs {
     /// Conditions in file order, with their parsed angles.
     pub conditions: Vec<(String, String, f64, f64)>,
     /// `(α⁻, β⁻) → quantity → PDF`, quantities in file order.
-    pub pdfs: BTreeMap<(String, String), Vec<(String, BinnedPdf)>>,
-    /// `(α⁻, β⁻) → (mean_dbeta_deg, std_dbeta_deg)` from `summary.csv`.
-    pub dbeta: BTreeMap<(String, String), (f64, f64)>,
+    pub pdfs: BTreeMap<ConditionKey, Vec<(String, BinnedPdf)>>,
+    tables: RunTables,
 }
 
-fn parse_num(s: &str, path: &Path, what: &str) -> Result<f64> {
-    s.trim().parse::<f64>().map_err(|_| {
-        Error::Input(format!(
-            "{}: not a rebound output (`{what}` = \"{s}\" is not a number)",
-            path.display()
-        ))
-    })
+impl RunOutputs {
+    /// Mean, std and standard error of a quantity: exact from `moments.csv` when the run
+    /// wrote it, else the binned PDF's (bin centres; no standard error).
+    pub fn moments(
+        &self,
+        key: &ConditionKey,
+        quantity: &str,
+        pdf: &BinnedPdf,
+    ) -> (f64, f64, Option<f64>) {
+        match Quantity::from_name(quantity).and_then(|q| self.tables.estimate(key, q)) {
+            Some(e) => (e.mean, e.std, Some(e.se)),
+            None => {
+                let (m, s) = pdf.mean_std();
+                (m, s, None)
+            }
+        }
+    }
+
+    /// `(mean, std, se)` of `β⁺ − β⁻` at a condition (Figs. 16–17).
+    fn dbeta(&self, key: &ConditionKey) -> Option<(f64, f64, Option<f64>)> {
+        let pdf = &self.pdfs.get(key)?.iter().find(|e| e.0 == "dbeta")?.1;
+        Some(self.moments(key, "dbeta", pdf))
+    }
 }
 
-/// Reads `summary.csv` and `pdfs.csv` of a run directory; `flag` (e.g. `--a`) names it
-/// in errors. A directory without both files, or with other headers, is not a rebound
-/// output: a one-line `Error::Input`.
+/// Reads `summary.csv`, `pdfs.csv` and `moments.csv` of a run directory
+/// (`output::schema::read_run`); `flag` (e.g. `--a`) names it in errors.
 pub fn read_run(dir: &Path, flag: &str) -> Result<RunOutputs> {
-    if !dir.is_dir() {
-        return Err(Error::Input(format!(
-            "`{flag}` {}: not a directory",
-            dir.display()
-        )));
-    }
-    let (sp, pp) = (dir.join("summary.csv"), dir.join("pdfs.csv"));
-    for p in [&sp, &pp] {
-        if !p.is_file() {
-            return Err(Error::Input(format!(
-                "`{flag}` {}: not a rebound output (no {})",
-                dir.display(),
-                p.file_name()
-                    .map(|n| n.to_string_lossy())
-                    .unwrap_or_default()
-            )));
-        }
-    }
-    let named = |e: Error| match e {
-        Error::Input(m) => Error::Input(format!("`{flag}` {m}")),
-        other => other,
-    };
-    let summary = CsvTable::read(&sp, &SUMMARY_HEADER).map_err(named)?;
-    let pdfs = CsvTable::read(&pp, &PDFS_HEADER).map_err(named)?;
-    let mut out = RunOutputs::default();
-    let ia = SUMMARY_HEADER
+    let tables = read_tables(dir, flag)?;
+    let pdfs = tables
+        .pdfs
         .iter()
-        .position(|h| *h == "mean_dbeta_deg")
-        .unwrap_or(7);
-    let is = SUMMARY_HEADER
-        .iter()
-        .position(|h| *h == "std_dbeta_deg")
-        .unwrap_or(8);
-    for row in &summary.rows {
-        if row.len() != SUMMARY_HEADER.len() {
-            return Err(Error::Input(format!(
-                "{}: not a rebound output (ragged row)",
-                sp.display()
-            )));
-        }
-        let (a, b) = (row[0].clone(), row[1].clone());
-        let (af, bf) = (
-            parse_num(&a, &sp, "alpha_in_deg")?,
-            parse_num(&b, &sp, "beta_in_deg")?,
-        );
-        if !out.conditions.iter().any(|c| c.0 == a && c.1 == b) {
-            out.conditions.push((a.clone(), b.clone(), af, bf));
-        }
-        if let (Ok(m), Ok(s)) = (row[ia].parse::<f64>(), row[is].parse::<f64>()) {
-            out.dbeta.insert((a, b), (m, s));
-        }
-    }
-    type RawBins = Vec<(String, Vec<(f64, f64, f64)>)>;
-    let mut raw: BTreeMap<ConditionKey, RawBins> = BTreeMap::new();
-    for row in &pdfs.rows {
-        if row.len() != PDFS_HEADER.len() {
-            return Err(Error::Input(format!(
-                "{}: not a rebound output (ragged row)",
-                pp.display()
-            )));
-        }
-        let key = (row[0].clone(), row[1].clone());
-        let q = row[2].clone();
-        let lo = parse_num(&row[3], &pp, "bin_lo")?;
-        let hi = parse_num(&row[4], &pp, "bin_hi")?;
-        let v = parse_num(&row[5], &pp, "value")?;
-        if !out.conditions.iter().any(|c| c.0 == key.0 && c.1 == key.1) {
-            let (af, bf) = (
-                parse_num(&key.0, &pp, "alpha_in_deg")?,
-                parse_num(&key.1, &pp, "beta_in_deg")?,
-            );
-            out.conditions.push((key.0.clone(), key.1.clone(), af, bf));
-        }
-        let list = raw.entry(key).or_default();
-        match list.iter_mut().find(|e| e.0 == q) {
-            Some(e) => e.1.push((lo, hi, v)),
-            None => list.push((q, vec![(lo, hi, v)])),
-        }
-    }
-    for (k, list) in raw {
-        out.pdfs.insert(
-            k,
-            list.into_iter()
-                .filter(|(q, _)| is_pdf(q))
-                .map(|(q, b)| (q, BinnedPdf::new(b)))
-                .collect(),
-        );
-    }
-    Ok(out)
+        .map(|(k, list)| {
+            (
+                k.clone(),
+                list.iter()
+                    .filter(|(q, _)| is_pdf(q))
+                    .map(|(q, b)| (q.clone(), BinnedPdf::new(b.clone())))
+                    .collect(),
+            )
+        })
+        .collect();
+    Ok(RunOutputs {
+        conditions: tables.conditions.clone(),
+        pdfs,
+        tables,
+    })
 }
 
 /// One row of `comparison.csv`.
@@ -272,6 +219,17 @@ pub struct ComparisonRow {
     pub mean_b: f64,
     pub std_a: f64,
     pub std_b: f64,
+    pub se_a: Option<f64>,
+    pub se_b: Option<f64>,
+}
+
+impl ComparisonRow {
+    /// `(mean_b − mean_a) / √(se_a² + se_b²)`; `None` without both errors or when they vanish.
+    pub fn z(&self) -> Option<f64> {
+        let se = (self.se_a? * self.se_a? + self.se_b? * self.se_b?).sqrt();
+        let z = (self.mean_b - self.mean_a) / se;
+        (se > 0.0 && z.is_finite()).then_some(z)
+    }
 }
 
 /// What only one run has: `(α⁻, β⁻, quantity or "", "a" | "b")`.
@@ -295,8 +253,8 @@ pub fn compare_runs(a: &RunOutputs, b: &RunOutputs) -> (Vec<ComparisonRow>, Vec<
             match qb.iter().find(|e| e.0 == *q) {
                 Some((_, pb)) => {
                     let (ks, l1) = distances(pa, pb);
-                    let (mean_a, std_a) = pa.mean_std();
-                    let (mean_b, std_b) = pb.mean_std();
+                    let (mean_a, std_a, se_a) = a.moments(&key, q, pa);
+                    let (mean_b, std_b, se_b) = b.moments(&key, q, pb);
                     rows.push(ComparisonRow {
                         alpha_in: ka.clone(),
                         beta_in: kb.clone(),
@@ -307,6 +265,8 @@ pub fn compare_runs(a: &RunOutputs, b: &RunOutputs) -> (Vec<ComparisonRow>, Vec<
                         mean_b,
                         std_a,
                         std_b,
+                        se_a,
+                        se_b,
                     });
                 }
                 None => unmatched.push((ka.clone(), kb.clone(), q.clone(), "a")),
@@ -340,6 +300,9 @@ pub fn comparison_table(rows: &[ComparisonRow]) -> CsvTable {
             fmt_num(r.mean_b),
             fmt_num(r.std_a),
             fmt_num(r.std_b),
+            fmt_opt(r.se_a),
+            fmt_opt(r.se_b),
+            fmt_opt(r.z()),
         ]);
     }
     t
@@ -418,13 +381,17 @@ pub fn write_overlays(
         let mut std = Vec::new();
         for k in keys {
             for (r, label, kind) in [(a, label_a, Kind::Line), (b, label_b, Kind::Dashed)] {
-                let pts: Vec<(f64, f64, f64)> = matched
+                let pts: Vec<SweepPoint> = matched
                     .iter()
                     .filter(|c| (if along_beta { c.2 } else { c.3 }) == k)
                     .filter_map(|c| {
-                        r.dbeta
-                            .get(&(c.0.clone(), c.1.clone()))
-                            .map(|&(m, s)| (if along_beta { c.3 } else { -c.2 }, m, s))
+                        r.dbeta(&(c.0.clone(), c.1.clone()))
+                            .map(|(mean, std, se)| SweepPoint {
+                                x: if along_beta { c.3 } else { -c.2 },
+                                mean,
+                                std,
+                                se,
+                            })
                     })
                     .collect();
                 let key = if along_beta { "α⁻" } else { "β⁻" };

@@ -22,6 +22,8 @@ pub struct Series {
     pub label: String,
     pub points: Vec<(f64, f64)>,
     pub kind: Kind,
+    /// Error bars: half-width at each point (empty: none), drawn in the series' colour.
+    pub err: Vec<f64>,
 }
 
 impl Series {
@@ -30,7 +32,14 @@ impl Series {
             label: label.into(),
             points,
             kind,
+            err: Vec::new(),
         }
+    }
+
+    /// The series with error bars of half-width `err` (one per point).
+    pub fn with_err(mut self, err: Vec<f64>) -> Series {
+        self.err = err;
+        self
     }
 }
 
@@ -118,10 +127,17 @@ where
         .series
         .iter()
         .flat_map(|s| s.points.iter().map(|p| p.0));
-    let ys = plot
-        .series
-        .iter()
-        .flat_map(|s| s.points.iter().map(|p| p.1));
+    let ys = plot.series.iter().flat_map(|s| {
+        s.points.iter().enumerate().flat_map(move |(i, p)| {
+            let e = s
+                .err
+                .get(i)
+                .copied()
+                .filter(|e| e.is_finite())
+                .unwrap_or(0.0);
+            [p.1 - e, p.1 + e]
+        })
+    });
     let (x0, x1) = plot.x_range.unwrap_or_else(|| range(xs, plot.log_x));
     let (y0, y1) = range(ys, plot.log_y);
     let y0 = if !plot.log_y && y0 > 0.0 && y0 < 0.3 * y1 {
@@ -160,6 +176,18 @@ where
                             && (!plot.log_y || p.1 > 0.0)
                     })
                     .collect();
+                let bars: Vec<(f64, f64, f64)> = s
+                    .points
+                    .iter()
+                    .zip(&s.err)
+                    .filter(|(p, e)| p.0.is_finite() && p.1.is_finite() && e.is_finite())
+                    .map(|(p, e)| (p.0, p.1 - e, p.1 + e))
+                    .collect();
+                chart
+                    .draw_series(bars.into_iter().map(|(x, lo, hi)| {
+                        PathElement::new(vec![(x, lo), (x, hi)], color.stroke_width(1))
+                    }))
+                    .map_err(draw_err)?;
                 let pts = if s.kind == Kind::Step {
                     step_points(&pts)
                 } else {
@@ -256,24 +284,45 @@ fn simplify(pts: Vec<(f64, f64)>, to_pixel: impl Fn((f64, f64)) -> (i32, i32)) -
     keep.into_iter().map(|i| pts[i]).collect()
 }
 
+/// One point of a sweep curve: the swept angle, the mean and std of `β⁺ − β⁻` there, and the
+/// standard error of the mean when known.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepPoint {
+    pub x: f64,
+    pub mean: f64,
+    pub std: f64,
+    pub se: Option<f64>,
+}
+
 /// The mean and std curves of one line of a sweep (Radenkovic & Simonin 2021, Figs. 16–17):
-/// `pts` are `(x, mean, std)` for the conditions where the swept key (`α⁻` or `β⁻`, named by
-/// `key`) equals `k`. `None` when fewer than two points make no curve.
+/// `pts` for the conditions where the swept key (`α⁻` or `β⁻`, named by `key`) equals `k`.
+/// The mean carries ±2 standard errors as error bars. `None` when fewer than two points make
+/// no curve.
 pub fn sweep_series(
     label: &str,
     key: &str,
     k: f64,
-    mut pts: Vec<(f64, f64, f64)>,
+    mut pts: Vec<SweepPoint>,
     kind: Kind,
 ) -> Option<(Series, Series)> {
     if pts.len() < 2 {
         return None;
     }
-    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    pts.sort_by(|a, b| a.x.total_cmp(&b.x));
     let name = format!("{label}, {key} = {k}°");
+    let err: Vec<f64> = pts.iter().map(|p| 2.0 * p.se.unwrap_or(f64::NAN)).collect();
+    let mean = Series::new(
+        name.clone(),
+        pts.iter().map(|p| (p.x, p.mean)).collect(),
+        kind,
+    );
     Some((
-        Series::new(name.clone(), pts.iter().map(|p| (p.0, p.1)).collect(), kind),
-        Series::new(name, pts.iter().map(|p| (p.0, p.2)).collect(), kind),
+        if err.iter().any(|e| e.is_finite()) {
+            mean.with_err(err)
+        } else {
+            mean
+        },
+        Series::new(name, pts.iter().map(|p| (p.x, p.std)).collect(), kind),
     ))
 }
 
@@ -283,7 +332,7 @@ pub fn sweep_plots(mean: Vec<Series>, std: Vec<Series>, x_label: &str) -> [Plot;
         Plot {
             title: "mean transverse deviation".into(),
             x_label: x_label.into(),
-            y_label: "E(β⁺ − β⁻) (deg)".into(),
+            y_label: "E(β⁺ − β⁻) ± 2 SE (deg)".into(),
             series: mean,
             ..Default::default()
         },
@@ -295,6 +344,87 @@ pub fn sweep_plots(mean: Vec<Series>, std: Vec<Series>, x_label: &str) -> [Plot;
             ..Default::default()
         },
     ]
+}
+
+/// The panel title of an incident condition.
+pub fn condition_title(c: &crate::incidence::IncidentCondition) -> String {
+    format!(
+        "α⁻ = {}°, β⁻ = {}°",
+        crate::output::fmt_num(c.alpha_in_deg()),
+        crate::output::fmt_num(c.beta_in_deg())
+    )
+}
+
+/// Figs. 16–17 of a run (Radenkovic & Simonin 2021): mean (± 2 SE) and std of `β⁺ − β⁻`
+/// against `β⁻`, one line per `α⁻` (file `names[0]`), and against `|α⁻|`, one line per `β⁻`
+/// (file `names[1]`), written when some line has at least `min_points` conditions.
+/// Returns the file names written.
+pub fn dbeta_sweeps(
+    dir: &Path,
+    results: &[crate::tally::ConditionResult],
+    label: &str,
+    min_points: usize,
+    names: [&str; 2],
+) -> Result<Vec<String>> {
+    let mut alphas: Vec<f64> = results
+        .iter()
+        .map(|r| r.condition().alpha_in_deg())
+        .collect();
+    let mut betas: Vec<f64> = results
+        .iter()
+        .map(|r| r.condition().beta_in_deg())
+        .collect();
+    for v in [&mut alphas, &mut betas] {
+        v.sort_by(|a, b| a.total_cmp(b));
+        v.dedup();
+    }
+    let mut written = Vec::new();
+    for (along_beta, keys, name, x_label) in [
+        (true, &alphas, names[0], "β⁻ (deg)"),
+        (false, &betas, names[1], "|α⁻| (deg)"),
+    ] {
+        let (mut mean, mut std) = (Vec::new(), Vec::new());
+        for &k in keys.iter() {
+            let pts: Vec<SweepPoint> = results
+                .iter()
+                .filter(|r| {
+                    let c = r.condition();
+                    (if along_beta {
+                        c.alpha_in_deg()
+                    } else {
+                        c.beta_in_deg()
+                    }) == k
+                })
+                .filter_map(|r| {
+                    let c = r.condition();
+                    let e = r.estimate(crate::tally::Quantity::Dbeta)?;
+                    Some(SweepPoint {
+                        x: if along_beta {
+                            c.beta_in_deg()
+                        } else {
+                            -c.alpha_in_deg()
+                        },
+                        mean: e.mean,
+                        std: e.std,
+                        se: Some(e.se),
+                    })
+                })
+                .collect();
+            if pts.len() < min_points {
+                continue;
+            }
+            let key = if along_beta { "α⁻" } else { "β⁻" };
+            if let Some((m, sd)) = sweep_series(label, key, k, pts, Kind::Line) {
+                mean.push(m);
+                std.push(sd);
+            }
+        }
+        if !mean.is_empty() {
+            plot_grid_svg(&dir.join(name), &sweep_plots(mean, std, x_label), 2)?;
+            written.push(name.to_string());
+        }
+    }
+    Ok(written)
 }
 
 /// `(bin centre, value)` points of a PDF, for a `Step` series.
@@ -329,16 +459,20 @@ mod tests {
 
     #[test]
     fn sweep_series_sorts_and_needs_two_points() {
-        assert!(sweep_series("DS", "α⁻", -15.0, vec![(10.0, 1.0, 2.0)], Kind::Line).is_none());
+        let p = |x, mean, std, se| SweepPoint { x, mean, std, se };
+        assert!(
+            sweep_series("DS", "α⁻", -15.0, vec![p(10.0, 1.0, 2.0, None)], Kind::Line).is_none()
+        );
         let (m, s) = sweep_series(
             "DS",
             "α⁻",
             -15.0,
-            vec![(20.0, 1.0, 3.0), (10.0, 0.5, 2.0)],
+            vec![p(20.0, 1.0, 3.0, Some(0.1)), p(10.0, 0.5, 2.0, Some(0.2))],
             Kind::Line,
         )
         .unwrap();
         assert_eq!(m.points, vec![(10.0, 0.5), (20.0, 1.0)]);
+        assert_eq!(m.err, vec![0.4, 0.2]);
         assert_eq!(s.points, vec![(10.0, 2.0), (20.0, 3.0)]);
         assert_eq!(m.label, "DS, α⁻ = -15°");
     }

@@ -1,10 +1,40 @@
 //! Incident particles: the horizontal-speed law and the incident velocity, shared by the
 //! deterministic tracker and the stochastic model so both shoot the same particles.
 
-use crate::case::SpeedLaw;
 use nalgebra::Vector3;
 use rand::Rng;
 use rand_distr::{Distribution, Normal};
+
+/// Horizontal incident speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedLaw {
+    pub mean_m_s: f64,
+    pub std_m_s: f64,
+}
+
+/// One incident condition `(α⁻, β⁻)` in radians.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IncidentCondition {
+    pub alpha_in: f64,
+    pub beta_in: f64,
+}
+
+impl IncidentCondition {
+    /// The condition of angles given in degrees.
+    pub fn from_degrees(alpha_in_deg: f64, beta_in_deg: f64) -> IncidentCondition {
+        IncidentCondition {
+            alpha_in: alpha_in_deg.to_radians(),
+            beta_in: beta_in_deg.to_radians(),
+        }
+    }
+
+    pub fn alpha_in_deg(&self) -> f64 {
+        self.alpha_in.to_degrees()
+    }
+    pub fn beta_in_deg(&self) -> f64 {
+        self.beta_in.to_degrees()
+    }
+}
 
 /// Draws the horizontal speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4);
 /// non-positive draws are redrawn (up to 64 times, then the mean is used).

@@ -19,6 +19,7 @@ pub mod output;
 pub mod progress;
 pub mod report;
 pub mod rng;
+pub mod runner;
 pub mod stochastic;
 pub mod surface;
 pub mod tally;

@@ -4,10 +4,14 @@
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::IsTerminal;
 
+/// Whether progress should be drawn: stderr is a terminal and `CI` is not set.
+fn visible() -> bool {
+    std::io::stderr().is_terminal() && std::env::var_os("CI").is_none()
+}
+
 /// A bar of `len` steps labelled `what`, or a hidden bar when not on a terminal.
 pub fn bar(len: u64, what: &str) -> ProgressBar {
-    let visible = std::io::stderr().is_terminal() && std::env::var_os("CI").is_none();
-    if !visible {
+    if !visible() {
         return ProgressBar::hidden();
     }
     let pb = ProgressBar::new(len);
@@ -18,4 +22,60 @@ pub fn bar(len: u64, what: &str) -> ProgressBar {
     );
     pb.set_message(what.to_string());
     pb
+}
+
+/// Progress of a Monte Carlo run counted in particles: rate, ETA and, under a target
+/// standard error, the current error.
+pub struct Progress {
+    bar: ProgressBar,
+}
+
+impl Progress {
+    /// A bar over `total` particles, labelled `label` (hidden when not on a terminal).
+    pub fn particles(total: u64, label: &str) -> Progress {
+        let bar = if visible() {
+            let pb = ProgressBar::new(total);
+            pb.set_style(
+                ProgressStyle::with_template(
+                    "{prefix} [{bar:30}] {human_pos}/{human_len} particles, {per_sec}, ETA {eta} {msg}",
+                )
+                .unwrap_or_else(|_| ProgressStyle::default_bar())
+                .progress_chars("=> "),
+            );
+            pb.set_prefix(label.to_string());
+            pb
+        } else {
+            ProgressBar::hidden()
+        };
+        Progress { bar }
+    }
+
+    /// A progress that draws nothing (tests, library callers).
+    pub fn hidden() -> Progress {
+        Progress {
+            bar: ProgressBar::hidden(),
+        }
+    }
+
+    /// `n` more particles done.
+    pub fn advance(&self, n: u64) {
+        self.bar.inc(n);
+    }
+
+    /// `n` planned particles that will not run (a condition reached its target).
+    pub fn skip(&self, n: u64) {
+        if let Some(len) = self.bar.length() {
+            self.bar.set_length(len.saturating_sub(n));
+        }
+    }
+
+    /// A short note after the bar (e.g. the current standard error).
+    pub fn note(&self, msg: &str) {
+        self.bar.set_message(msg.to_string());
+    }
+
+    /// Removes the bar.
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
 }

@@ -6,8 +6,8 @@ use deterministic_support::*;
 use rebound::case::SpeedLaw;
 use rebound::collision::{CollisionLaw, ShParams};
 use rebound::deterministic::{ConditionRun, Tracker};
+use rebound::output::schema::tables;
 use rebound::surface::HeightField;
-use rebound::tally::tables;
 use std::time::Instant;
 
 fn laws() -> [CollisionLaw; 2] {
@@ -23,20 +23,24 @@ const GS_SPEED: SpeedLaw = SpeedLaw {
 };
 
 /// Every summary cell and PDF value of a condition is a finite number.
-fn assert_finite(r: &ConditionRun, dv: &rebound::wall::Deviations, what: &str) {
+fn assert_finite(r: &ConditionRun, what: &str) {
     assert_eq!(r.lost.total(), 0, "{what}: {}", r.lost.describe());
-    let t = r.tally(dv, 2.0, 1.0);
-    for (k, cell) in t.summary.iter().enumerate() {
+    let t = r.tally(1.0);
+    let [summary, _, _] = tables(std::slice::from_ref(&t));
+    for (k, cell) in summary.rows[0].iter().enumerate() {
         let v: f64 = cell
             .parse()
             .unwrap_or_else(|_| panic!("{what}: summary cell {k} = {cell:?}"));
         assert!(v.is_finite(), "{what}: summary cell {k}");
     }
-    for (q, bins) in &t.pdfs {
-        assert!(!bins.is_empty(), "{what}: empty {q}");
+    for pdf in &t.pdfs {
+        let q = pdf.quantity;
+        assert!(!pdf.bins.is_empty(), "{what}: empty {q:?}");
         assert!(
-            bins.iter().all(|b| b.value.is_finite() && b.lo.is_finite()),
-            "{what}: {q}"
+            pdf.bins
+                .iter()
+                .all(|b| b.value.is_finite() && b.lo.is_finite()),
+            "{what}: {q:?}"
         );
     }
 }
@@ -54,7 +58,7 @@ fn grazing_and_normal_incidence_on_a_rough_wall() {
             let t0 = Instant::now();
             let r = run(&t, &law, &dv, a, b, k as u64, 5000, GS_SPEED);
             assert!(t0.elapsed().as_secs_f64() < 20.0, "a {a}: too slow");
-            assert_finite(&r, &dv, &format!("{law:?} a {a} b {b}"));
+            assert_finite(&r, &format!("{law:?} a {a} b {b}"));
             if matches!(law, CollisionLaw::Elastic) {
                 assert!(r
                     .outcomes
@@ -79,7 +83,7 @@ fn flat_wall_is_a_mirror_for_the_elastic_law() {
     for law in laws() {
         for (k, a) in [-0.01, -12.5, -90.0].into_iter().enumerate() {
             let r = run(&t, &law, &dv, a, 30.0, k as u64, 1000, GS_SPEED);
-            assert_finite(&r, &dv, &format!("flat {law:?} a {a}"));
+            assert_finite(&r, &format!("flat {law:?} a {a}"));
             for o in &r.outcomes {
                 assert_eq!(o.collisions, Some(1));
                 if matches!(law, CollisionLaw::Elastic) {
@@ -110,7 +114,7 @@ fn two_d_roughness_at_the_hard_angles() {
         .enumerate()
         {
             let r = run(&t, &law, &dv, a, b, k as u64, 5000, GS_SPEED);
-            assert_finite(&r, &dv, &format!("2-D {law:?} a {a} b {b}"));
+            assert_finite(&r, &format!("2-D {law:?} a {a} b {b}"));
         }
     }
 }
@@ -140,11 +144,11 @@ fn outputs_are_identical_for_any_thread_count() {
                         3000,
                         GS_SPEED,
                     )
-                    .tally(&dv, 2.0, 1.0)
+                    .tally(1.0)
                 })
                 .collect();
-            let (s, p) = tables(&results);
-            (s.to_bytes(), p.to_bytes())
+            let [s, p, m] = tables(&results);
+            (s.to_bytes(), p.to_bytes(), m.to_bytes())
         })
     };
     let one = bytes(1);

@@ -6,6 +6,7 @@ mod deterministic_support;
 use deterministic_support::*;
 use rebound::collision::CollisionLaw;
 use rebound::deterministic::Tracker;
+use rebound::tally::Quantity;
 
 /// Paper-scale numbers (run with `--release -- --ignored --nocapture`): both walls of
 /// Sec. 3 on the surfaces `deterministic` chooses, 10⁵ particles per condition.
@@ -33,12 +34,13 @@ fn paper_scale_sec3() {
                 let r = run(&t, &CollisionLaw::Elastic, &dv, a, b, k, 100_000, UNIT);
                 let el = t0.elapsed().as_secs_f64();
                 k += 1;
-                let tal = r.tally(&dv, 2.0, 1.0);
-                let g = |q: &str| tal.stat(q).unwrap();
+                let tal = r.tally(1.0);
+                let g = |q: Quantity| *tal.estimate(q).unwrap();
                 eprintln!(
                     "({dxi},{dze}) a {a:6} b {b:4}: α⁺ {:.2}±{:.2} dβ {:+.3} (sd {:.2}) dβ1 {:+.3} (sd {:.2}) sdξ {:.2} sdζ {:.2} p1 {} lost {} {:.0}/s",
-                    g("alpha_out").0, g("alpha_out").1, g("dbeta").0, g("dbeta").1, g("dbeta_first").0, g("dbeta_first").1,
-                    g("xi_first").1, g("zeta_first").1, tal.summary[15], r.lost.total(), 1e5 / el
+                    g(Quantity::AlphaOut).mean, g(Quantity::AlphaOut).std, g(Quantity::Dbeta).mean, g(Quantity::Dbeta).std,
+                    g(Quantity::DbetaFirst).mean, g(Quantity::DbetaFirst).std, g(Quantity::XiFirst).std, g(Quantity::ZetaFirst).std,
+                    tal.summary.p_single.unwrap().value, r.lost.total(), 1e5 / el
                 );
             }
         }

@@ -23,9 +23,9 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         .unwrap();
     assert!(status.success(), "reproduce-all.sh failed");
     let o = out.path();
-    let summary = rebound::tally::SUMMARY_HEADER.join(",");
-    let pdfs = rebound::tally::PDFS_HEADER.join(",");
-    let comparison = "alpha_in_deg,beta_in_deg,quantity,ks,l1,mean_a,mean_b,std_a,std_b";
+    let summary = rebound::output::schema::SUMMARY_HEADER.join(",");
+    let pdfs = rebound::output::schema::PDFS_HEADER.join(",");
+    let comparison = rebound::compare::COMPARISON_HEADER.join(",");
     let mut expect: Vec<(String, String)> = vec![
         ("radenkovic2021/table1/surface_summary.csv".into(), "nodes,length_um,spacing_um,rms_height_um,target_rms_height_um,rms_slope_x,target_rms_slope_x,rms_slope_z,target_rms_slope_z,delta_xi_deg,target_delta_xi_deg,delta_zeta_deg,target_delta_zeta_deg,max_height_um".into()),
         ("radenkovic2021/table1/normal_angles.csv".into(), "beta_star_deg,delta_xi_star_deg,delta_zeta_star_deg,rho_xi_zeta,rho_xi_eta,rho_eta_zeta,model_delta_xi_star_deg,model_delta_zeta_star_deg,model_rho_xi_zeta".into()),
@@ -53,7 +53,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         }
         expect.push((
             format!("radenkovic2021/{scene}/compare/comparison.csv"),
-            comparison.into(),
+            comparison.clone(),
         ));
     }
     let force = "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s";

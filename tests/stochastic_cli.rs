@@ -77,7 +77,7 @@ fn default_run_has_the_shared_schema_model_curve_and_figures() {
     let summary = read(&out.join("summary.csv"));
     let mut lines = summary.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    assert_eq!(header, rebound::tally::SUMMARY_HEADER.to_vec());
+    assert_eq!(header, rebound::output::schema::SUMMARY_HEADER.to_vec());
     let rows: Vec<Vec<String>> = lines
         .map(|l| l.split(',').map(String::from).collect())
         .collect();
@@ -103,14 +103,19 @@ fn default_run_has_the_shared_schema_model_curve_and_figures() {
         assert!(!r.iter().any(|c| c.contains("NaN") || c.contains("inf")));
     }
     let pdfs = read(&out.join("pdfs.csv"));
-    assert!(pdfs.starts_with("alpha_in_deg,beta_in_deg,quantity,bin_lo,bin_hi,value\n"));
+    assert!(pdfs.starts_with("alpha_in_deg,beta_in_deg,quantity,bin_lo,bin_hi,value,se\n"));
     // gamma_model integrates to ~1 (per degree, on 1° bins) for each condition.
     for (a, b) in [("-5", "0"), ("-25", "60")] {
         let total: f64 = pdfs
             .lines()
             .filter(|l| l.starts_with(&format!("{a},{b},gamma_model,")))
             .map(|l| {
-                let f: Vec<f64> = l.split(',').skip(3).map(|x| x.parse().unwrap()).collect();
+                let f: Vec<f64> = l
+                    .split(',')
+                    .skip(3)
+                    .take(3)
+                    .map(|x| x.parse().unwrap())
+                    .collect();
                 f[2] * (f[1] - f[0])
             })
             .sum();

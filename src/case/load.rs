@@ -32,16 +32,25 @@ pub fn resolve_path(path: &Path) -> Result<PathBuf> {
 
 /// Loads the case at `path`, or parses `default_toml` (the command's built-in case) when absent.
 pub fn load(path: Option<&Path>, default_toml: &str) -> Result<Case> {
+    let (text, origin) = load_text(path, default_toml)?;
+    parse(&text, &origin)
+}
+
+/// The text of the case at `path` (or `default_toml`) and where it came from.
+pub fn load_text(path: Option<&Path>, default_toml: &str) -> Result<(String, String)> {
     match path {
         Some(p) => {
             let resolved = resolve_path(p)?;
             let text = std::fs::read_to_string(&resolved)
                 .map_err(|e| Error::Input(format!("case file `{}`: {e}", resolved.display())))?;
-            parse(&text, &resolved.display().to_string())
+            Ok((text, resolved.display().to_string()))
         }
-        None => parse(default_toml, "<built-in case>"),
+        None => Ok((default_toml.to_string(), BUILT_IN.to_string())),
     }
 }
+
+/// How the built-in case of a command is named in messages.
+pub const BUILT_IN: &str = "<built-in case>";
 
 /// Parses case text; `origin` names it in errors.
 pub fn parse(text: &str, origin: &str) -> Result<Case> {

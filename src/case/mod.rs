@@ -5,7 +5,7 @@ pub mod load;
 pub mod resolve;
 pub mod schema;
 
-pub use load::{load, resolve_path, DEFAULT_SEED};
+pub use load::{load, load_text, parse, resolve_path, DEFAULT_SEED};
 pub use resolve::{IncidentCondition, Scene, SpeedLaw, SurfaceSpec, WallSource};
 pub use schema::*;
 

@@ -5,6 +5,7 @@ use super::schema::*;
 use super::warn;
 use crate::collision::{CollisionLaw, ShParams};
 use crate::error::{Error, Result};
+pub use crate::incidence::{IncidentCondition, SpeedLaw};
 use crate::wall::{self, Deviations};
 
 /// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
@@ -59,36 +60,16 @@ impl WallSource {
     }
 }
 
-/// Horizontal incident speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SpeedLaw {
-    pub mean_m_s: f64,
-    pub std_m_s: f64,
-}
-
-/// One incident condition `(α⁻, β⁻)` in radians.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct IncidentCondition {
-    pub alpha_in: f64,
-    pub beta_in: f64,
-}
-
-impl IncidentCondition {
-    pub fn alpha_in_deg(&self) -> f64 {
-        self.alpha_in.to_degrees()
-    }
-    pub fn beta_in_deg(&self) -> f64 {
-        self.beta_in.to_degrees()
-    }
-}
-
 /// Everything `deterministic` and `stochastic` share: one scene, two models.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     pub wall: WallSource,
     pub conditions: Vec<IncidentCondition>,
     pub speed: SpeedLaw,
+    /// Histories per condition (the cap when a target standard error is set).
     pub count: usize,
+    /// Target standard error (degrees) of mean `α⁺` and mean `β⁺ − β⁻`.
+    pub target_se_deg: Option<f64>,
     pub diameter_m: f64,
     pub law: CollisionLaw,
     pub bin_width_deg: f64,
@@ -99,7 +80,7 @@ impl Scene {
     /// Applies `--particles N` (overrides `[particles] count`).
     pub fn set_count(&mut self, particles: Option<u64>) -> Result<()> {
         if let Some(n) = particles {
-            if n == 0 || n > 100_000_000 {
+            if n == 0 || n > MAX_PARTICLES as u64 {
                 return Err(Error::invalid(
                     "--particles",
                     n,
@@ -110,6 +91,14 @@ impl Scene {
         }
         Ok(())
     }
+
+    /// Applies `--target-se DEG` (overrides `[particles] target_se_deg`).
+    pub fn set_target_se(&mut self, target: Option<f64>) -> Result<()> {
+        if let Some(t) = target {
+            self.target_se_deg = Some(target_se("--target-se", t)?);
+        }
+        Ok(())
+    }
 }
 
 fn positive(key: &str, v: f64) -> Result<f64> {
@@ -117,6 +106,24 @@ fn positive(key: &str, v: f64) -> Result<f64> {
         Ok(v)
     } else {
         Err(Error::invalid(key, v, "a positive number"))
+    }
+}
+
+/// Narrowest PDF bin (degrees).
+pub const MIN_BIN_WIDTH_DEG: f64 = 0.01;
+
+/// Largest particle count per condition the schema admits.
+pub const MAX_PARTICLES: i64 = 100_000_000;
+
+fn target_se(key: &str, v: f64) -> Result<f64> {
+    if v > 0.0 && v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Error::invalid(
+            key,
+            v,
+            "a positive standard error in degrees",
+        ))
     }
 }
 
@@ -382,8 +389,17 @@ impl Case {
             ));
         }
         let p = self.particles.clone().unwrap_or_default();
-        let count = p.count.unwrap_or(10_000);
-        if !(1..=100_000_000).contains(&count) {
+        let target = p
+            .target_se_deg
+            .map(|t| target_se("particles.target_se_deg", t))
+            .transpose()?;
+        // Under a target, `count` is only the cap: without one, the schema's largest.
+        let count = p.count.unwrap_or(if target.is_some() {
+            MAX_PARTICLES
+        } else {
+            10_000
+        });
+        if !(1..=MAX_PARTICLES).contains(&count) {
             return Err(Error::invalid(
                 "particles.count",
                 count,
@@ -396,11 +412,12 @@ impl Case {
             .as_ref()
             .and_then(|o| o.bin_width_deg)
             .unwrap_or(1.0);
-        if !(bin > 0.0 && bin <= 10.0) {
+        // At most 36 000 bins over the widest range (±180°): a bounded tally per block.
+        if !(MIN_BIN_WIDTH_DEG..=10.0).contains(&bin) {
             return Err(Error::invalid(
                 "output.bin_width_deg",
                 bin,
-                "a width in (0, 10] degrees",
+                &format!("a width in [{MIN_BIN_WIDTH_DEG}, 10] degrees"),
             ));
         }
         let psi = self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0);
@@ -413,6 +430,7 @@ impl Case {
                 std_m_s: std,
             },
             count: count as usize,
+            target_se_deg: target,
             diameter_m: diameter_um * 1e-6,
             law: self.collision_law()?,
             bin_width_deg: bin,

@@ -80,12 +80,17 @@ pub struct IncidenceSection {
     pub speed_std_m_s: Option<f64>,
 }
 
-/// `[particles]`: how many histories per condition, and the sphere diameter.
+/// `[particles]`: how many histories per condition (or a target standard error), and
+/// the sphere diameter.
 #[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct ParticlesSection {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub count: Option<i64>,
+    /// Run whole blocks until the standard errors of mean `α⁺` and mean `β⁺ − β⁻` are at
+    /// most this (degrees), or `count` is reached.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_se_deg: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub diameter_um: Option<f64>,
 }

@@ -6,13 +6,18 @@ use crate::case::{warn, Case, IncidentCondition, Scene, WallSource};
 use crate::cli::DeterministicArgs;
 use crate::commands::Context;
 use crate::deterministic::scene::{choose_surface, SceneOptions, SurfaceChoice};
-use crate::deterministic::{plots, run_condition, Tracker, DEFAULT_MAX_COLLISIONS};
+use crate::deterministic::{
+    fill_block, plots, tally_spec, LostCounts, ModelSetup, Tracker, DEFAULT_MAX_COLLISIONS,
+};
 use crate::error::{Error, Result};
-use crate::output::prepare_out_dir;
+use crate::output::schema::write_tables;
+use crate::output::{prepare_out_dir, Manifest};
+use crate::runner::{self, TallyOverrides};
 use crate::surface::generate;
 use crate::surface::heights_io::read_heights;
 use crate::surface::HeightField;
-use crate::tally::{write_summary_and_pdfs, ConditionResult};
+use crate::tally::engine::ConditionStats;
+use crate::tally::{ConditionResult, ConditionTally, TallySpec, BLOCK_SIZE};
 use crate::wall::Deviations;
 use std::path::Path;
 
@@ -185,7 +190,6 @@ fn surface_table(
     field: &HeightField,
     source: &str,
     opt: &SceneOptions,
-    gen_s: f64,
 ) -> toml::Value {
     let mut t = toml::Table::new();
     t.insert("source".into(), source.into());
@@ -229,35 +233,86 @@ fn surface_table(
         "measured_delta_zeta_deg".into(),
         f(round(m.delta_zeta.to_degrees(), 4)),
     );
-    t.insert("generation_s".into(), f(round(gen_s, 3)));
     toml::Value::Table(t)
+}
+
+/// What a deterministic run resolves from its case before the surface is built.
+pub struct Prepared {
+    pub scene: Scene,
+    pub options: DeterministicOptions,
+    pub setup: ModelSetup,
+    pub specs: Vec<TallySpec>,
+    /// Where the surface comes from (`None`: a height file).
+    pub surface: Option<SurfacePlan>,
+    /// Manifest entries that follow from the case alone (notes).
+    pub notes: toml::Table,
+}
+
+/// Resolves the scene, the tracker options, the surface plan and what to tally.
+/// `surface_file`: a height file given with `--surface` (replaces the generated surface;
+/// the case's wall then only labels the deviations).
+pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> Result<Prepared> {
+    let mut scene = case.scene()?;
+    scene.set_count(o.particles)?;
+    scene.set_target_se(o.target_se)?;
+    let options = deterministic_options(case)?;
+    let surface = match surface_file {
+        Some(_) => None,
+        None => Some(SurfacePlan::for_scene(&scene, &options.scene)?),
+    };
+    let dev = scene.wall.deviations();
+    let mut notes = toml::Table::new();
+    if scene.conditions.iter().any(|c| c.alpha_in_deg() == -90.0) {
+        notes.insert(
+            "notes".into(),
+            toml::Value::String("normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (physics notes §1)".into()),
+        );
+    }
+    let setup = ModelSetup {
+        law: scene.law,
+        diameter_m: scene.diameter_m,
+        speed: scene.speed,
+        wall: dev,
+        psi: scene.psi,
+    };
+    let specs = scene
+        .conditions
+        .iter()
+        .map(|c| tally_spec(&dev, *c, scene.bin_width_deg))
+        .collect();
+    Ok(Prepared {
+        scene,
+        options,
+        setup,
+        specs,
+        surface,
+        notes,
+    })
 }
 
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<()> {
-    let mut ctx = Context::new(&args.common, "deterministic", DEFAULT_CASE)?;
-    let mut scene = ctx.case.scene()?;
-    scene.set_count(args.particles)?;
-    let opt = deterministic_options(&ctx.case)?;
-    // A saved surface replaces the generated one; the case's wall then only labels the
-    // deviations (summary columns, Δγ of the Fig. 12 model).
-    let plan = match args.surface {
-        Some(_) => None,
-        None => Some(SurfacePlan::for_scene(&scene, &opt.scene)?),
-    };
-    let dev = scene.wall.deviations();
-    for c in &scene.conditions {
-        if c.alpha_in_deg() == -90.0 {
-            ctx.manifest.set(
-                "notes",
-                toml::Value::String("normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (physics notes §1)".into()),
-            );
-        }
-    }
+    let ctx = Context::new(&args.common, "deterministic", DEFAULT_CASE)?;
+    let o = args.tally.overrides();
+    let mut p = prepare(&ctx.case, &o, args.surface.as_deref())?;
+    let plan = runner::plan(
+        p.specs.clone(),
+        p.scene.count as u64,
+        p.scene.target_se_deg,
+        o.shard,
+    )?;
+    let identity = runner::identity(
+        "deterministic",
+        &ctx.case_text,
+        &ctx.case_origin,
+        ctx.seed,
+        &o,
+        args.surface.as_deref(),
+    )?;
     // Everything the user gave is checked; now the surface (the only slow input step).
     let t0 = std::time::Instant::now();
-    let (field, source) = match (&args.surface, &plan) {
-        (Some(p), _) => (read_surface(p)?, "file"),
+    let (field, source) = match (&args.surface, &p.surface) {
+        (Some(path), _) => (read_surface(path)?, "file"),
         (None, Some(plan)) => (
             generate_surface(plan, ctx.seed)?,
             match plan {
@@ -268,106 +323,163 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
         (None, None) => return Err(Error::Io("internal: no surface plan".into())),
     };
     let gen_s = t0.elapsed().as_secs_f64();
-    let tracker = Tracker::new(&field, opt.max_collisions).map_err(|e| {
+    let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| {
         Error::Input(match &args.surface {
-            Some(p) => format!("--surface `{}`: {e}", p.display()),
+            Some(path) => format!("--surface `{}`: {e}", path.display()),
             None => e,
         })
     })?;
-    ctx.manifest.set(
-        "surface_choice",
+    p.notes.insert(
+        "surface_choice".into(),
         surface_table(
-            plan.as_ref(),
+            p.surface.as_ref(),
             args.surface.as_deref(),
             &field,
             source,
-            &opt.scene,
-            gen_s,
+            &p.options.scene,
         ),
     );
-
-    let mut results: Vec<ConditionResult> = Vec::new();
-    let mut timings = Vec::new();
-    let bar = crate::progress::bar(scene.conditions.len() as u64, "deterministic");
-    for (k, cond) in scene.conditions.iter().enumerate() {
-        let t = std::time::Instant::now();
-        let run = run_condition(
+    let t1 = std::time::Instant::now();
+    let seed = ctx.seed;
+    let done = runner::execute(&plan, "deterministic", |k, start, end, block| {
+        fill_block(
             &tracker,
-            &scene.law,
-            scene.diameter_m,
-            *cond,
+            &p.setup,
+            &p.scene.conditions[k],
             k as u64,
-            scene.count,
-            ctx.seed,
-            &scene.speed,
-        );
-        let secs = t.elapsed().as_secs_f64();
-        if run.lost.total() > 0 {
+            seed,
+            (start, end),
+            block,
+        )
+    });
+    let seconds = t1.elapsed().as_secs_f64();
+    let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
+    if let Some(shard) = plan.shard {
+        let dir = ctx.shard_dir(&args.common, shard);
+        runner::write_partial(&dir, &identity, &plan, p.notes, tallies, seconds + gen_s)?;
+        return Ok(());
+    }
+    let mut manifest = ctx.manifest;
+    manifest.set_run("surface_s", f(round(gen_s, 3)));
+    finish(&ctx.out_dir, manifest, &p, &tallies, Some(&stats), seconds)
+}
+
+/// Writes the outputs of a run (or of merged shards) into `dir`: `summary.csv`,
+/// `pdfs.csv`, `moments.csv`, the figures and `run.toml`. `stats` are the per-condition
+/// run statistics of a one-process run (`None` after a merge).
+pub fn finish(
+    dir: &Path,
+    mut manifest: Manifest,
+    p: &Prepared,
+    tallies: &[ConditionTally],
+    stats: Option<&[ConditionStats]>,
+    seconds: f64,
+) -> Result<()> {
+    let mut results = Vec::with_capacity(tallies.len());
+    let mut rows = Vec::with_capacity(tallies.len());
+    for (k, t) in tallies.iter().enumerate() {
+        let cond = t.spec.condition;
+        let lost = LostCounts::from_tally(&t.counters.lost);
+        if lost.total() > 0 {
             warn(&format!(
                 "α⁻ = {}°, β⁻ = {}°: {} of {} particles lost ({})",
                 cond.alpha_in_deg(),
                 cond.beta_in_deg(),
-                run.lost.total(),
-                scene.count,
-                run.lost.describe()
+                lost.total(),
+                t.counters.particles,
+                lost.describe()
             ));
         }
-        if run.outcomes.is_empty() {
+        if t.followed() == 0 {
             return Err(Error::Io(format!(
                 "α⁻ = {}°, β⁻ = {}°: no particle could be followed ({})",
                 cond.alpha_in_deg(),
                 cond.beta_in_deg(),
-                run.lost.describe()
+                lost.describe()
             )));
         }
-        timings.push(timing_row(cond, secs, scene.count, &run.lost));
-        results.push(run.tally(&dev, scene.psi, scene.bin_width_deg));
-        bar.inc(1);
+        let r = t.result();
+        rows.push(condition_row(
+            &cond,
+            t,
+            &lost,
+            stats.and_then(|s| s.get(k)),
+            &r,
+        ));
+        results.push(r);
     }
-    bar.finish_and_clear();
-
-    prepare_out_dir(&ctx.out_dir)?;
-    write_summary_and_pdfs(&ctx.out_dir, &results)?;
-    let figs = plots::write_figures(&ctx.out_dir, &results, "DS")?;
-    ctx.manifest.set("conditions", toml::Value::Array(timings));
-    ctx.manifest.set(
+    prepare_out_dir(dir)?;
+    write_tables(dir, &results)?;
+    let figs = plots::write_figures(dir, &results, "DS")?;
+    for (k, v) in &p.notes {
+        manifest.set(k, v.clone());
+    }
+    manifest.set("conditions", toml::Value::Array(rows));
+    manifest.set(
         "figures",
         toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
     );
-    ctx.manifest.set_run(
+    manifest.set_run(
         "max_collisions",
-        toml::Value::Integer(opt.max_collisions as i64),
+        toml::Value::Integer(p.options.max_collisions as i64),
     );
-    ctx.manifest.set_run(
+    manifest.set_run(
         "particles_per_condition",
-        toml::Value::Integer(scene.count as i64),
+        toml::Value::Integer(p.scene.count as i64),
     );
-    ctx.manifest.write(&ctx.out_dir)?;
+    if let Some(t) = p.scene.target_se_deg {
+        manifest.set_run("target_se_deg", f(t));
+    }
+    manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
+    manifest.set_run("compute_s", f(round(seconds, 4)));
+    let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();
+    if stats.is_some() && seconds > 0.0 {
+        manifest.set_run("particles_per_s", f((total as f64 / seconds).round()));
+    }
+    manifest.write(dir)?;
     Ok(())
 }
 
-fn timing_row(
+fn condition_row(
     cond: &IncidentCondition,
-    secs: f64,
-    count: usize,
-    lost: &crate::deterministic::LostCounts,
+    t: &ConditionTally,
+    lost: &LostCounts,
+    stats: Option<&ConditionStats>,
+    r: &ConditionResult,
 ) -> toml::Value {
-    let mut t = toml::Table::new();
-    t.insert("alpha_in_deg".into(), f(round(cond.alpha_in_deg(), 9)));
-    t.insert("beta_in_deg".into(), f(round(cond.beta_in_deg(), 9)));
-    t.insert("seconds".into(), f(round(secs, 4)));
-    t.insert(
-        "particles_per_s".into(),
-        f(if secs > 0.0 {
-            (count as f64 / secs).round()
-        } else {
-            0.0
-        }),
+    let mut row = toml::Table::new();
+    row.insert("alpha_in_deg".into(), f(round(cond.alpha_in_deg(), 9)));
+    row.insert("beta_in_deg".into(), f(round(cond.beta_in_deg(), 9)));
+    row.insert(
+        "histories".into(),
+        toml::Value::Integer(t.counters.particles as i64),
     );
-    t.insert("lost".into(), toml::Value::Integer(lost.total() as i64));
-    t.insert(
+    row.insert(
+        "blocks".into(),
+        toml::Value::Integer(t.blocks().len() as i64),
+    );
+    if let Some(s) = stats {
+        row.insert("worker_seconds".into(), f(round(s.worker_seconds, 4)));
+        row.insert(
+            "particles_per_worker_s".into(),
+            f(if s.worker_seconds > 0.0 {
+                (t.counters.particles as f64 / s.worker_seconds).round()
+            } else {
+                0.0
+            }),
+        );
+        if let Some(reached) = s.target_reached {
+            row.insert("target_reached".into(), toml::Value::Boolean(reached));
+        }
+    }
+    if let (Some(a), Some(d)) = (r.summary.alpha_out, r.summary.dbeta) {
+        row.insert("se_mean_alpha_out_deg".into(), f(a.se));
+        row.insert("se_mean_dbeta_deg".into(), f(d.se));
+    }
+    row.insert("lost".into(), toml::Value::Integer(lost.total() as i64));
+    row.insert(
         "collision_cap_hits".into(),
         toml::Value::Integer(lost.collision_cap as i64),
     );
-    toml::Value::Table(t)
+    toml::Value::Table(row)
 }

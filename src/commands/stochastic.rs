@@ -2,14 +2,18 @@
 //! (Sec. 3.6, Fig. 13; notes §3) for every incident condition of the case. No surface
 //! is ever built: a case with surface parameters is converted to deviations (Eq. 15).
 
-use crate::case::{warn, WallSource};
+use crate::case::{warn, Case, Scene, WallSource};
 use crate::cli::StochasticArgs;
 use crate::commands::Context;
 use crate::error::Result;
-use crate::output::prepare_out_dir;
+use crate::output::schema::write_tables;
+use crate::output::{prepare_out_dir, Manifest};
+use crate::runner::{self, TallyOverrides};
 use crate::stochastic::plots::write_figures;
-use crate::stochastic::simulate::{gamma_model_curve, run_condition, ConditionRun, ModelSetup};
-use crate::tally::{write_summary_and_pdfs, ConditionExtras, ConditionResult};
+use crate::stochastic::simulate::{fill_block, gamma_model_curve, tally_spec, ModelSetup};
+use crate::tally::engine::ConditionStats;
+use crate::tally::{ConditionTally, TallySpec, BLOCK_SIZE};
+use std::path::Path;
 
 /// The built-in case: the Sec. 4 scene (glass beads, D = 500 µm, on steel with the
 /// `glass-steel` Sommerfeld–Huber preset, Δξ = 3.8°, Δζ = 7.5°, horizontal speed
@@ -52,12 +56,22 @@ fn round(x: f64, digits: i32) -> f64 {
     (x * p).round() / p
 }
 
-/// Runs the subcommand.
-pub fn run(args: &StochasticArgs) -> Result<()> {
-    let mut ctx = Context::new(&args.common, "stochastic", DEFAULT_CASE)?;
-    let mut scene = ctx.case.scene()?;
-    scene.set_count(args.particles)?;
+/// What a stochastic run resolves from its case before any rebound is drawn.
+pub struct Prepared {
+    pub scene: Scene,
+    pub setup: ModelSetup,
+    pub specs: Vec<TallySpec>,
+    /// Manifest entries that follow from the case alone (notes).
+    pub notes: toml::Table,
+}
+
+/// Resolves the scene, the model and what to tally (warnings on stderr).
+pub fn prepare(case: &Case, o: &TallyOverrides) -> Result<Prepared> {
+    let mut scene = case.scene()?;
+    scene.set_count(o.particles)?;
+    scene.set_target_se(o.target_se)?;
     let wall = scene.wall.deviations();
+    let mut notes = toml::Table::new();
     if let WallSource::Surface(_) = scene.wall {
         let note = format!(
             "the case gives a surface; the stochastic model uses its deviations from Eq. (15): Δξ = {:.4}°, Δζ = {:.4}°",
@@ -65,12 +79,11 @@ pub fn run(args: &StochasticArgs) -> Result<()> {
             wall.delta_zeta.to_degrees()
         );
         warn(&note);
-        ctx.manifest
-            .set("wall_from_surface", toml::Value::String(note));
+        notes.insert("wall_from_surface".into(), toml::Value::String(note));
     }
     if scene.conditions.iter().any(|c| c.alpha_in_deg() == -90.0) {
-        ctx.manifest.set(
-            "notes",
+        notes.insert(
+            "notes".into(),
             toml::Value::String(
                 "normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (physics notes §1)"
                     .into(),
@@ -84,78 +97,160 @@ pub fn run(args: &StochasticArgs) -> Result<()> {
         diameter_m: scene.diameter_m,
         speed: scene.speed,
     };
+    let specs = scene
+        .conditions
+        .iter()
+        .map(|c| tally_spec(&wall, *c, scene.bin_width_deg))
+        .collect();
+    Ok(Prepared {
+        scene,
+        setup,
+        specs,
+        notes,
+    })
+}
 
-    let mut results = Vec::with_capacity(scene.conditions.len());
-    let mut runs: Vec<ConditionRun> = Vec::with_capacity(scene.conditions.len());
-    let mut rows = Vec::new();
-    let bar = crate::progress::bar(scene.conditions.len() as u64, "stochastic");
-    for (k, cond) in scene.conditions.iter().enumerate() {
-        let t = std::time::Instant::now();
-        let run = run_condition(&setup, *cond, k as u64, scene.count, ctx.seed);
-        let secs = t.elapsed().as_secs_f64();
-        if run.capped > 0 {
+/// Runs the subcommand.
+pub fn run(args: &StochasticArgs) -> Result<()> {
+    let ctx = Context::new(&args.common, "stochastic", DEFAULT_CASE)?;
+    let o = args.tally.overrides();
+    let p = prepare(&ctx.case, &o)?;
+    let plan = runner::plan(
+        p.specs.clone(),
+        p.scene.count as u64,
+        p.scene.target_se_deg,
+        o.shard,
+    )?;
+    let identity = runner::identity(
+        "stochastic",
+        &ctx.case_text,
+        &ctx.case_origin,
+        ctx.seed,
+        &o,
+        None,
+    )?;
+    let t0 = std::time::Instant::now();
+    let seed = ctx.seed;
+    let done = runner::execute(&plan, "stochastic", |k, start, end, block| {
+        fill_block(
+            &p.setup,
+            &p.scene.conditions[k],
+            k as u64,
+            seed,
+            (start, end),
+            block,
+        )
+    });
+    let seconds = t0.elapsed().as_secs_f64();
+    let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
+    if let Some(shard) = plan.shard {
+        let dir = ctx.shard_dir(&args.common, shard);
+        runner::write_partial(&dir, &identity, &plan, p.notes, tallies, seconds)?;
+        return Ok(());
+    }
+    finish(
+        &ctx.out_dir,
+        ctx.manifest,
+        &p,
+        &tallies,
+        Some(&stats),
+        seconds,
+    )
+}
+
+/// Writes the outputs of a run (or of merged shards) into `dir`: `summary.csv`,
+/// `pdfs.csv`, `moments.csv`, the figures and `run.toml`. `stats` are the per-condition
+/// run statistics of a one-process run (`None` after a merge).
+pub fn finish(
+    dir: &Path,
+    mut manifest: Manifest,
+    p: &Prepared,
+    tallies: &[ConditionTally],
+    stats: Option<&[ConditionStats]>,
+    seconds: f64,
+) -> Result<()> {
+    let wall = p.setup.wall;
+    let mut results = Vec::with_capacity(tallies.len());
+    let mut rows = Vec::with_capacity(tallies.len());
+    for (k, t) in tallies.iter().enumerate() {
+        let cond = t.spec.condition;
+        let c = &t.counters;
+        if c.capped > 0 {
             warn(&format!(
                 "α⁻ = {}°, β⁻ = {}°: {} of {} rebounds hit the guard of {} candidate walls and were taken off the mean wall",
                 cond.alpha_in_deg(),
                 cond.beta_in_deg(),
-                run.capped,
-                scene.count,
+                c.capped,
+                c.particles,
                 crate::stochastic::MAX_TRIES
             ));
         }
-        let extras = ConditionExtras {
-            lost: None,
-            p_single: Some(run.p_single()),
-            curves: vec![gamma_model_curve(&wall, cond, scene.bin_width_deg)],
-        };
-        results.push(ConditionResult::from_outcomes(
-            *cond,
-            wall,
-            &run.outcomes,
-            scene.bin_width_deg,
-            extras,
-        ));
+        let mut r = t.result();
+        r.push_curve(gamma_model_curve(&wall, &cond, p.scene.bin_width_deg));
         let mut row = toml::Table::new();
         row.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
         row.insert("beta_in_deg".into(), f(cond.beta_in_deg()));
-        row.insert("seconds".into(), f(round(secs, 4)));
+        row.insert("rebounds".into(), toml::Value::Integer(c.particles as i64));
         row.insert(
-            "rebounds_per_s".into(),
-            f(if secs > 0.0 {
-                (scene.count as f64 / secs).round()
-            } else {
-                0.0
-            }),
+            "blocks".into(),
+            toml::Value::Integer(t.blocks().len() as i64),
         );
+        if let Some(s) = stats.and_then(|s| s.get(k)) {
+            row.insert("worker_seconds".into(), f(round(s.worker_seconds, 4)));
+            row.insert(
+                "rebounds_per_worker_s".into(),
+                f(if s.worker_seconds > 0.0 {
+                    (c.particles as f64 / s.worker_seconds).round()
+                } else {
+                    0.0
+                }),
+            );
+            if let Some(reached) = s.target_reached {
+                row.insert("target_reached".into(), toml::Value::Boolean(reached));
+            }
+        }
         row.insert(
             "candidate_walls_per_rebound".into(),
-            f(round(run.tries as f64 / scene.count as f64, 4)),
+            f(round(c.tries as f64 / c.particles.max(1) as f64, 4)),
         );
-        row.insert("p_single".into(), f(round(run.p_single(), 6)));
-        row.insert("capped".into(), toml::Value::Integer(run.capped as i64));
+        if let Some(ps) = r.summary.p_single {
+            row.insert("p_single".into(), f(round(ps.value, 6)));
+        }
+        if let (Some(a), Some(d)) = (r.summary.alpha_out, r.summary.dbeta) {
+            row.insert("se_mean_alpha_out_deg".into(), f(a.se));
+            row.insert("se_mean_dbeta_deg".into(), f(d.se));
+        }
+        row.insert("capped".into(), toml::Value::Integer(c.capped as i64));
         rows.push(toml::Value::Table(row));
-        runs.push(run);
-        bar.inc(1);
+        results.push(r);
     }
-    bar.finish_and_clear();
-
-    prepare_out_dir(&ctx.out_dir)?;
-    write_summary_and_pdfs(&ctx.out_dir, &results)?;
-    let figs = write_figures(&ctx.out_dir, &results, &runs, &wall, "SM")?;
-    ctx.manifest.set("conditions", toml::Value::Array(rows));
-    ctx.manifest.set(
+    prepare_out_dir(dir)?;
+    write_tables(dir, &results)?;
+    let figs = write_figures(dir, &results, &wall, "SM")?;
+    for (k, v) in &p.notes {
+        manifest.set(k, v.clone());
+    }
+    manifest.set("conditions", toml::Value::Array(rows));
+    manifest.set(
         "figures",
         toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
     );
-    ctx.manifest.set_run("psi", f(scene.psi));
-    ctx.manifest.set_run(
+    manifest.set_run("psi", f(p.scene.psi));
+    manifest.set_run(
         "particles_per_condition",
-        toml::Value::Integer(scene.count as i64),
+        toml::Value::Integer(p.scene.count as i64),
     );
-    ctx.manifest
-        .set_run("delta_xi_deg", f(round(wall.delta_xi.to_degrees(), 6)));
-    ctx.manifest
-        .set_run("delta_zeta_deg", f(round(wall.delta_zeta.to_degrees(), 6)));
-    ctx.manifest.write(&ctx.out_dir)?;
+    if let Some(t) = p.scene.target_se_deg {
+        manifest.set_run("target_se_deg", f(t));
+    }
+    manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
+    manifest.set_run("delta_xi_deg", f(round(wall.delta_xi.to_degrees(), 6)));
+    manifest.set_run("delta_zeta_deg", f(round(wall.delta_zeta.to_degrees(), 6)));
+    let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();
+    manifest.set_run("compute_s", f(round(seconds, 4)));
+    if stats.is_some() && seconds > 0.0 {
+        manifest.set_run("rebounds_per_s", f((total as f64 / seconds).round()));
+    }
+    manifest.write(dir)?;
     Ok(())
 }

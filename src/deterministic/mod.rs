@@ -6,65 +6,92 @@ pub mod trace;
 
 pub use trace::{Fate, History, HitInfo, LostReason, Tracker, DEFAULT_MAX_COLLISIONS};
 
-use crate::angles::{gamma_from_normal, incident_angles, wrap_pi, xi_zeta_of_normal};
-use crate::case::{IncidentCondition, SpeedLaw};
+use crate::angles::{
+    alpha_xy_of_velocity, gamma_from_normal, incident_angles, wrap_pi, xi_zeta_of_normal,
+};
 use crate::collision::CollisionLaw;
-use crate::incidence::{draw_speed, incident_velocity};
+use crate::incidence::{draw_speed, incident_velocity, IncidentCondition, SpeedLaw};
 use crate::rng;
-use crate::tally::{Bin, ConditionExtras, ConditionResult, Curve, Outcome};
+use crate::tally::{
+    Bin, BlockTally, ConditionResult, ConditionTally, ModelKind, Outcome, Quantity, TallySpec,
+    BLOCK_SIZE,
+};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
 use rand::Rng;
 use rayon::prelude::*;
 
-/// Shoots `count` particles of one condition at the tracker's surface, in parallel;
-/// particle `i` draws its start `(x, z)` (uniform over the period) and its
-/// horizontal speed from `rng::stream(seed, &[DETERMINISTIC, cond_index, i])`, so
-/// the histories (returned in particle order) do not depend on the thread count.
-/// Incident spin is zero (Radenkovic & Simonin 2021, Sec. 4).
-pub fn simulate<C>(
+/// Everything a deterministic run needs besides the surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModelSetup {
+    pub law: CollisionLaw,
+    /// Sphere diameter (m), for the spin terms of Sommerfeld–Huber.
+    pub diameter_m: f64,
+    pub speed: SpeedLaw,
+    /// The deviations the wall is meant to have: labels the outputs and gives `Δγ(β⁺)` of
+    /// the Fig. 12 model curve.
+    pub wall: Deviations,
+    /// ψ of Eq. (34), for the Fig. 12 model curve.
+    pub psi: f64,
+}
+
+/// History `i` of condition `cond` (index `cond_index` in the case): its start `(x, z)`
+/// (uniform over the period) and horizontal speed come from its own stream
+/// `rng::stream(seed, &[DETERMINISTIC, cond_index, i])`, so it does not depend on the
+/// thread or shard that runs it. Incident spin is zero (Radenkovic & Simonin 2021, Sec. 4).
+pub fn history(
     tracker: &Tracker<'_>,
-    collide: &C,
-    cond: IncidentCondition,
+    setup: &ModelSetup,
+    cond: &IncidentCondition,
     cond_index: u64,
-    count: usize,
+    i: u64,
     seed: u64,
-    speed: &SpeedLaw,
-) -> Vec<History>
-where
-    C: Fn(Vector3<f64>, Vector3<f64>, Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) + Sync,
-{
+) -> History {
+    history_at(tracker, setup, cond, &stream_prefix(seed, cond_index), i)
+}
+
+/// The part of a history's stream key shared by a condition: `(seed, DETERMINISTIC, k)`.
+fn stream_prefix(seed: u64, cond_index: u64) -> rng::StreamPrefix {
+    rng::StreamPrefix::new(seed, &[rng::domain::DETERMINISTIC, cond_index])
+}
+
+#[inline]
+fn history_at(
+    tracker: &Tracker<'_>,
+    setup: &ModelSetup,
+    cond: &IncidentCondition,
+    prefix: &rng::StreamPrefix,
+    i: u64,
+) -> History {
     let (lx, lz) = tracker.periods();
-    (0..count)
-        .into_par_iter()
-        .map(|i| {
-            let mut r = rng::stream(seed, &[rng::domain::DETERMINISTIC, cond_index, i as u64]);
-            let x = r.gen::<f64>() * lx;
-            let z = r.gen::<f64>() * lz;
-            let u_h = draw_speed(speed, &mut r);
-            let u = incident_velocity(cond.alpha_in, cond.beta_in, u_h);
-            tracker.trace(x, z, u, Vector3::zeros(), collide)
-        })
-        .collect()
+    let mut r = prefix.stream(i);
+    let x = r.gen::<f64>() * lx;
+    let z = r.gen::<f64>() * lz;
+    let u_h = draw_speed(&setup.speed, &mut r);
+    let u = incident_velocity(cond.alpha_in, cond.beta_in, u_h);
+    let collide = |u, w, n| setup.law.collide(u, w, n, setup.diameter_m);
+    tracker.trace(x, z, u, Vector3::zeros(), &collide)
 }
 
 /// The tallied record of a followed history (`None` for a lost one).
 ///
 /// `xi_first`, `zeta_first` are `ξ − 90°`, `ζ − 90°` of the first normal seen,
 /// `γ`, `γ*` from Radenkovic & Simonin 2021, Eqs. (20)–(21) (notes §2) with the
-/// incident `β⁻`; the deviations are wrapped into (−180°, 180°].
-pub fn outcome(h: &History, beta_in: f64) -> Option<Outcome> {
+/// incident `β⁻`; the deviations are wrapped into (−180°, 180°]. The first rebound's
+/// `α⁺` and the model `P(n = 1)` of Eq. (34) at its `(α⁺, β⁺)` feed Fig. 12.
+pub fn outcome(h: &History, beta_in: f64, wall: &Deviations, psi: f64) -> Option<Outcome> {
     if h.fate != Fate::Escaped {
         return None;
     }
     let (alpha_out, beta_out) = incident_angles(&h.velocity);
-    let (_, beta_first) = incident_angles(&h.first_velocity);
+    let (alpha_first, beta_first) = incident_angles(&h.first_velocity);
     let (xi, zeta) = xi_zeta_of_normal(&h.first_normal);
     let (gamma, gamma_star) = gamma_from_normal(&h.first_normal, beta_in);
     let s_in = h.incident.norm();
     Some(Outcome {
         alpha_out,
         beta_out,
+        alpha_out_xy: alpha_xy_of_velocity(&h.velocity),
         dbeta: wrap_pi(beta_out - beta_in),
         dbeta_first: Some(wrap_pi(beta_first - beta_in)),
         xi_first: xi,
@@ -72,12 +99,48 @@ pub fn outcome(h: &History, beta_in: f64) -> Option<Outcome> {
         gamma_first: gamma,
         gamma_star_first: gamma_star,
         collisions: Some(h.collisions),
+        alpha_first: Some(alpha_first),
+        p_single_model: Some(p_single_model(wall, psi, alpha_first, beta_first)),
         speed_ratio: if s_in > 0.0 {
             h.velocity.norm() / s_in
         } else {
             1.0
         },
     })
+}
+
+/// Tallies histories `start..end` of a condition into `block`, in particle order.
+pub fn fill_block(
+    tracker: &Tracker<'_>,
+    setup: &ModelSetup,
+    cond: &IncidentCondition,
+    cond_index: u64,
+    seed: u64,
+    (start, end): (u64, u64),
+    block: &mut BlockTally,
+) {
+    let prefix = stream_prefix(seed, cond_index);
+    for i in start..end {
+        let h = history_at(tracker, setup, cond, &prefix, i);
+        match h.fate {
+            Fate::Lost(r) => block.push_lost(r as usize),
+            Fate::Escaped => {
+                if let Some(o) = outcome(&h, cond.beta_in, &setup.wall, setup.psi) {
+                    block.push(&o);
+                }
+            }
+        }
+    }
+}
+
+/// The tally specification of a condition of this model.
+pub fn tally_spec(wall: &Deviations, cond: IncidentCondition, bin_width_deg: f64) -> TallySpec {
+    TallySpec {
+        condition: cond,
+        deviations: *wall,
+        bin_width_deg,
+        model: ModelKind::Deterministic,
+    }
 }
 
 /// Counts of lost histories by reason.
@@ -90,6 +153,16 @@ pub struct LostCounts {
 }
 
 impl LostCounts {
+    /// From the tally's counts, indexed by `LostReason as usize`.
+    pub fn from_tally(lost: &[u64; crate::tally::condition::LOST_REASONS]) -> LostCounts {
+        LostCounts {
+            collision_cap: lost[LostReason::CollisionCap as usize],
+            below_surface: lost[LostReason::BelowSurface as usize],
+            step_budget: lost[LostReason::StepBudget as usize],
+            stopped: lost[LostReason::Stopped as usize],
+        }
+    }
+
     pub fn total(&self) -> u64 {
         self.collision_cap + self.below_surface + self.step_budget + self.stopped
     }
@@ -119,14 +192,16 @@ impl LostCounts {
     }
 }
 
-/// Everything one condition produced.
+/// Every history of one condition, kept in memory: for tests and small studies that look
+/// at single histories. Runs of any size go through `tally::engine` instead.
 #[derive(Clone, Debug)]
 pub struct ConditionRun {
     pub condition: IncidentCondition,
+    pub setup: ModelSetup,
     /// Outcomes of the followed histories, in particle order.
     pub outcomes: Vec<Outcome>,
-    /// `(α⁺, β⁺)` of the first rebound of each followed history (rad), same order.
-    pub first_rebound: Vec<(f64, f64)>,
+    /// The fate of every history, in particle order.
+    fates: Vec<Fate>,
     pub lost: LostCounts,
 }
 
@@ -137,137 +212,72 @@ pub fn p_single_model(dev: &Deviations, psi: f64, alpha_out: f64, beta_out: f64)
     crate::stochastic::single_collision_probability(&u, alpha_out, dev, psi)
 }
 
-/// Per `α` bin of `bin_width_deg` on [−90°, 90°): the fraction of single-collision
-/// histories and the model `tanh(ψ α/Δγ(β))` averaged over the bin's particles at
-/// their own `(α, β)`; `angles` are the rebound angles binned (rad), `single` whether
-/// the history had one collision. Returns `(measured, model)` curves.
-pub fn p_single_curves(
-    angles: &[(f64, f64)],
-    single: impl Iterator<Item = bool>,
-    dev: &Deviations,
-    psi: f64,
-    bin_width_deg: f64,
-) -> (Vec<Bin>, Vec<Bin>) {
-    let nb = (180.0 / bin_width_deg).ceil() as usize;
-    let mut tot = vec![0u64; nb];
-    let mut one = vec![0u64; nb];
-    let mut model = vec![0.0; nb];
-    for (&(a, b), s) in angles.iter().zip(single) {
-        let i = (((a.to_degrees() + 90.0) / bin_width_deg).floor().max(0.0) as usize).min(nb - 1);
-        tot[i] += 1;
-        one[i] += s as u64;
-        model[i] += p_single_model(dev, psi, a, b);
-    }
-    let bin = |i: usize, v: f64| Bin {
-        lo: -90.0 + i as f64 * bin_width_deg,
-        hi: -90.0 + (i + 1) as f64 * bin_width_deg,
-        value: v,
-    };
-    let idx: Vec<usize> = (0..nb).filter(|&i| tot[i] > 0).collect();
-    (
-        idx.iter()
-            .map(|&i| bin(i, one[i] as f64 / tot[i] as f64))
-            .collect(),
-        idx.iter()
-            .map(|&i| bin(i, model[i] / tot[i] as f64))
-            .collect(),
-    )
-}
-
-/// Runs one condition with collision law `law` (sphere diameter `diameter_m`).
-#[allow(clippy::too_many_arguments)]
+/// Runs `count` histories of one condition in parallel and keeps them all (see
+/// [`ConditionRun`]); the same histories as a tallied run of the same seed.
 pub fn run_condition(
     tracker: &Tracker<'_>,
-    law: &CollisionLaw,
-    diameter_m: f64,
+    setup: &ModelSetup,
     cond: IncidentCondition,
     cond_index: u64,
     count: usize,
     seed: u64,
-    speed: &SpeedLaw,
 ) -> ConditionRun {
-    let collide = |u, w, n| law.collide(u, w, n, diameter_m);
-    let histories = simulate(tracker, &collide, cond, cond_index, count, seed, speed);
+    let histories: Vec<History> = (0..count as u64)
+        .into_par_iter()
+        .map(|i| history(tracker, setup, &cond, cond_index, i, seed))
+        .collect();
     let mut lost = LostCounts::default();
     let mut outcomes = Vec::with_capacity(histories.len());
-    let mut first_rebound = Vec::with_capacity(histories.len());
     for h in &histories {
-        match h.fate {
-            Fate::Lost(r) => lost.add(r),
-            Fate::Escaped => {
-                if let Some(o) = outcome(h, cond.beta_in) {
-                    outcomes.push(o);
-                    first_rebound.push(incident_angles(&h.first_velocity));
-                }
-            }
+        if let Fate::Lost(r) = h.fate {
+            lost.add(r);
         }
+        outcomes.extend(outcome(h, cond.beta_in, &setup.wall, setup.psi));
     }
+    let fates = histories.iter().map(|h| h.fate).collect();
     ConditionRun {
         condition: cond,
+        setup: *setup,
         outcomes,
-        first_rebound,
+        fates,
         lost,
     }
 }
 
 impl ConditionRun {
+    /// The tally of these histories, exactly as a tallied run of the same seed gives it.
+    pub fn tally(&self, bin_width_deg: f64) -> ConditionResult {
+        let spec = tally_spec(&self.setup.wall, self.condition, bin_width_deg);
+        let mut t = ConditionTally::new(spec);
+        let mut next = self.outcomes.iter();
+        for (b, chunk) in self.fates.chunks(BLOCK_SIZE as usize).enumerate() {
+            let mut block = BlockTally::new(&spec, b as u64);
+            for fate in chunk {
+                match fate {
+                    Fate::Lost(r) => block.push_lost(*r as usize),
+                    Fate::Escaped => {
+                        if let Some(o) = next.next() {
+                            block.push(o);
+                        }
+                    }
+                }
+            }
+            t.absorb(block);
+        }
+        t.result()
+    }
+
     /// The Fig. 12 curves (Radenkovic & Simonin 2021, Eq. 34–35): `P(n = 1)` per bin of
     /// the *first* rebound angle `α⁺` — the probability the stochastic procedure
     /// (Fig. 13, step 6) uses to accept a rebound — and the model averaged over the
     /// bin's particles at their own first-rebound `(α⁺, β⁺)`.
-    pub fn fig12_curves(
-        &self,
-        dev: &Deviations,
-        psi: f64,
-        bin_width_deg: f64,
-    ) -> (Vec<Bin>, Vec<Bin>) {
-        p_single_curves(
-            &self.first_rebound,
-            self.outcomes.iter().map(|o| o.collisions == Some(1)),
-            dev,
-            psi,
-            bin_width_deg,
-        )
-    }
-
-    /// The `summary.csv` row and `pdfs.csv` rows, plus the curves
-    /// `p_single_given_alpha_first` and `p_single_model` (see [`ConditionRun::fig12_curves`]).
-    pub fn tally(&self, dev: &Deviations, psi: f64, bin_width_deg: f64) -> ConditionResult {
-        let (measured, model) = self.fig12_curves(dev, psi, bin_width_deg);
-        ConditionResult::from_outcomes(
-            self.condition,
-            *dev,
-            &self.outcomes,
-            bin_width_deg,
-            ConditionExtras {
-                lost: Some(self.lost.total()),
-                p_single: None,
-                curves: vec![
-                    Curve {
-                        quantity: "p_single_given_alpha_first".into(),
-                        bins: measured,
-                    },
-                    Curve {
-                        quantity: "p_single_model".into(),
-                        bins: model,
-                    },
-                    // PDF of the first rebound angle: with `particles` it gives the
-                    // histories behind each bin of the two curves above.
-                    Curve {
-                        quantity: "alpha_first".into(),
-                        bins: crate::tally::density(
-                            &self
-                                .first_rebound
-                                .iter()
-                                .map(|r| r.0.to_degrees())
-                                .collect::<Vec<_>>(),
-                            -90.0,
-                            90.0,
-                            bin_width_deg,
-                        ),
-                    },
-                ],
-            },
+    pub fn fig12_curves(&self, bin_width_deg: f64) -> (Vec<Bin>, Vec<Bin>) {
+        let r = self.tally(bin_width_deg);
+        (
+            r.pdf(Quantity::PSingleGivenAlphaFirst)
+                .unwrap_or_default()
+                .to_vec(),
+            r.pdf(Quantity::PSingleModel).unwrap_or_default().to_vec(),
         )
     }
 }

@@ -5,7 +5,6 @@
 
 pub mod paper;
 pub mod sections;
-pub mod table;
 
 use crate::error::Result;
 use crate::output::write_atomic;

@@ -1,9 +1,9 @@
 //! The sections of `REPORT.md`, one function each.
 
 use super::paper;
-use super::table::{num, wall_time_s, Rows};
 use crate::error::Result;
 use crate::figures::{plot_grid_svg, plot_svg, Kind, Plot, Series};
+use crate::output::csv::{num, run_toml, wall_time_s, Rows};
 use crate::output::{fmt_num, CsvTable};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -421,7 +421,8 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
         "## Deterministic (DS) against stochastic model (SM), all scenes (Figs. 10–11, 14–17)\n\n",
     );
     md.push_str("Target of issue 4: KS distance ≤ 0.05 for `alpha_out` and `dbeta` at |α⁻| ≥ 12.5°; mean β⁺ − β⁻ at β⁻ = 60° of the same sign and within 1°. The paper reports \"very good agreement\".\n\n");
-    md.push_str("| scene | DS surface: nodes, measured Δξ, Δζ | conditions (\\|α⁻\\| ≥ 12.5°) | max KS alpha_out | at (α⁻, β⁻) | max KS dbeta | at (α⁻, β⁻) | within 0.05 |\n|---|---|---|---|---|---|---|---|\n");
+    md.push_str("z is a difference of means in units of its combined standard error (`compare`'s `z` column): with both models right, |z| stays below about 3; a larger |z| is a difference the runs resolve, however small in degrees.\n\n");
+    md.push_str("| scene | DS surface: nodes, measured Δξ, Δζ | conditions (\\|α⁻\\| ≥ 12.5°) | max KS alpha_out | at (α⁻, β⁻) | max KS dbeta | at (α⁻, β⁻) | within 0.05 | max \\|z\\| mean α⁺ | max \\|z\\| mean β⁺ − β⁻ |\n|---|---|---|---|---|---|---|---|---|---|\n");
     let root = results.join("radenkovic2021");
     let mut scenes = subdirs(&root, "sec3-");
     scenes.extend(subdirs(&root, "sec4-"));
@@ -435,6 +436,7 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         let mut worst = [(0.0f64, String::new()), (0.0f64, String::new())];
+        let mut worst_z = [None::<f64>; 2];
         let mut n = 0;
         for r in &c.rows {
             let (Some(a), Some(b), Some(ks)) =
@@ -454,11 +456,14 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
             if slot == 0 {
                 n += 1;
             }
+            if let Some(z) = num(r, "z") {
+                worst_z[slot] = Some(worst_z[slot].map_or(z.abs(), |w: f64| w.max(z.abs())));
+            }
             if ks >= worst[slot].0 {
                 worst[slot] = (ks, format!("({a}°, {b}°)"));
             }
         }
-        let surf = super::table::run_toml(&scene.join("deterministic"))
+        let surf = run_toml(&scene.join("deterministic"))
             .and_then(|t| t.get("surface_choice").cloned())
             .map_or("–".to_string(), |c| {
                 let g = |k: &str| {
@@ -475,12 +480,14 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
             });
         let _ = writeln!(
             md,
-            "| {name} | {surf} | {n} | {:.3} | {} | {:.3} | {} | {} |",
+            "| {name} | {surf} | {n} | {:.3} | {} | {:.3} | {} | {} | {} | {} |",
             worst[0].0,
             worst[0].1,
             worst[1].0,
             worst[1].1,
-            yes(Some(worst[0].0 <= 0.05 && worst[1].0 <= 0.05))
+            yes(Some(worst[0].0 <= 0.05 && worst[1].0 <= 0.05)),
+            f(worst_z[0], 1),
+            f(worst_z[1], 1)
         );
         let (ds, sm) = (
             summary(&scene.join("deterministic"))?,
@@ -490,11 +497,14 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
             for r in ds.filter(&[("beta_in_deg", 60.0)]) {
                 let a = num(r, "alpha_in_deg").unwrap_or(f64::NAN);
                 let d = num(r, "mean_dbeta_deg");
-                let s = sm
+                let d_se = num(r, "se_mean_dbeta_deg");
+                let sm_row = sm
                     .filter(&[("alpha_in_deg", a), ("beta_in_deg", 60.0)])
                     .first()
-                    .and_then(|r| num(r, "mean_dbeta_deg"));
-                dbeta_rows.push((name.clone(), a, d, s));
+                    .copied();
+                let s = sm_row.and_then(|r| num(r, "mean_dbeta_deg"));
+                let s_se = sm_row.and_then(|r| num(r, "se_mean_dbeta_deg"));
+                dbeta_rows.push((name.clone(), a, d, s, d_se.zip(s_se)));
             }
         }
     }
@@ -502,18 +512,24 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
         missing(md, "scripts/radenkovic2021.sh", &root);
         return Ok(());
     }
-    md.push_str("\nMean β⁺ − β⁻ at β⁻ = 60°:\n\n| scene | α⁻ | DS | SM | SM − DS | same sign (or both within 0.3° of 0), within 1° |\n|---|---|---|---|---|---|\n");
-    for (name, a, d, s) in dbeta_rows {
+    md.push_str("\nMean β⁺ − β⁻ at β⁻ = 60° (± one standard error):\n\n| scene | α⁻ | DS | SM | SM − DS | z | same sign (or both within 0.3° of 0), within 1° |\n|---|---|---|---|---|---|---|\n");
+    for (name, a, d, s, se) in dbeta_rows {
         let diff = d.zip(s).map(|(d, s)| s - d);
         let ok = d.zip(s).map(|(d, s)| {
             (d.signum() == s.signum() || d.abs().max(s.abs()) < 0.3) && (s - d).abs() <= 1.0
         });
+        let pm = |m: Option<f64>, e: Option<f64>| match (m, e) {
+            (Some(m), Some(e)) => format!("{m:.2} ± {e:.2}°"),
+            (m, _) => format!("{}°", f(m, 2)),
+        };
+        let z = diff.zip(se).map(|(d, (a, b))| d / (a * a + b * b).sqrt());
         let _ = writeln!(
             md,
-            "| {name} | {a}° | {}° | {}° | {}° | {} |",
-            f(d, 2),
-            f(s, 2),
+            "| {name} | {a}° | {} | {} | {}° | {} | {} |",
+            pm(d, se.map(|e| e.0)),
+            pm(s, se.map(|e| e.1)),
             f(diff, 2),
+            f(z, 1),
             yes(ok)
         );
     }
@@ -691,7 +707,7 @@ pub fn hu(results: &Path, md: &mut String) -> Result<()> {
             }
         }
         let mut times: std::collections::BTreeMap<i64, Vec<f64>> = Default::default();
-        if let Some(t) = super::table::run_toml(&root.join("fig6")) {
+        if let Some(t) = run_toml(&root.join("fig6")) {
             for e in t
                 .get("dynamic_convergence")
                 .and_then(|v| v.as_array())
@@ -731,6 +747,9 @@ pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
         "max_ks_alpha_out",
         "max_ks_dbeta",
         "max_abs_mean_alpha_out_err_deg",
+        "target_se_deg",
+        "max_se_mean_alpha_out_deg",
+        "max_abs_z_alpha_out",
     ]);
     let mut pts_ds = Vec::new();
     let mut pts_sm = Vec::new();
@@ -745,6 +764,7 @@ pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
         let Some(c) = Rows::read(&run.join("vs-reference/comparison.csv"))? else {
             continue;
         };
+        let Some(summ) = summary(&run)? else { continue };
         let model = if name.starts_with("det-") {
             "deterministic"
         } else {
@@ -754,17 +774,25 @@ pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
             name.split('-')
                 .find_map(|p| p.strip_prefix(tag).and_then(|v| v.parse::<f64>().ok()))
         };
-        let (n, s) = (
-            parse('n'),
-            if model == "deterministic" {
-                parse('s')
-            } else {
-                None
-            },
-        );
+        let spacing = if model == "deterministic" {
+            parse('s')
+        } else {
+            None
+        };
+        let target = parse('t');
+        // Particles per condition (the most any condition used) and in total.
+        let per_condition: Vec<f64> = summ
+            .rows
+            .iter()
+            .filter_map(|r| num(r, "particles"))
+            .collect();
+        let n = per_condition
+            .iter()
+            .copied()
+            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+        let total: f64 = per_condition.iter().sum();
         let wall = wall_time_s(&run);
-        let conditions = summary(&run)?.map_or(1, |s| s.rows.len().max(1));
-        let per = wall.zip(n).map(|(w, n)| 1e6 * w / (n * conditions as f64));
+        let per = wall.filter(|_| total > 0.0).map(|w| 1e6 * w / total);
         let maxq = |q: &str, k: &str| {
             c.with("quantity", q)
                 .iter()
@@ -775,26 +803,36 @@ pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
         };
         let ks_a = maxq("alpha_out", "ks");
         let ks_d = maxq("dbeta", "ks");
+        let z_a = maxq("alpha_out", "z");
         let mean_err = c
             .with("quantity", "alpha_out")
             .iter()
             .filter_map(|r| Some((num(r, "mean_b")? - num(r, "mean_a")?).abs()))
             .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+        let se_a = summ
+            .rows
+            .iter()
+            .filter_map(|r| num(r, "se_mean_alpha_out_deg"))
+            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+        let cell = |x: Option<f64>| x.map(fmt_num).unwrap_or_default();
         table.push(vec![
             model.into(),
-            n.map(fmt_num).unwrap_or_default(),
-            s.map(fmt_num).unwrap_or_default(),
-            wall.map(fmt_num).unwrap_or_default(),
-            per.map(fmt_num).unwrap_or_default(),
-            ks_a.map(fmt_num).unwrap_or_default(),
-            ks_d.map(fmt_num).unwrap_or_default(),
-            mean_err.map(fmt_num).unwrap_or_default(),
+            cell(n),
+            cell(spacing),
+            cell(wall),
+            cell(per),
+            cell(ks_a),
+            cell(ks_d),
+            cell(mean_err),
+            cell(target),
+            cell(se_a),
+            cell(z_a),
         ]);
         if let (Some(w), Some(k)) = (wall, ks_a) {
             if model == "deterministic" {
-                pts_ds.push((w, k, s.unwrap_or(0.0), n.unwrap_or(0.0)));
+                pts_ds.push((w, k));
             } else {
-                pts_sm.push((w, k, 0.0, n.unwrap_or(0.0)));
+                pts_sm.push((w, k));
             }
         }
     }
@@ -811,39 +849,40 @@ pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
             x_label: "wall time per run (s)".into(),
             y_label: "max KS distance, alpha_out".into(),
             series: vec![
-                Series::new(
-                    "deterministic",
-                    pts_ds.iter().map(|p| (p.0, p.1)).collect(),
-                    Kind::Markers,
-                ),
-                Series::new(
-                    "stochastic",
-                    pts_sm.iter().map(|p| (p.0, p.1)).collect(),
-                    Kind::Markers,
-                ),
+                Series::new("deterministic", pts_ds, Kind::Markers),
+                Series::new("stochastic", pts_sm, Kind::Markers),
             ],
             log_x: true,
             log_y: true,
             ..Default::default()
         },
     )?;
-    md.push_str("Reference: deterministic run with the finest grid and the most particles (`speed-vs-error/reference`). Wall times from each run's `run.toml` (2-core machine, surface generation included for the deterministic runs). Table: `speed_vs_error.csv`.\n\n| model | particles | c_L/δ | wall time (s) | µs per particle | max KS α⁺ | max KS β⁺ − β⁻ | max \\|mean α⁺ error\\| (°) |\n|---|---|---|---|---|---|---|---|\n");
+    md.push_str("Reference: deterministic run with the finest grid and the most particles (`speed-vs-error/reference`). Runs either at a fixed particle count or with `--target-se` (whole blocks of 65 536 particles until the standard errors of mean α⁺ and mean β⁺ − β⁻ are at most the target). Wall times from each run's `run.toml` (2-core machine, surface generation included for the deterministic runs). z: the difference of mean α⁺ from the reference in units of the combined standard error. Table: `speed_vs_error.csv`.\n\n| model | particles per condition | target SE (°) | c_L/δ | wall time (s) | µs per particle | max SE of mean α⁺ (°) | max KS α⁺ | max KS β⁺ − β⁻ | max \\|mean α⁺ error\\| (°) | max \\|z\\| α⁺ |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     for r in &table.rows {
-        let _ = writeln!(md, "| {} |", r.join(" | "));
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            r[0], r[1], r[8], r[2], r[3], r[4], r[9], r[5], r[6], r[7], r[10]
+        );
     }
     // Cost per rebound, stochastic against deterministic, at equal particle counts.
     let per = |model: &str, n: &str| {
         table
             .rows
             .iter()
-            .find(|r| r[0] == model && r[1] == n && (model == "stochastic" || r[2] == "8"))
+            .find(|r| {
+                r[0] == model
+                    && r[1] == n
+                    && r[8].is_empty()
+                    && (model == "stochastic" || r[2] == "8")
+            })
             .and_then(|r| r[4].parse::<f64>().ok())
     };
     md.push_str("\nCost per rebound on the same scene (wall time per particle, surface generation included for the deterministic runs at c_L/δ = 8):\n\n| particles | deterministic (µs) | stochastic (µs) | deterministic / stochastic |\n|---|---|---|---|\n");
     let mut counts: Vec<&String> = table
         .rows
         .iter()
-        .filter(|r| r[0] == "stochastic")
+        .filter(|r| r[0] == "stochastic" && r[8].is_empty())
         .map(|r| &r[1])
         .collect();
     counts.sort_by(|a, b| {
@@ -851,6 +890,7 @@ pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
             .unwrap_or(0.0)
             .total_cmp(&b.parse::<f64>().unwrap_or(0.0))
     });
+    counts.dedup();
     for n in counts {
         let (d, sm) = (per("deterministic", n), per("stochastic", n));
         let _ = writeln!(

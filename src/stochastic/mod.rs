@@ -11,5 +11,7 @@ pub mod rebound_model;
 pub mod shadow_effect;
 pub mod simulate;
 
-pub use rebound_model::{rebound, single_collision_probability, Rebound, SeenWall, MAX_TRIES};
+pub use rebound_model::{
+    rebound, rebound_from, single_collision_probability, Incidence, Rebound, SeenWall, MAX_TRIES,
+};
 pub use shadow_effect::ShadowSampler;

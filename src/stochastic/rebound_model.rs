@@ -6,9 +6,9 @@
 //! collision law and a random generator — no surface, no tables.
 
 use super::shadow_effect::ShadowSampler;
-use crate::angles::{incident_angles, normal_from_gamma};
+use crate::angles::{incident_angles, normal_from_xi_zeta, xi_zeta_rotated};
 use crate::collision::CollisionLaw;
-use crate::wall::{conditional_gamma_star, rotated_moments, Deviations};
+use crate::wall::{conditional_gamma_star, rotated_moments, Deviations, Moments};
 use nalgebra::Vector3;
 use rand::Rng;
 use rand_distr::StandardNormal;
@@ -24,7 +24,10 @@ pub struct SeenWall {
     pub gamma: f64,
     /// Inclination `γ*` normal to the incident plane (rad, Eq. 21).
     pub gamma_star: f64,
-    /// Unit normal (Eq. 23, exact unit vector).
+    /// Fluctuations `ξ' = ξ − π/2`, `ζ' = ζ − π/2` of the normal's angles (rad, Eq. 23).
+    pub xi: f64,
+    pub zeta: f64,
+    /// Unit normal (Eqs. 10, 23, exact unit vector).
     pub normal: Vector3<f64>,
 }
 
@@ -33,8 +36,68 @@ impl SeenWall {
     pub const FLAT: SeenWall = SeenWall {
         gamma: 0.0,
         gamma_star: 0.0,
+        xi: 0.0,
+        zeta: 0.0,
         normal: Vector3::new(0.0, 1.0, 0.0),
     };
+}
+
+/// Step 1 of the procedure and the shadow-effect sampler: everything that depends only on
+/// the incident *direction* `(α⁻, β⁻)` and the wall, not on the speed or the random draws.
+/// A run of many particles with one direction builds it once ([`rebound_from`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Incidence {
+    /// `α⁻`, `β⁻` (rad).
+    pub alpha: f64,
+    pub beta: f64,
+    /// `(sin β⁻, cos β⁻)`, for Eq. (23).
+    sin_cos_beta: (f64, f64),
+    /// `Δγ², Δγ*², Cov(γ, γ*)` at `β⁻` (Eq. 26).
+    moments: Moments,
+    /// `P_eff(γ | α⁻)` with `Δγ(β⁻)` (Eqs. 31–33).
+    sampler: ShadowSampler,
+}
+
+impl Incidence {
+    /// The direction `(α⁻, β⁻)` (rad) on `wall`.
+    pub fn new(alpha: f64, beta: f64, wall: &Deviations) -> Incidence {
+        let moments = rotated_moments(wall, beta);
+        Incidence {
+            alpha,
+            beta,
+            sin_cos_beta: beta.sin_cos(),
+            moments,
+            sampler: ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt()),
+        }
+    }
+
+    /// The direction of the velocity `u_in` (physics notes §1) on `wall`.
+    pub fn of_velocity(u_in: &Vector3<f64>, wall: &Deviations) -> Incidence {
+        let (alpha, beta) = incident_angles(u_in);
+        Incidence::new(alpha, beta, wall)
+    }
+
+    /// Steps 2–4 up to the normal: a wall element seen by this direction, `γ` from
+    /// `P_eff(γ | α⁻)`, `γ*` given `γ` from Eq. (30), the unit normal of Eq. (23).
+    #[inline]
+    fn draw_wall<R: Rng + ?Sized>(&self, rng: &mut R) -> SeenWall {
+        let gamma = self.sampler.sample(rng);
+        let (mean, var) = conditional_gamma_star(&self.moments, gamma);
+        let gamma_star = if var > 0.0 {
+            let z: f64 = rng.sample(StandardNormal);
+            mean + var.sqrt() * z
+        } else {
+            mean
+        };
+        let (xi, zeta) = xi_zeta_rotated(gamma, gamma_star, self.sin_cos_beta);
+        SeenWall {
+            gamma,
+            gamma_star,
+            xi,
+            zeta,
+            normal: normal_from_xi_zeta(xi, zeta),
+        }
+    }
 }
 
 /// The outcome of [`rebound`].
@@ -189,10 +252,28 @@ pub fn rebound<R: Rng + ?Sized>(
     diameter_m: f64,
     rng: &mut R,
 ) -> Rebound {
+    if let Some(done) = trivial(u_in, omega_in, wall, law, psi, diameter_m) {
+        return done;
+    }
+    let inc = Incidence::of_velocity(&u_in, wall);
+    rebound_from(&inc, u_in, omega_in, wall, law, psi, diameter_m, rng)
+}
+
+/// The rebounds that need no random draw: a particle not moving towards the wall (or a
+/// non-finite input) is returned unchanged with `tries = 0`; a smooth wall (or a `psi` that
+/// can accept nothing) gives the collision with the mean wall.
+fn trivial(
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+) -> Option<Rebound> {
     let j = Vector3::new(0.0, 1.0, 0.0);
     let finite = u_in.iter().chain(omega_in.iter()).all(|c| c.is_finite());
     if !finite || u_in.y >= 0.0 {
-        return Rebound {
+        return Some(Rebound {
             velocity: u_in,
             spin: omega_in,
             gamma: 0.0,
@@ -201,61 +282,59 @@ pub fn rebound<R: Rng + ?Sized>(
             tries: 0,
             candidates: 0,
             first: SeenWall::FLAT,
-        };
+        });
     }
-    let smooth = Rebound {
-        velocity: Vector3::zeros(),
-        spin: Vector3::zeros(),
-        gamma: 0.0,
-        gamma_star: 0.0,
-        normal: j,
-        tries: 1,
-        candidates: 1,
-        first: SeenWall::FLAT,
-    };
     let smooth_wall = wall.delta_xi == 0.0 && wall.delta_zeta == 0.0;
     let bad_psi = !(psi > 0.0 && psi.is_finite());
     if smooth_wall || bad_psi {
         let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
-        return Rebound {
+        let n = if bad_psi { MAX_TRIES } else { 1 };
+        return Some(Rebound {
             velocity: u,
             spin: w,
-            tries: if bad_psi { MAX_TRIES } else { 1 },
-            candidates: if bad_psi { MAX_TRIES } else { 1 },
-            ..smooth
-        };
+            gamma: 0.0,
+            gamma_star: 0.0,
+            normal: j,
+            tries: n,
+            candidates: n,
+            first: SeenWall::FLAT,
+        });
     }
-    // Step 1.
-    let (alpha, beta) = incident_angles(&u_in);
-    let moments = rotated_moments(wall, beta);
-    let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
+    None
+}
+
+/// [`rebound`] for an incident velocity whose direction's [`Incidence`] is given (built
+/// once for many particles of one direction); steps 2–7 of the procedure. `inc` must be
+/// the incidence of `u_in`'s direction on `wall`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn rebound_from<R: Rng + ?Sized>(
+    inc: &Incidence,
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    rng: &mut R,
+) -> Rebound {
+    if let Some(done) = trivial(u_in, omega_in, wall, law, psi, diameter_m) {
+        return done;
+    }
     let mut candidates = 0u32;
     let mut first = SeenWall::FLAT;
     for tries in 1..=MAX_TRIES {
-        // Steps 2–3.
-        let gamma = sampler.sample(rng);
-        let (mean, var) = conditional_gamma_star(&moments, gamma);
-        let gamma_star = if var > 0.0 {
-            let z: f64 = rng.sample(StandardNormal);
-            mean + var.sqrt() * z
-        } else {
-            mean
-        };
-        // Step 4.
-        let n = normal_from_gamma(gamma, gamma_star, beta);
-        if u_in.dot(&n) >= 0.0 {
+        // Steps 2–4.
+        let seen = inc.draw_wall(rng);
+        if u_in.dot(&seen.normal) >= 0.0 {
             continue;
         }
         // Step 5.
         candidates += 1;
         if candidates == 1 {
-            first = SeenWall {
-                gamma,
-                gamma_star,
-                normal: n,
-            };
+            first = seen;
         }
-        let (u, w) = law.collide(u_in, omega_in, n, diameter_m);
+        let (u, w) = law.collide(u_in, omega_in, seen.normal, diameter_m);
         // Step 6.
         if !accept_single_collision(&u, wall, psi, rng) {
             continue;
@@ -264,22 +343,25 @@ pub fn rebound<R: Rng + ?Sized>(
         return Rebound {
             velocity: u,
             spin: w,
-            gamma,
-            gamma_star,
-            normal: n,
+            gamma: seen.gamma,
+            gamma_star: seen.gamma_star,
+            normal: seen.normal,
             tries,
             candidates,
             first,
         };
     }
+    let j = Vector3::new(0.0, 1.0, 0.0);
     let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
     Rebound {
         velocity: u,
         spin: w,
+        gamma: 0.0,
+        gamma_star: 0.0,
+        normal: j,
         tries: MAX_TRIES,
         candidates,
         first,
-        ..smooth
     }
 }
 

@@ -1,17 +1,15 @@
-//! Many rebounds of one incident condition, in parallel and reproducibly
-//! (`rebound stochastic`, Radenkovic & Simonin 2021, Sec. 4).
+//! Many rebounds of one incident condition, reproducibly: each rebound from its own random
+//! stream, tallied block by block (`rebound stochastic`, Radenkovic & Simonin 2021, Sec. 4).
 
-use super::rebound_model::{rebound, Rebound, MAX_TRIES};
+use super::rebound_model::{rebound_from, Incidence, Rebound, MAX_TRIES};
 use super::shadow_effect;
-use crate::angles::{incident_angles, wrap_pi, xi_zeta_of_normal};
-use crate::case::{IncidentCondition, SpeedLaw};
+use crate::angles::{alpha_xy_of_velocity, incident_angles, wrap_pi};
 use crate::collision::CollisionLaw;
-use crate::incidence::{draw_speed, incident_velocity};
+use crate::incidence::{draw_speed, incident_velocity, IncidentCondition, SpeedLaw};
 use crate::rng;
-use crate::tally::{Bin, Curve, Outcome};
+use crate::tally::{Bin, BlockTally, ModelKind, Outcome, Pdf, Quantity, TallySpec};
 use crate::wall::{rotated_moments, Deviations};
 use nalgebra::Vector3;
-use rayon::prelude::*;
 
 /// The model's parameters for a run.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,94 +21,103 @@ pub struct ModelSetup {
     pub speed: SpeedLaw,
 }
 
-/// Everything one condition produced, in particle order.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct ConditionRun {
-    pub outcomes: Vec<Outcome>,
-    /// Candidate walls drawn in total (steps 2–6 of the procedure).
-    pub tries: u64,
-    /// Candidate rebounds computed in total (`U⁻·n < 0`).
-    pub candidates: u64,
-    /// Particles whose rebound hit the [`MAX_TRIES`] guard.
-    pub capped: u64,
-}
-
-impl ConditionRun {
-    /// Accepted fraction of candidate rebounds (the run's `p_single`).
-    pub fn p_single(&self) -> f64 {
-        if self.candidates > 0 {
-            self.outcomes.len() as f64 / self.candidates as f64
-        } else {
-            1.0
-        }
-    }
-}
-
 /// The tallied record of one stochastic rebound (radians; `β⁻ = beta_in`).
 pub fn outcome(r: &Rebound, u_in: &Vector3<f64>, beta_in: f64) -> Outcome {
     let (alpha_out, beta_out) = incident_angles(&r.velocity);
-    // The first wall seen, like the deterministic model's first normal (Figs. 10–11).
-    let (xi, zeta) = xi_zeta_of_normal(&r.first.normal);
     let s_in = u_in.norm();
     Outcome {
         alpha_out,
         beta_out,
+        alpha_out_xy: alpha_xy_of_velocity(&r.velocity),
         dbeta: wrap_pi(beta_out - beta_in),
-        dbeta_first: None,
-        xi_first: xi,
-        zeta_first: zeta,
+        // The first wall seen, like the deterministic model's first normal (Figs. 10–11).
+        xi_first: r.first.xi,
+        zeta_first: r.first.zeta,
         gamma_first: r.first.gamma,
         gamma_star_first: r.first.gamma_star,
-        collisions: None,
         speed_ratio: if s_in > 0.0 {
             r.velocity.norm() / s_in
         } else {
             1.0
         },
+        ..Default::default()
     }
 }
 
-/// `count` rebounds at condition `cond` (index `cond_index` in the case): particle `i`
-/// draws from `rng::stream(seed, &[STOCHASTIC, cond_index, i])`, so the outcomes
-/// (returned in particle order) do not depend on the thread count. Incident spin is
-/// zero (Radenkovic & Simonin 2021, Sec. 4).
-pub fn run_condition(
+/// Rebound `i` of condition `cond` (index `cond_index` in the case): the particle draws
+/// from its own stream `rng::stream(seed, &[STOCHASTIC, cond_index, i])`, so it does not
+/// depend on which thread or shard runs it. Incident spin is zero (Radenkovic & Simonin
+/// 2021, Sec. 4). Returns the incident velocity and the rebound.
+pub fn rebound_of(
     setup: &ModelSetup,
-    cond: IncidentCondition,
+    cond: &IncidentCondition,
     cond_index: u64,
-    count: usize,
+    i: u64,
     seed: u64,
-) -> ConditionRun {
-    // The velocity per unit horizontal speed, once per condition.
+) -> (Vector3<f64>, Rebound) {
     let per_unit = incident_velocity(cond.alpha_in, cond.beta_in, 1.0);
-    let per: Vec<(Outcome, u32, u32)> = (0..count)
-        .into_par_iter()
-        .map(|i| {
-            let mut r = rng::stream(seed, &[rng::domain::STOCHASTIC, cond_index, i as u64]);
-            let u = per_unit * draw_speed(&setup.speed, &mut r);
-            let reb = rebound(
-                u,
-                Vector3::zeros(),
-                &setup.wall,
-                &setup.law,
-                setup.psi,
-                setup.diameter_m,
-                &mut r,
-            );
-            (outcome(&reb, &u, cond.beta_in), reb.tries, reb.candidates)
-        })
-        .collect();
-    let mut run = ConditionRun {
-        outcomes: Vec::with_capacity(per.len()),
-        ..Default::default()
-    };
-    for (o, t, c) in per {
-        run.outcomes.push(o);
-        run.tries += t as u64;
-        run.candidates += c as u64;
-        run.capped += (t >= MAX_TRIES) as u64;
+    let inc = Incidence::new(cond.alpha_in, cond.beta_in, &setup.wall);
+    rebound_at(setup, &inc, &per_unit, &stream_prefix(seed, cond_index), i)
+}
+
+/// The part of a rebound's stream key shared by a condition: `(seed, STOCHASTIC, k)`.
+fn stream_prefix(seed: u64, cond_index: u64) -> rng::StreamPrefix {
+    rng::StreamPrefix::new(seed, &[rng::domain::STOCHASTIC, cond_index])
+}
+
+/// [`rebound_of`] with what a condition shares computed once: the incident direction's
+/// [`Incidence`] (the condition's exact angles), the velocity per unit horizontal speed and
+/// the stream prefix.
+#[inline]
+fn rebound_at(
+    setup: &ModelSetup,
+    inc: &Incidence,
+    per_unit: &Vector3<f64>,
+    prefix: &rng::StreamPrefix,
+    i: u64,
+) -> (Vector3<f64>, Rebound) {
+    let mut r = prefix.stream(i);
+    let u = per_unit * draw_speed(&setup.speed, &mut r);
+    let reb = rebound_from(
+        inc,
+        u,
+        Vector3::zeros(),
+        &setup.wall,
+        &setup.law,
+        setup.psi,
+        setup.diameter_m,
+        &mut r,
+    );
+    (u, reb)
+}
+
+/// Tallies rebounds `start..end` of a condition into `block`, in particle order.
+pub fn fill_block(
+    setup: &ModelSetup,
+    cond: &IncidentCondition,
+    cond_index: u64,
+    seed: u64,
+    (start, end): (u64, u64),
+    block: &mut BlockTally,
+) {
+    let per_unit = incident_velocity(cond.alpha_in, cond.beta_in, 1.0);
+    let inc = Incidence::new(cond.alpha_in, cond.beta_in, &setup.wall);
+    let prefix = stream_prefix(seed, cond_index);
+    for i in start..end {
+        let (u, reb) = rebound_at(setup, &inc, &per_unit, &prefix, i);
+        block.push(&outcome(&reb, &u, cond.beta_in));
+        block.push_candidates(reb.tries, reb.candidates, reb.tries >= MAX_TRIES);
     }
-    run
+}
+
+/// The tally specification of a condition of this model.
+pub fn tally_spec(wall: &Deviations, cond: IncidentCondition, bin_width_deg: f64) -> TallySpec {
+    TallySpec {
+        condition: cond,
+        deviations: *wall,
+        bin_width_deg,
+        model: ModelKind::Stochastic,
+    }
 }
 
 /// The model curve `gamma_model`: `P_eff(γ | α⁻)` (Radenkovic & Simonin 2021,
@@ -118,7 +125,7 @@ pub fn run_condition(
 /// `bin_width_deg` aligned like the tally's `gamma_first` histogram (multiples of the
 /// width from −90°), in 1/degree. `Δγ = 0` is a point mass at 0: the bin holding 0
 /// gets `1/width`.
-pub fn gamma_model_curve(wall: &Deviations, cond: &IncidentCondition, bin_width_deg: f64) -> Curve {
+pub fn gamma_model_curve(wall: &Deviations, cond: &IncidentCondition, bin_width_deg: f64) -> Pdf {
     let dg = rotated_moments(wall, cond.beta_in).var_a.max(0.0).sqrt();
     let w = bin_width_deg;
     let nb = (180.0 / w).ceil() as usize;
@@ -131,6 +138,7 @@ pub fn gamma_model_curve(wall: &Deviations, cond: &IncidentCondition, bin_width_
                 lo,
                 hi,
                 value: 1.0 / w,
+                se: None,
             })
             .collect()
     } else {
@@ -153,11 +161,9 @@ pub fn gamma_model_curve(wall: &Deviations, cond: &IncidentCondition, bin_width_
                 hi,
                 // per radian → per degree
                 value: p * std::f64::consts::PI / 180.0,
+                se: None,
             })
             .collect()
     };
-    Curve {
-        quantity: "gamma_model".into(),
-        bins,
-    }
+    Pdf::new(Quantity::GammaModel, bins)
 }

@@ -120,7 +120,7 @@ pub fn std(v: &[f64]) -> f64 {
 
 use rebound::case::{IncidentCondition, SpeedLaw};
 use rebound::collision::CollisionLaw;
-use rebound::deterministic::{run_condition, ConditionRun, Tracker};
+use rebound::deterministic::{run_condition, ConditionRun, ModelSetup, Tracker};
 use rebound::wall::Deviations;
 
 /// A Gaussian wall with normal-angle deviations `(Δξ, Δζ)` in degrees (Eq. 15,
@@ -148,25 +148,27 @@ pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> Deviations {
 pub fn run(
     tracker: &Tracker<'_>,
     law: &CollisionLaw,
-    _dv: &Deviations,
+    dv: &Deviations,
     alpha_deg: f64,
     beta_deg: f64,
     index: u64,
     count: usize,
     speed: SpeedLaw,
 ) -> ConditionRun {
+    let setup = ModelSetup {
+        law: *law,
+        diameter_m: 500e-6,
+        speed,
+        wall: *dv,
+        psi: 2.0,
+    };
     run_condition(
         tracker,
-        law,
-        500e-6,
-        IncidentCondition {
-            alpha_in: alpha_deg.to_radians(),
-            beta_in: beta_deg.to_radians(),
-        },
+        &setup,
+        IncidentCondition::from_degrees(alpha_deg, beta_deg),
         index,
         count,
         42,
-        &speed,
     )
 }
 

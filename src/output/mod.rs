@@ -1,5 +1,11 @@
 //! Writing results: atomic files (temporary file, then rename), deterministic number
-//! formatting, CSV tables and the run manifest `run.toml`.
+//! formatting, CSV tables (`csv`), the schema of the tally outputs (`schema`) and the run
+//! manifest `run.toml`.
+
+pub mod csv;
+pub mod schema;
+
+pub use self::csv::{CsvTable, Rows};
 
 use crate::error::{Error, Result};
 use std::io::Write;
@@ -62,67 +68,6 @@ pub fn fmt_num(x: f64) -> String {
 /// An optional number: empty cell for `None`.
 pub fn fmt_opt(x: Option<f64>) -> String {
     x.map(fmt_num).unwrap_or_default()
-}
-
-/// A CSV table with a fixed header.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct CsvTable {
-    pub header: Vec<String>,
-    pub rows: Vec<Vec<String>>,
-}
-
-impl CsvTable {
-    pub fn new(header: &[&str]) -> CsvTable {
-        CsvTable {
-            header: header.iter().map(|s| s.to_string()).collect(),
-            rows: Vec::new(),
-        }
-    }
-
-    pub fn push(&mut self, row: Vec<String>) {
-        debug_assert_eq!(row.len(), self.header.len());
-        self.rows.push(row);
-    }
-
-    pub fn to_bytes(&self) -> Vec<u8> {
-        let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
-        // Writing into memory cannot fail.
-        let _ = w.write_record(&self.header);
-        for r in &self.rows {
-            let _ = w.write_record(r);
-        }
-        w.into_inner().unwrap_or_default()
-    }
-
-    pub fn write(&self, path: &Path) -> Result<()> {
-        write_atomic(path, &self.to_bytes())
-    }
-
-    /// Reads a CSV file written by this tool; checks the header is exactly `header`.
-    pub fn read(path: &Path, header: &[&str]) -> Result<CsvTable> {
-        let mut r = csv::Reader::from_path(path)
-            .map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
-        let got: Vec<String> = r
-            .headers()
-            .map_err(|e| Error::Input(format!("{}: {e}", path.display())))?
-            .iter()
-            .map(String::from)
-            .collect();
-        if got != header {
-            return Err(Error::Input(format!(
-                "{}: not a rebound output (header is `{}`, expected `{}`)",
-                path.display(),
-                got.join(","),
-                header.join(",")
-            )));
-        }
-        let mut t = CsvTable::new(header);
-        for rec in r.records() {
-            let rec = rec.map_err(|e| Error::Input(format!("{}: {e}", path.display())))?;
-            t.rows.push(rec.iter().map(String::from).collect());
-        }
-        Ok(t)
-    }
 }
 
 /// The run manifest `run.toml`: what ran, with which case, seed and threads, and how long

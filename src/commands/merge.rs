@@ -1,0 +1,72 @@
+//! `rebound merge --out DIR SHARD_DIR...`: the partial tallies of `--shard K/N` runs
+//! become the outputs of one run, byte for byte (see `crate::runner::merge`).
+
+use crate::cli::MergeArgs;
+use crate::commands::{deterministic, stochastic, Context};
+use crate::error::{Error, Result};
+use crate::runner::{self, overrides_of};
+use crate::tally::partial::RunIdentity;
+use std::path::PathBuf;
+
+/// The context of the run the shards came from.
+fn context(id: &RunIdentity, out: Option<PathBuf>) -> Result<Context> {
+    let (seed, _) = overrides_of(id)?;
+    Context::from_text(
+        id.case_text.clone(),
+        id.case_origin.clone(),
+        Some(seed),
+        out,
+        &id.command,
+    )
+}
+
+/// Runs the subcommand.
+pub fn run(args: &MergeArgs) -> Result<()> {
+    let merged = runner::merge(&args.inputs, |id| {
+        let ctx = context(id, None)?;
+        let (_, o) = overrides_of(id)?;
+        match id.command.as_str() {
+            "stochastic" => {
+                let p = stochastic::prepare(&ctx.case, &o)?;
+                Ok((p.specs, p.scene.count as u64))
+            }
+            "deterministic" => {
+                let surface = id.surface_file.as_deref().map(std::path::Path::new);
+                let p = deterministic::prepare(&ctx.case, &o, surface)?;
+                Ok((p.specs, p.scene.count as u64))
+            }
+            other => Err(Error::Input(format!(
+                "partial tally of an unknown command `{other}`"
+            ))),
+        }
+    })?;
+    let id = &merged.identity;
+    let ctx = context(id, args.out.clone())?;
+    let (_, o) = overrides_of(id)?;
+    let mut manifest = ctx.manifest;
+    manifest.set_run("merged_shards", toml::Value::Integer(merged.shards as i64));
+    manifest.set_run(
+        "shard_seconds",
+        toml::Value::Array(
+            merged
+                .seconds
+                .iter()
+                .map(|&s| toml::Value::Float(s))
+                .collect(),
+        ),
+    );
+    let seconds: f64 = merged.seconds.iter().sum();
+    match id.command.as_str() {
+        "stochastic" => {
+            let mut p = stochastic::prepare(&ctx.case, &o)?;
+            p.notes = merged.manifest;
+            stochastic::finish(&ctx.out_dir, manifest, &p, &merged.tallies, None, seconds)
+        }
+        _ => {
+            let surface = id.surface_file.as_deref().map(std::path::Path::new);
+            let mut p = deterministic::prepare(&ctx.case, &o, surface)?;
+            p.notes = merged.manifest;
+            deterministic::finish(&ctx.out_dir, manifest, &p, &merged.tallies, None, seconds)
+        }
+    }
+}

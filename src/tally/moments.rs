@@ -1,0 +1,169 @@
+//! Count, mean and spread of a quantity as mergeable accumulators.
+//!
+//! Within a block of particles the values are summed as deviations from the block's
+//! first value ([`ShiftedSums`]: two additions and a multiply per value, no division, and
+//! no catastrophic cancellation because the shift is a sample of the same law). Blocks
+//! become [`Moments`] `(n, mean, M2)` and are merged with the pairwise update of Chan,
+//! Golub & LeVeque (1979), *Updating formulae and a pairwise algorithm for computing
+//! sample variances* — the form OpenMC's tallies and Welford's method share. Blocks are
+//! always merged in block order, so the floating-point result does not depend on how the
+//! blocks were spread over threads, shards or machines.
+
+/// Count, mean and sum of squared deviations from the mean (`M2`) of a set of values.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Moments {
+    pub n: u64,
+    pub mean: f64,
+    pub m2: f64,
+}
+
+impl Moments {
+    /// Adds the values summarised by `other` (Chan et al. 1979, Eq. 2.1b).
+    pub fn merge(&mut self, other: &Moments) {
+        if other.n == 0 {
+            return;
+        }
+        if self.n == 0 {
+            *self = *other;
+            return;
+        }
+        let n = self.n + other.n;
+        let delta = other.mean - self.mean;
+        let w = other.n as f64 / n as f64;
+        self.mean += delta * w;
+        self.m2 += other.m2 + delta * delta * self.n as f64 * w;
+        self.n = n;
+    }
+
+    /// Sample standard deviation (divisor `n − 1`; 0 for a single value), `None` when empty.
+    pub fn std(&self) -> Option<f64> {
+        match self.n {
+            0 => None,
+            1 => Some(0.0),
+            n => Some((self.m2.max(0.0) / (n - 1) as f64).sqrt()),
+        }
+    }
+
+    /// Standard error of the mean, `std / √n` (independent values), `None` when empty.
+    pub fn se(&self) -> Option<f64> {
+        self.std().map(|s| s / (self.n as f64).sqrt())
+    }
+
+    /// Mean, `None` when empty.
+    pub fn mean(&self) -> Option<f64> {
+        (self.n > 0).then_some(self.mean)
+    }
+
+    /// The same moments for the values multiplied by `k` (e.g. radians → degrees).
+    pub fn scaled(&self, k: f64) -> Moments {
+        Moments {
+            n: self.n,
+            mean: self.mean * k,
+            m2: self.m2 * k * k,
+        }
+    }
+}
+
+/// Sums of `x − shift` and `(x − shift)²` with `shift` the first value pushed.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ShiftedSums {
+    n: u64,
+    shift: f64,
+    s1: f64,
+    s2: f64,
+}
+
+impl ShiftedSums {
+    /// Adds a value; non-finite values are skipped (they never reach a tally from the
+    /// models, and one must not turn every later mean into NaN).
+    #[inline]
+    pub fn push(&mut self, x: f64) {
+        if !x.is_finite() {
+            return;
+        }
+        if self.n == 0 {
+            self.shift = x;
+        }
+        let d = x - self.shift;
+        self.n += 1;
+        self.s1 += d;
+        self.s2 += d * d;
+    }
+
+    /// Values pushed.
+    pub fn count(&self) -> u64 {
+        self.n
+    }
+
+    /// The block's `(n, mean, M2)`: `mean = shift + s1/n`, `M2 = s2 − s1²/n`.
+    pub fn moments(&self) -> Moments {
+        if self.n == 0 {
+            return Moments::default();
+        }
+        let d = self.s1 / self.n as f64;
+        Moments {
+            n: self.n,
+            mean: self.shift + d,
+            m2: (self.s2 - self.s1 * d).max(0.0),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn two_pass(xs: &[f64]) -> (f64, f64) {
+        let n = xs.len() as f64;
+        let m = xs.iter().sum::<f64>() / n;
+        let v = xs.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1.0);
+        (m, v.sqrt())
+    }
+
+    #[test]
+    fn blocks_merged_in_order_give_the_two_pass_mean_and_std() {
+        // Values with a large offset and a small spread: the case that breaks Σx² − (Σx)²/n.
+        let xs: Vec<f64> = (0..10_000)
+            .map(|i| 1e6 + ((i * 7919) % 1000) as f64 * 1e-3)
+            .collect();
+        let mut total = Moments::default();
+        for block in xs.chunks(777) {
+            let mut s = ShiftedSums::default();
+            block.iter().for_each(|&x| s.push(x));
+            total.merge(&s.moments());
+        }
+        let (m, sd) = two_pass(&xs);
+        assert_eq!(total.n, 10_000);
+        assert!((total.mean - m).abs() < 1e-9, "{} vs {m}", total.mean);
+        assert!((total.std().unwrap() / sd - 1.0).abs() < 1e-9);
+        assert!((total.se().unwrap() - sd / 100.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn empty_single_and_constant_sets() {
+        assert_eq!(Moments::default().std(), None);
+        let mut s = ShiftedSums::default();
+        s.push(3.0);
+        assert_eq!(s.moments().std(), Some(0.0));
+        for _ in 0..99 {
+            s.push(3.0);
+        }
+        let m = s.moments();
+        assert_eq!((m.n, m.mean, m.m2), (100, 3.0, 0.0));
+        s.push(f64::NAN);
+        assert_eq!(s.count(), 100);
+        let mut e = Moments::default();
+        e.merge(&m);
+        e.merge(&Moments::default());
+        assert_eq!(e, m);
+    }
+
+    #[test]
+    fn scaling_scales_mean_and_std() {
+        let mut s = ShiftedSums::default();
+        [1.0, 2.0, 4.0].iter().for_each(|&x| s.push(x));
+        let m = s.moments().scaled(10.0);
+        let (mean, sd) = two_pass(&[10.0, 20.0, 40.0]);
+        assert!((m.mean - mean).abs() < 1e-12 && (m.std().unwrap() - sd).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,191 @@
+//! Typed results of a condition: numbers stay numbers until `output::schema` writes them.
+
+use super::histogram::Bin;
+use super::moments::Moments;
+use super::quantity::Quantity;
+use crate::incidence::IncidentCondition;
+use crate::wall::Deviations;
+
+/// Mean, standard deviation and standard error of the mean of `n` values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Estimate {
+    pub n: u64,
+    pub mean: f64,
+    pub std: f64,
+    pub se: f64,
+}
+
+impl Estimate {
+    /// From moments; `None` when there are no values.
+    pub fn of(m: &Moments) -> Option<Estimate> {
+        Some(Estimate {
+            n: m.n,
+            mean: m.mean()?,
+            std: m.std()?,
+            se: m.se()?,
+        })
+    }
+
+    /// From exact integer sums `Σx`, `Σx²` of `n` integer values: the variance
+    /// `(nΣx² − (Σx)²) / (n(n − 1))` is formed in integers, so it is exact before the
+    /// final division.
+    pub fn of_counts(n: u64, sum: u128, sum_sq: u128) -> Option<Estimate> {
+        if n == 0 {
+            return None;
+        }
+        let nn = n as u128;
+        let mean = sum as f64 / n as f64;
+        let var = if n > 1 {
+            let num = nn
+                .checked_mul(sum_sq)
+                .and_then(|a| a.checked_sub(sum.checked_mul(sum)?));
+            match num {
+                Some(num) => num as f64 / (nn * (nn - 1)) as f64,
+                // Beyond u128 (not reachable within the schema's limits): floating point.
+                None => ((sum_sq as f64 - sum as f64 * mean) / (n - 1) as f64).max(0.0),
+            }
+        } else {
+            0.0
+        };
+        let std = var.sqrt();
+        Some(Estimate {
+            n,
+            mean,
+            std,
+            se: std / (n as f64).sqrt(),
+        })
+    }
+}
+
+/// A probability and its standard error.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Proportion {
+    pub value: f64,
+    pub se: f64,
+}
+
+impl Proportion {
+    /// `k` successes in `n` independent trials: `k/n`, `√(p(1 − p)/n)`.
+    pub fn binomial(k: u64, n: u64) -> Proportion {
+        let p = k as f64 / n as f64;
+        Proportion {
+            value: p,
+            se: (p * (1.0 - p) / n as f64).sqrt(),
+        }
+    }
+
+    /// `n` accepted particles over `Σc` candidates, `c` the candidates of each particle
+    /// (`Σc²` given): `p = n/Σc = 1/mean(c)`, with the delta-method error
+    /// `p² · sd(c)/√n`.
+    pub fn per_trials(n: u64, sum: u128, sum_sq: u128) -> Proportion {
+        let c = Estimate::of_counts(n, sum, sum_sq);
+        let p = if sum > 0 { n as f64 / sum as f64 } else { 1.0 };
+        Proportion {
+            value: p,
+            se: c.map_or(0.0, |c| p * p * c.se),
+        }
+    }
+}
+
+/// One line of `summary.csv`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Summary {
+    pub condition: IncidentCondition,
+    pub deviations: Deviations,
+    /// Histories followed (deterministic: lost ones excluded; stochastic: rebounds).
+    pub particles: u64,
+    /// Final rebound angle `α⁺` (degrees).
+    pub alpha_out: Option<Estimate>,
+    /// Final `β⁺ − β⁻` (degrees).
+    pub dbeta: Option<Estimate>,
+    /// `β⁺ − β⁻` after the first collision (degrees; deterministic).
+    pub dbeta_first: Option<Estimate>,
+    /// `γ`, `γ*` of the first normal seen (degrees).
+    pub gamma: Option<Estimate>,
+    pub gamma_star: Option<Estimate>,
+    /// Deterministic: fraction of single-collision histories; stochastic: accepted
+    /// fraction of candidate rebounds.
+    pub p_single: Option<Proportion>,
+    /// Collisions per history (deterministic).
+    pub collisions: Option<Estimate>,
+    pub max_collisions: Option<u32>,
+    /// `|U⁺|/|U⁻|`.
+    pub speed_ratio: Option<Estimate>,
+    /// Histories that could not be followed (deterministic).
+    pub lost: Option<u64>,
+}
+
+/// A PDF or per-bin curve of one quantity.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pdf {
+    pub quantity: Quantity,
+    pub bins: Vec<Bin>,
+}
+
+impl Pdf {
+    pub fn new(quantity: Quantity, bins: Vec<Bin>) -> Pdf {
+        Pdf { quantity, bins }
+    }
+}
+
+/// Everything one incident condition produced.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConditionResult {
+    pub summary: Summary,
+    /// PDFs and curves, in `pdfs.csv` order.
+    pub pdfs: Vec<Pdf>,
+    /// Mean, std and standard error of every quantity with values (`moments.csv`).
+    pub estimates: Vec<(Quantity, Estimate)>,
+}
+
+impl ConditionResult {
+    /// The incident condition.
+    pub fn condition(&self) -> IncidentCondition {
+        self.summary.condition
+    }
+
+    /// The bins of one quantity, if present.
+    pub fn pdf(&self, q: Quantity) -> Option<&[Bin]> {
+        self.pdfs
+            .iter()
+            .find(|p| p.quantity == q)
+            .map(|p| p.bins.as_slice())
+    }
+
+    /// The estimate of one quantity, if present.
+    pub fn estimate(&self, q: Quantity) -> Option<&Estimate> {
+        self.estimates.iter().find(|e| e.0 == q).map(|e| &e.1)
+    }
+
+    /// Appends a model curve (e.g. `gamma_model`).
+    pub fn push_curve(&mut self, pdf: Pdf) {
+        self.pdfs.push(pdf);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn integer_estimates_are_exact() {
+        // 1, 2, 3, 4: mean 2.5, variance 5/3.
+        let e = Estimate::of_counts(4, 10, 30).unwrap();
+        assert_eq!(e.mean, 2.5);
+        assert!((e.std - (5.0f64 / 3.0).sqrt()).abs() < 1e-15);
+        assert_eq!(Estimate::of_counts(1, 7, 49).unwrap().std, 0.0);
+        assert_eq!(Estimate::of_counts(0, 0, 0), None);
+        // Constant values: exactly zero spread.
+        assert_eq!(Estimate::of_counts(1000, 3000, 9000).unwrap().std, 0.0);
+    }
+
+    #[test]
+    fn proportions() {
+        let p = Proportion::binomial(1, 4);
+        assert_eq!(p.value, 0.25);
+        assert!((p.se - (0.1875f64 / 4.0).sqrt()).abs() < 1e-15);
+        // Every particle accepted at its first candidate: p = 1 exactly, no error.
+        let q = Proportion::per_trials(10, 10, 10);
+        assert_eq!((q.value, q.se), (1.0, 0.0));
+    }
+}

@@ -1,19 +1,27 @@
 //! Accepted rebounds per second of the stochastic model (issue 4 targets on 2 cores:
 //! ≥ 5 M/s elastic (2.5°, 7.5°) at α⁻ = −12.5°, ≥ 2 M/s Sommerfeld–Huber Sec. 4 scene,
-//! ≥ 1 M/s at grazing α⁻ = −0.5°), and proposals per accepted γ of the shadow sampler.
+//! ≥ 1 M/s at grazing α⁻ = −0.5°), proposals per accepted γ of the shadow sampler, and
+//! where the time of one rebound goes (issue 10): the steps of a tallied rebound timed
+//! one by one on one core.
 //!
 //! Each batch runs `N` particles in parallel with rayon (one RNG stream per particle, as
 //! `rebound stochastic` does). Run: `cargo bench --bench stochastic`.
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use nalgebra::Vector3;
+use rand::Rng;
+use rand_distr::StandardNormal;
 use rayon::prelude::*;
+use rebound::angles::{alpha_xy_of_velocity, incident_angles, normal_from_gamma};
 use rebound::case::SpeedLaw;
 use rebound::collision::{CollisionLaw, ShParams};
+use rebound::incidence::IncidentCondition;
 use rebound::incidence::{draw_speed, incident_velocity};
 use rebound::rng;
-use rebound::stochastic::rebound;
 use rebound::stochastic::shadow_effect::ShadowSampler;
-use rebound::wall::{delta_gamma, Deviations};
+use rebound::stochastic::simulate::{fill_block, outcome, tally_spec, ModelSetup};
+use rebound::stochastic::{rebound, rebound_from, Incidence};
+use rebound::tally::BlockTally;
+use rebound::wall::{conditional_gamma_star, delta_gamma, rotated_moments, Deviations};
 use std::time::Instant;
 
 const N: u64 = 200_000;
@@ -167,5 +175,118 @@ fn report(_: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, report, bench_rebounds, bench_sampler);
+/// One tallied block of `n` rebounds of a scene on one core: what `rebound stochastic` does
+/// per worker.
+fn tallied_block(s: &Scene, n: u64) -> BlockTally {
+    let setup = ModelSetup {
+        wall: s.wall,
+        law: s.law,
+        psi: 2.0,
+        diameter_m: 500e-6,
+        speed: s.speed,
+    };
+    let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
+    let mut block = BlockTally::new(&tally_spec(&s.wall, cond, 1.0), 0);
+    fill_block(&setup, &cond, 0, 1, (0, n), &mut block);
+    block
+}
+
+/// The steps of one tallied rebound on one core, each timed over the same particles:
+/// the cumulative cost of the procedure up to a step, minus the one before, is that step's
+/// share. Printed as a table for the README's breakdown.
+fn breakdown(_: &mut Criterion) {
+    let s = &scenes()[0];
+    let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
+    let inc = Incidence::new(cond.alpha_in, cond.beta_in, &s.wall);
+    let m = rotated_moments(&s.wall, cond.beta_in);
+    let per_unit = incident_velocity(cond.alpha_in, cond.beta_in, 1.0);
+    let prefix = rng::StreamPrefix::new(1, &[rng::domain::STOCHASTIC, 0]);
+    let sampler = ShadowSampler::new(cond.alpha_in, m.var_a.sqrt());
+    let n = 2_000_000u64;
+    let time = |f: &dyn Fn(u64) -> f64| {
+        let t = Instant::now();
+        let mut acc = 0.0;
+        for i in 0..n {
+            acc += f(i);
+        }
+        black_box(acc);
+        t.elapsed().as_secs_f64() * 1e9 / n as f64
+    };
+    let stream = time(&|i| {
+        let mut r = prefix.stream(i);
+        r.gen::<f64>()
+    });
+    let speed = time(&|i| {
+        let mut r = prefix.stream(i);
+        draw_speed(&s.speed, &mut r)
+    });
+    let wall = time(&|i| {
+        let mut r = prefix.stream(i);
+        let g = sampler.sample(&mut r);
+        let (mean, var) = conditional_gamma_star(&m, g);
+        let z: f64 = r.sample(StandardNormal);
+        normal_from_gamma(g, mean + var.sqrt() * z, cond.beta_in).x
+    });
+    let whole = time(&|i| {
+        let mut r = prefix.stream(i);
+        let u = per_unit * draw_speed(&s.speed, &mut r);
+        rebound_from(
+            &inc,
+            u,
+            Vector3::zeros(),
+            &s.wall,
+            &s.law,
+            2.0,
+            500e-6,
+            &mut r,
+        )
+        .velocity
+        .y
+    });
+    let angles = time(&|i| {
+        let mut r = prefix.stream(i);
+        let u = per_unit * draw_speed(&s.speed, &mut r);
+        let out = rebound_from(
+            &inc,
+            u,
+            Vector3::zeros(),
+            &s.wall,
+            &s.law,
+            2.0,
+            500e-6,
+            &mut r,
+        );
+        let (a, b) = incident_angles(&out.velocity);
+        a + b + alpha_xy_of_velocity(&out.velocity)
+    });
+    let t = Instant::now();
+    black_box(tallied_block(s, n));
+    let tallied = t.elapsed().as_secs_f64() * 1e9 / n as f64;
+    let _ = outcome; // (the tallied record: angles above plus the first wall's, no extra cost)
+    println!(
+        "\n== where one tallied rebound goes, {} (one core, ns) ==",
+        s.name
+    );
+    println!("| step | ns per rebound | share |\n|---|---|---|");
+    let rows = [
+        ("random stream (key → xoshiro256++) and one uniform", stream),
+        ("incident speed N(mean, std)", speed - stream),
+        (
+            "candidate wall: γ (shadow sampler), γ* (Eq. 30), normal (Eq. 23)",
+            wall - stream,
+        ),
+        (
+            "collision law, Eq. (34) acceptance, redraws (rest of the procedure)",
+            whole - speed - (wall - stream),
+        ),
+        ("rebound angles α⁺, β⁺, α⁺_xy", angles - whole),
+        ("tally (12 histograms, 13 moment sums)", tallied - angles),
+    ];
+    for (what, ns) in rows {
+        println!("| {what} | {ns:.0} | {:.0} % |", 100.0 * ns / tallied);
+    }
+    println!("| **total, tallied rebound** | **{tallied:.0}** | 100 % |");
+}
+
+criterion_group!(benches, report, breakdown, bench_rebounds, bench_sampler);
 criterion_main!(benches);

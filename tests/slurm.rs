@@ -1,0 +1,30 @@
+//! Shards on a real Slurm cluster (issue 10): `scripts/slurm/test-local-cluster.sh` installs
+//! Debian's slurm-wlm and munge when they are missing, starts a single-node cluster on
+//! 127.0.0.1, runs a deterministic and a stochastic case as 4-shard job arrays with a
+//! dependent merge job, checks the merged CSVs byte for byte against one process and that a
+//! failing shard cancels the merge, and stops the daemons by their process ids.
+
+use std::process::Command;
+
+#[test]
+fn four_shards_on_a_local_slurm_cluster_merge_to_the_bytes_of_one_process() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let out = Command::new("bash")
+        .arg(format!("{root}/scripts/slurm/test-local-cluster.sh"))
+        .env("REBOUND_BIN", env!("CARGO_BIN_EXE_rebound"))
+        .output()
+        .expect("run scripts/slurm/test-local-cluster.sh");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for model in ["deterministic", "stochastic"] {
+        assert!(
+            stdout.contains(&format!("{model}: 4 Slurm shards merged = one process")),
+            "{stdout}"
+        );
+    }
+    assert!(stdout.contains("cancels the merge job"), "{stdout}");
+}

@@ -3,15 +3,15 @@
 //! `aniso.toml` scene at 10⁵ particles per condition (surface included).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use rebound::case::{IncidentCondition, SpeedLaw};
-use rebound::cli::{CommonArgs, DeterministicArgs, TallyArgs};
-use rebound::collision::CollisionLaw;
-use rebound::commands::deterministic::{generate_surface, SurfacePlan};
-use rebound::deterministic::scene::{choose_surface, SceneOptions};
-use rebound::deterministic::{fill_block, tally_spec, ModelSetup, Tracker};
-use rebound::surface::HeightField;
-use rebound::tally::BlockTally;
-use rebound::wall::Deviations;
+use roughwall::case::{IncidentCondition, SpeedLaw};
+use roughwall::cli::{CommonArgs, DeterministicArgs, TallyArgs};
+use roughwall::collision::CollisionLaw;
+use roughwall::commands::deterministic::{generate_surface, SurfacePlan};
+use roughwall::deterministic::scene::{choose_surface, SceneOptions};
+use roughwall::deterministic::{fill_block, tally_spec, ModelSetup, Tracker};
+use roughwall::surface::HeightField;
+use roughwall::tally::BlockTally;
+use roughwall::wall::Deviations;
 use std::time::Duration;
 
 const UNIT: SpeedLaw = SpeedLaw {
@@ -82,7 +82,7 @@ fn whole_case(c: &mut Criterion) {
     let mut g = c.benchmark_group("deterministic_case");
     g.sample_size(10).measurement_time(Duration::from_secs(40));
     g.bench_function("aniso_1e5_per_condition", |b| {
-        b.iter(|| rebound::commands::deterministic::run(&args).unwrap())
+        b.iter(|| roughwall::commands::deterministic::run(&args).unwrap())
     });
     g.finish();
     let _ = std::fs::remove_dir_all(&dir);

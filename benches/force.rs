@@ -2,7 +2,7 @@
 //! issue 5 asks ≥ 10 M/s on 2 cores) and `hertz-dynamic` (time per impact).
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use rayon::prelude::*;
-use rebound::force::{hertz_dynamic, Impact, Model, Particle};
+use roughwall::force::{hertz_dynamic, Impact, Model, Particle};
 
 const GLASS: Particle = Particle {
     density: 2500.0,

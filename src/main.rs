@@ -4,7 +4,7 @@ use clap::error::ErrorKind;
 use clap::Parser;
 
 fn main() {
-    let cli = match rebound::cli::Cli::try_parse() {
+    let cli = match roughwall::cli::Cli::try_parse() {
         Ok(cli) => cli,
         Err(e)
             if matches!(
@@ -18,11 +18,11 @@ fn main() {
         }
         Err(e) => {
             // One line, like every other input error: clap's message without its usage hints.
-            eprintln!("{}", rebound::cli::one_line(&e.render().to_string()));
+            eprintln!("{}", roughwall::cli::one_line(&e.render().to_string()));
             std::process::exit(2);
         }
     };
-    if let Err(e) = rebound::cli::run(cli) {
+    if let Err(e) = roughwall::cli::run(cli) {
         eprintln!("error: {e}");
         std::process::exit(e.exit_code());
     }

@@ -3,11 +3,11 @@
 
 mod deterministic_support;
 use deterministic_support::*;
-use rebound::case::SpeedLaw;
-use rebound::collision::{CollisionLaw, ShParams};
-use rebound::deterministic::{ConditionRun, Tracker};
-use rebound::output::schema::tables;
-use rebound::surface::HeightField;
+use roughwall::case::SpeedLaw;
+use roughwall::collision::{CollisionLaw, ShParams};
+use roughwall::deterministic::{ConditionRun, Tracker};
+use roughwall::output::schema::tables;
+use roughwall::surface::HeightField;
 use std::time::Instant;
 
 fn laws() -> [CollisionLaw; 2] {
@@ -159,7 +159,7 @@ fn outputs_are_identical_for_any_thread_count() {
 
 #[test]
 fn shipped_cases_resolve() {
-    use rebound::commands::deterministic::{deterministic_options, SurfacePlan};
+    use roughwall::commands::deterministic::{deterministic_options, SurfacePlan};
     for name in [
         "aniso",
         "aniso-rev",
@@ -172,7 +172,7 @@ fn shipped_cases_resolve() {
         "glass-steel-fig17-2d",
     ] {
         let path = std::path::PathBuf::from(format!("cases/{name}.toml"));
-        let case = rebound::case::load(Some(&path), "").unwrap();
+        let case = roughwall::case::load(Some(&path), "").unwrap();
         assert_eq!(case.name, name);
         let scene = case.scene().unwrap();
         let opt = deterministic_options(&case).unwrap();

@@ -4,16 +4,16 @@
 
 mod deterministic_support;
 use deterministic_support::*;
-use rebound::collision::CollisionLaw;
-use rebound::deterministic::Tracker;
-use rebound::tally::Quantity;
+use roughwall::collision::CollisionLaw;
+use roughwall::deterministic::Tracker;
+use roughwall::tally::Quantity;
 
 /// Paper-scale numbers (run with `--release -- --ignored --nocapture`): both walls of
 /// Sec. 3 on the surfaces `deterministic` chooses, 10⁵ particles per condition.
 #[test]
 #[ignore]
 fn paper_scale_sec3() {
-    use rebound::deterministic::scene::{choose_surface, SceneOptions};
+    use roughwall::deterministic::scene::{choose_surface, SceneOptions};
     for (dxi, dze) in [(2.5f64, 7.5f64), (7.5, 2.5)] {
         let c =
             choose_surface(dxi.to_radians(), dze.to_radians(), &SceneOptions::default()).unwrap();

@@ -4,13 +4,13 @@
 
 mod deterministic_support;
 use deterministic_support::*;
-use rebound::collision::{CollisionLaw, ShParams};
-use rebound::deterministic::{ConditionRun, Tracker};
-use rebound::wall::delta_gamma;
+use roughwall::collision::{CollisionLaw, ShParams};
+use roughwall::deterministic::{ConditionRun, Tracker};
+use roughwall::wall::delta_gamma;
 
 const N: usize = 10_000;
 
-fn stats(run: &ConditionRun, f: impl Fn(&rebound::tally::Outcome) -> f64) -> (f64, f64, f64) {
+fn stats(run: &ConditionRun, f: impl Fn(&roughwall::tally::Outcome) -> f64) -> (f64, f64, f64) {
     let v: Vec<f64> = run.outcomes.iter().map(|o| f(o).to_degrees()).collect();
     let (m, se) = mean_se(&v);
     (m, se, std(&v))
@@ -202,7 +202,7 @@ fn sommerfeld_huber_never_gains_energy_and_keeps_the_pushing_direction() {
     // Sec. 4: glass on steel, D = 500 µm, u ~ N(5.91, 1.16) m/s, on the high-anisotropy
     // wall (3.8°, 7.5°) and the 2-D wall (3.8°, 0°).
     let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
-    let speed = rebound::case::SpeedLaw {
+    let speed = roughwall::case::SpeedLaw {
         mean_m_s: 5.91,
         std_m_s: 1.16,
     };

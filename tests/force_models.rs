@@ -1,5 +1,5 @@
 //! Issue 5, "Correctness it must show": the four force models of `rebound force-sweep`.
-use rebound::force::{hertz_dynamic, hertz_sphere, hu2021, material, Impact, Model, Particle};
+use roughwall::force::{hertz_dynamic, hertz_sphere, hu2021, material, Impact, Model, Particle};
 
 const ALL: [Model; 4] = Model::ALL;
 const SPHEROID_MODELS: [Model; 3] = [Model::Hu2021, Model::HertzRigid, Model::HertzDynamic];
@@ -278,10 +278,10 @@ fn dynamic_converges_at_both_scales() {
 /// Bad input is a one-line `Error::Input` with a clear message.
 #[test]
 fn errors() {
-    let one_line = |e: rebound::error::Error| {
+    let one_line = |e: roughwall::error::Error| {
         let s = e.to_string();
         assert!(
-            matches!(e, rebound::error::Error::Input(_)) && !s.contains('\n'),
+            matches!(e, roughwall::error::Error::Input(_)) && !s.contains('\n'),
             "{s}"
         );
         s

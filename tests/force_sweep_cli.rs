@@ -1,7 +1,7 @@
 //! `rebound force-sweep` end to end: outputs, shipped cases, bad input.
-use rebound::cli::{CommonArgs, ForceSweepArgs};
-use rebound::commands::force_sweep::{resolve, run, HEADER};
-use rebound::error::Error;
+use roughwall::cli::{CommonArgs, ForceSweepArgs};
+use roughwall::commands::force_sweep::{resolve, run, HEADER};
+use roughwall::error::Error;
 use std::path::{Path, PathBuf};
 
 fn args(case: Option<PathBuf>, out: &Path) -> ForceSweepArgs {
@@ -85,7 +85,8 @@ fn shipped_cases() {
         "hu-fig11b",
         "hu-fig12",
     ] {
-        let case = rebound::case::load(Some(Path::new(&format!("cases/{name}.toml"))), "").unwrap();
+        let case =
+            roughwall::case::load(Some(Path::new(&format!("cases/{name}.toml"))), "").unwrap();
         let (p, s) = resolve(&case).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(p.validate().is_ok() && !s.is_empty(), "{name}");
     }

@@ -23,14 +23,15 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         .unwrap();
     assert!(status.success(), "reproduce-all.sh failed");
     let o = out.path();
-    let summary = rebound::output::schema::SUMMARY_HEADER.join(",");
-    let pdfs = rebound::output::schema::PDFS_HEADER.join(",");
-    let comparison = rebound::compare::COMPARISON_HEADER.join(",");
+    let summary = roughwall::output::schema::SUMMARY_HEADER.join(",");
+    let pdfs = roughwall::output::schema::PDFS_HEADER.join(",");
+    let moments = roughwall::output::schema::MOMENTS_HEADER.join(",");
+    let comparison = roughwall::compare::COMPARISON_HEADER.join(",");
     let mut expect: Vec<(String, String)> = vec![
         ("radenkovic2021/table1/surface_summary.csv".into(), "nodes,length_um,spacing_um,rms_height_um,target_rms_height_um,rms_slope_x,target_rms_slope_x,rms_slope_z,target_rms_slope_z,delta_xi_deg,target_delta_xi_deg,delta_zeta_deg,target_delta_zeta_deg,max_height_um".into()),
         ("radenkovic2021/table1/normal_angles.csv".into(), "beta_star_deg,delta_xi_star_deg,delta_zeta_star_deg,rho_xi_zeta,rho_xi_eta,rho_eta_zeta,model_delta_xi_star_deg,model_delta_zeta_star_deg,model_rho_xi_zeta".into()),
         ("radenkovic2021/fig4/fig4.csv".into(), "axis,h_over_cl,rms_slope,delta_rad,eq14_rad".into()),
-        ("speed_vs_error.csv".into(), "model,particles,spacing_per_corr_length,wall_time_s,us_per_particle,max_ks_alpha_out,max_ks_dbeta,max_abs_mean_alpha_out_err_deg".into()),
+        ("speed_vs_error.csv".into(), "model,particles,spacing_per_corr_length,wall_time_s,us_per_particle,max_ks_alpha_out,max_ks_dbeta,max_abs_mean_alpha_out_err_deg,target_se_deg,max_se_mean_alpha_out_deg,max_abs_z_alpha_out".into()),
     ];
     for scene in [
         "sec3-aniso",
@@ -49,6 +50,10 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
             expect.push((
                 format!("radenkovic2021/{scene}/{model}/pdfs.csv"),
                 pdfs.clone(),
+            ));
+            expect.push((
+                format!("radenkovic2021/{scene}/{model}/moments.csv"),
+                moments.clone(),
             ));
         }
         expect.push((

@@ -77,7 +77,7 @@ fn default_run_has_the_shared_schema_model_curve_and_figures() {
     let summary = read(&out.join("summary.csv"));
     let mut lines = summary.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    assert_eq!(header, rebound::output::schema::SUMMARY_HEADER.to_vec());
+    assert_eq!(header, roughwall::output::schema::SUMMARY_HEADER.to_vec());
     let rows: Vec<Vec<String>> = lines
         .map(|l| l.split(',').map(String::from).collect())
         .collect();

@@ -1,5 +1,5 @@
 //! `rebound surface` end to end: outputs, reproducibility, special walls, bad input.
-use rebound::surface::heights_io::read_heights;
+use roughwall::surface::heights_io::read_heights;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

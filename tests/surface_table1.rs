@@ -1,10 +1,10 @@
 //! Table 1 of Radenkovic & Simonin 2021 on generated surfaces: the acceptance
 //! criteria, at a CI-friendly size (same δ/c_L as Table 1, L/c_Lx = 128) and, ignored
 //! by default, on the full N = 5001 surface of `configs/cases/table1.toml`.
-use rebound::case::{self, SurfaceSpec};
-use rebound::surface::generate;
-use rebound::surface::stats::surface_stats;
-use rebound::wall::{rotated_moments, Deviations};
+use roughwall::case::{self, SurfaceSpec};
+use roughwall::surface::generate;
+use roughwall::surface::stats::surface_stats;
+use roughwall::wall::{rotated_moments, Deviations};
 
 fn check_table1(spec: &SurfaceSpec, seed: u64) {
     let betas: Vec<f64> = [0.0f64, 30.0, 60.0, 90.0]

@@ -229,14 +229,14 @@ fn accept_single_collision<R: Rng + ?Sized>(
 /// ```
 /// use nalgebra::Vector3;
 /// use rand::SeedableRng;
-/// use rebound::collision::{CollisionLaw, ShParams};
-/// use rebound::stochastic::rebound;
-/// use rebound::wall::Deviations;
+/// use roughwall::collision::{CollisionLaw, ShParams};
+/// use roughwall::stochastic::rebound;
+/// use roughwall::wall::Deviations;
 ///
 /// // Glass bead (D = 500 µm) hitting a steel wall at α⁻ = −15°, β⁻ = 60°.
 /// let wall = Deviations { delta_xi: 3.8_f64.to_radians(), delta_zeta: 7.5_f64.to_radians() };
 /// let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
-/// let u_in = rebound::angles::velocity_from_angles(6.0, (-15f64).to_radians(), 60f64.to_radians());
+/// let u_in = roughwall::angles::velocity_from_angles(6.0, (-15f64).to_radians(), 60f64.to_radians());
 /// let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(42);
 /// let out = rebound(u_in, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
 /// assert!(out.velocity.y > 0.0);                      // leaves the wall

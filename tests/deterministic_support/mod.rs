@@ -5,7 +5,7 @@
 use rand::SeedableRng;
 use rand_distr::{Distribution, StandardNormal};
 use rand_xoshiro::Xoshiro256PlusPlus;
-use rebound::surface::HeightField;
+use roughwall::surface::HeightField;
 use rustfft::num_complex::Complex;
 use rustfft::FftPlanner;
 
@@ -118,10 +118,10 @@ pub fn std(v: &[f64]) -> f64 {
     (v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0)).sqrt()
 }
 
-use rebound::case::{IncidentCondition, SpeedLaw};
-use rebound::collision::CollisionLaw;
-use rebound::deterministic::{run_condition, ConditionRun, ModelSetup, Tracker};
-use rebound::wall::Deviations;
+use roughwall::case::{IncidentCondition, SpeedLaw};
+use roughwall::collision::CollisionLaw;
+use roughwall::deterministic::{run_condition, ConditionRun, ModelSetup, Tracker};
+use roughwall::wall::Deviations;
 
 /// A Gaussian wall with normal-angle deviations `(Δξ, Δζ)` in degrees (Eq. 15,
 /// `c_L = √2 h / Δ`, `h = 1`), spacing `c_L,min / per_c`, side `≥ side · c_L,max`.

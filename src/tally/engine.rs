@@ -3,14 +3,16 @@
 //!
 //! Particle `i` of condition `k` always belongs to block `i / BLOCK_SIZE`, whatever the
 //! thread count; a worker fills one block in particle order; blocks are absorbed into
-//! their condition in block order. Work is handed out in waves of a few blocks per thread,
-//! so memory does not grow with the particle count. The stopping rule is checked after
-//! each absorbed block, on the tally of the blocks before it only, so where a condition
-//! stops does not depend on the threads either.
+//! their condition in block order. Workers run at most a few blocks ahead of the oldest
+//! unfinished one, so memory does not grow with the particle count. The stopping rule is
+//! checked after each absorbed block, on the tally of the blocks before it only, so where
+//! a condition stops does not depend on the threads either.
 
 use super::condition::{BlockTally, ConditionTally, TallySpec};
 use crate::progress::Progress;
-use rayon::prelude::*;
+use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Condvar, Mutex};
 use std::time::Instant;
 
 /// Particles per block: the unit of work, of reproducibility and of the stopping rule.
@@ -109,111 +111,156 @@ impl Plan {
     }
 }
 
-/// Runs the plan. `fill(k, start, end, block)` tallies particles `start..end` of
-/// condition `k` into `block`, in particle order. Returns each condition's tally and
-/// statistics, in condition order.
-pub fn run<F>(plan: &Plan, progress: &Progress, fill: F) -> Vec<(ConditionTally, ConditionStats)>
-where
-    F: Fn(usize, u64, u64, &mut BlockTally) + Sync,
-{
-    let mut tallies: Vec<(ConditionTally, ConditionStats)> = plan
-        .specs
-        .iter()
-        .map(|s| {
-            (
-                ConditionTally::new(*s),
-                ConditionStats {
-                    target_reached: plan.target_se_deg.map(|_| false),
-                    ..Default::default()
-                },
-            )
-        })
+/// The run's blocks in the order they are handed out: condition by condition, or, under a
+/// target, round-robin over the conditions (so that all of them approach their stopping
+/// points together and few blocks past one are computed in vain). Either way each
+/// condition's blocks come in block order.
+fn work_list(plan: &Plan) -> Vec<(usize, u64)> {
+    let owned: Vec<Vec<u64>> = (0..plan.specs.len())
+        .map(|k| plan.owned_blocks(k))
         .collect();
-    // Blocks still to run, per condition, in order.
-    let mut pending: Vec<std::collections::VecDeque<u64>> = (0..plan.specs.len())
-        .map(|k| plan.owned_blocks(k).into())
-        .collect();
-    let wave = (4 * rayon::current_num_threads()).clamp(2, 64);
-    loop {
-        // Without a target, blocks go out in case order. Under a target, round-robin over
-        // the conditions still running, so that few blocks past a stopping point are wasted.
-        let mut items: Vec<(usize, u64)> = Vec::with_capacity(wave);
-        if plan.target_se_deg.is_none() {
-            for (k, q) in pending.iter_mut().enumerate() {
-                while items.len() < wave {
-                    match q.pop_front() {
-                        Some(b) => items.push((k, b)),
-                        None => break,
-                    }
-                }
-            }
-        } else {
-            let mut taken: Vec<usize> = vec![0; pending.len()];
-            while items.len() < wave {
-                let before = items.len();
-                for (k, q) in pending.iter().enumerate() {
-                    if items.len() < wave {
-                        if let Some(&b) = q.get(taken[k]) {
-                            items.push((k, b));
-                            taken[k] += 1;
-                        }
-                    }
-                }
-                if items.len() == before {
-                    break;
-                }
-            }
-            for (k, n) in taken.into_iter().enumerate() {
-                pending[k].drain(..n);
-            }
-            items.sort_unstable();
-        }
-        if items.is_empty() {
-            break;
-        }
-        let done: Vec<(usize, BlockTally, f64)> = items
-            .par_iter()
-            .map(|&(k, b)| {
-                let t0 = Instant::now();
-                let mut block = BlockTally::new(&plan.specs[k], b);
-                let (start, end) = plan.block_range(b);
-                fill(k, start, end, &mut block);
-                (k, block, t0.elapsed().as_secs_f64())
-            })
+    if plan.target_se_deg.is_none() {
+        return owned
+            .iter()
+            .enumerate()
+            .flat_map(|(k, bs)| bs.iter().map(move |&b| (k, b)))
             .collect();
-        for (k, block, secs) in done {
-            let (tally, stats) = &mut tallies[k];
+    }
+    let longest = owned.iter().map(Vec::len).max().unwrap_or(0);
+    (0..longest)
+        .flat_map(|j| {
+            owned
+                .iter()
+                .enumerate()
+                .filter_map(move |(k, bs)| bs.get(j).map(|&b| (k, b)))
+        })
+        .collect()
+}
+
+/// What the workers share: the tallies, and the blocks finished out of order.
+struct Shared {
+    tallies: Vec<(ConditionTally, ConditionStats)>,
+    /// Finished blocks waiting for the ones before them: work-list index → block.
+    waiting: BTreeMap<usize, Finished>,
+    /// Work-list index of the next block to absorb.
+    absorbed: usize,
+}
+
+/// A finished block (`None`: skipped, its condition had already reached its target).
+type Finished = (usize, Option<(BlockTally, f64)>);
+
+impl Shared {
+    /// Absorbs every finished block that is next in line; checks the stopping rule after
+    /// each, on the tally of the blocks before it only.
+    fn absorb_ready(&mut self, plan: &Plan, done: &[AtomicBool], progress: &Progress) {
+        while let Some((k, finished)) = self.waiting.remove(&self.absorbed) {
+            self.absorbed += 1;
+            let (tally, stats) = &mut self.tallies[k];
+            let Some((block, secs)) = finished else {
+                continue;
+            };
             let (start, end) = plan.block_range(block.block());
             if stats.target_reached == Some(true) {
-                progress.skip(end - start); // computed past the stopping point: discarded
-                continue;
+                continue; // computed past the stopping point: discarded (already skipped)
             }
             tally.absorb(block);
             stats.blocks += 1;
             stats.worker_seconds += secs;
             progress.advance(end - start);
-            if let (Some(target), Some((se_a, se_b))) = (plan.target_se_deg, tally.running_se()) {
-                progress.note(&format!(
-                    "α⁻ = {}°: SE {:.3}°, {:.3}° → {target}°",
-                    crate::output::fmt_num(tally.spec.condition.alpha_in_deg()),
-                    se_a,
-                    se_b
-                ));
-                if se_a <= target && se_b <= target {
-                    stats.target_reached = Some(true);
-                    let skipped: u64 = pending[k]
-                        .drain(..)
-                        .map(|b| {
-                            let (s, e) = plan.block_range(b);
-                            e - s
-                        })
-                        .sum();
-                    progress.skip(skipped);
-                }
+            let (Some(target), Some((se_a, se_b))) = (plan.target_se_deg, tally.running_se())
+            else {
+                continue;
+            };
+            progress.note(&format!(
+                "α⁻ = {}°, β⁻ = {}°: SE {se_a:.3}°, {se_b:.3}° → {target}°",
+                crate::output::fmt_num(tally.spec.condition.alpha_in_deg()),
+                crate::output::fmt_num(tally.spec.condition.beta_in_deg()),
+            ));
+            if se_a <= target && se_b <= target {
+                stats.target_reached = Some(true);
+                done[k].store(true, Ordering::Relaxed);
+                let remaining: u64 = plan
+                    .owned_blocks(k)
+                    .into_iter()
+                    .filter(|&b| b > tally.blocks().last().copied().unwrap_or(0))
+                    .map(|b| {
+                        let (s, e) = plan.block_range(b);
+                        e - s
+                    })
+                    .sum();
+                progress.skip(remaining);
             }
         }
     }
-    tallies
+}
+
+/// Runs the plan. `fill(k, start, end, block)` tallies particles `start..end` of
+/// condition `k` into `block`, in particle order. Returns each condition's tally and
+/// statistics, in condition order.
+///
+/// Every thread of the pool pulls the next block of the work list, fills it, and absorbs
+/// whatever blocks are next in line; a thread that would run more than a few blocks ahead
+/// of the oldest unfinished one waits, so memory stays bounded without a barrier between
+/// groups of blocks.
+pub fn run<F>(plan: &Plan, progress: &Progress, fill: F) -> Vec<(ConditionTally, ConditionStats)>
+where
+    F: Fn(usize, u64, u64, &mut BlockTally) + Sync,
+{
+    let items = work_list(plan);
+    let threads = rayon::current_num_threads().max(1);
+    let window = (4 * threads).clamp(2, 256);
+    let next = AtomicUsize::new(0);
+    let done: Vec<AtomicBool> = plan.specs.iter().map(|_| AtomicBool::new(false)).collect();
+    let shared = Mutex::new(Shared {
+        tallies: plan
+            .specs
+            .iter()
+            .map(|s| {
+                (
+                    ConditionTally::new(*s),
+                    ConditionStats {
+                        target_reached: plan.target_se_deg.map(|_| false),
+                        ..Default::default()
+                    },
+                )
+            })
+            .collect(),
+        waiting: BTreeMap::new(),
+        absorbed: 0,
+    });
+    let ahead = Condvar::new();
+    let lock = || shared.lock().unwrap_or_else(|e| e.into_inner());
+    let worker = || loop {
+        let i = next.fetch_add(1, Ordering::Relaxed);
+        let Some(&(k, b)) = items.get(i) else { break };
+        {
+            let mut st = lock();
+            while i >= st.absorbed + window {
+                st = ahead.wait(st).unwrap_or_else(|e| e.into_inner());
+            }
+        }
+        let finished = (!done[k].load(Ordering::Relaxed)).then(|| {
+            let t0 = Instant::now();
+            let mut block = BlockTally::new(&plan.specs[k], b);
+            let (start, end) = plan.block_range(b);
+            fill(k, start, end, &mut block);
+            (block, t0.elapsed().as_secs_f64())
+        });
+        let mut st = lock();
+        st.waiting.insert(i, (k, finished));
+        st.absorb_ready(plan, &done, progress);
+        drop(st);
+        ahead.notify_all();
+    };
+    rayon::scope(|s| {
+        for _ in 0..threads {
+            s.spawn(|_| worker());
+        }
+    });
+    shared
+        .into_inner()
+        .unwrap_or_else(|e| e.into_inner())
+        .tallies
 }
 
 #[cfg(test)]

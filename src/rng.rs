@@ -21,6 +21,8 @@ pub mod domain {
     pub const STOCHASTIC: u64 = 3;
     /// Anything that samples points on a surface for statistics.
     pub const SURFACE_STATS: u64 = 4;
+    /// Wall hits of a host code through `wall_model` (indices: particle id, collision index).
+    pub const WALL_HITS: u64 = 5;
 }
 
 /// SplitMix64 finaliser: a bijective 64-bit mixer.

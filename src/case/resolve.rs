@@ -420,8 +420,7 @@ impl Case {
                 &format!("a width in [{MIN_BIN_WIDTH_DEG}, 10] degrees"),
             ));
         }
-        let psi = self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0);
-        positive("stochastic.psi", psi)?;
+        let psi = self.psi()?;
         Ok(Scene {
             wall,
             conditions,
@@ -436,6 +435,12 @@ impl Case {
             bin_width_deg: bin,
             psi,
         })
+    }
+
+    /// ψ of the single-collision probability, Eq. (34): `[stochastic] psi`, default 2 (the paper's).
+    pub fn psi(&self) -> Result<f64> {
+        let psi = self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0);
+        positive("stochastic.psi", psi)
     }
 
     /// The collision law of `[collision]` (default: ideally elastic).

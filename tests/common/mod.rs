@@ -108,3 +108,78 @@ pub fn csv_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     v.sort();
     v
 }
+
+/// Makes sure each `(command, Debian package)` is on the machine, installing the missing
+/// packages with `apt-get install --no-install-recommends` (after `apt-get update`).
+/// Panics with the reason if that is impossible: a test that needs a tool never skips.
+pub fn ensure_tools(tools: &[(&str, &str)]) {
+    let have = |c: &str| {
+        Command::new("sh")
+            .args(["-c", &format!("command -v {c}")])
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    let missing: Vec<&str> = tools
+        .iter()
+        .filter(|(c, _)| !have(c))
+        .map(|(_, p)| *p)
+        .collect();
+    if missing.is_empty() {
+        return;
+    }
+    let script = format!(
+        "export DEBIAN_FRONTEND=noninteractive; apt-get update -qq && apt-get install -y -qq --no-install-recommends {}",
+        missing.join(" ")
+    );
+    let out = Command::new("sh")
+        .args(["-c", &script])
+        .output()
+        .expect("run apt-get");
+    assert!(
+        out.status.success(),
+        "installing {missing:?} failed (root and Debian's package archive are needed): {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for (c, p) in tools {
+        assert!(have(c), "{c} still missing after installing {p}");
+    }
+}
+
+/// The directory holding the C library `libroughwall.so` built with this test binary.
+pub fn c_library_dir() -> PathBuf {
+    let bin = Path::new(env!("CARGO_BIN_EXE_rebound"));
+    let dir = bin.parent().unwrap();
+    for d in [dir.to_path_buf(), dir.join("deps")] {
+        if d.join("libroughwall.so").is_file() {
+            return d;
+        }
+    }
+    panic!("libroughwall.so not found next to {}", bin.display());
+}
+
+/// Compiles `sources` with `compiler` against `include/` and `libroughwall.so` into
+/// `out`; panics with the compiler's message on failure.
+pub fn build_with_roughwall(compiler: &str, sources: &[&Path], out: &Path, extra: &[&str]) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let lib = c_library_dir();
+    let o = Command::new(compiler)
+        .args(["-O2", "-Wall"])
+        .arg("-I")
+        .arg(root.join("include"))
+        .args(extra)
+        .args(sources)
+        .arg("-L")
+        .arg(&lib)
+        .arg("-lroughwall")
+        .arg(format!("-Wl,-rpath,{}", lib.display()))
+        .arg("-lm")
+        .arg("-o")
+        .arg(out)
+        .output()
+        .expect("run the compiler");
+    assert!(
+        o.status.success(),
+        "{compiler} failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

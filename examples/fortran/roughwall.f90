@@ -1,0 +1,89 @@
+! roughwall from Fortran: an iso_c_binding interface to the C library (include/roughwall.h).
+! The derived types mirror the C structs field for field; the wall handle is a C pointer.
+! Build with the library: gfortran -c roughwall.f90 (then link -lroughwall).
+module roughwall
+  use, intrinsic :: iso_c_binding
+  implicit none
+  private
+
+  ! Status codes (rw_result%status and function results) and choices of rw_wall_params.
+  integer(c_int32_t), parameter, public :: RW_OK = 0, RW_NOT_APPROACHING = 1, &
+       RW_INVALID_INPUT = 2, RW_INVALID_PARAMETER = 3, RW_NULL_POINTER = 4, &
+       RW_INTERNAL_ERROR = 5
+  integer(c_int32_t), parameter, public :: RW_LAW_ELASTIC = 0, RW_LAW_SOMMERFELD_HUBER = 1
+  integer(c_int32_t), parameter, public :: RW_PRESET_NONE = 0, RW_PRESET_GLASS_STEEL = 1
+
+  !> What a wall is built from (rw_wall_params): start from rw_wall_params_default.
+  type, bind(c), public :: rw_wall_params
+     real(c_double) :: delta_xi_deg, delta_zeta_deg
+     integer(c_int32_t) :: law, preset
+     real(c_double) :: e_h, alpha_e_deg, mu_0, mu_h, alpha_mu_deg
+     real(c_double) :: psi
+     integer(c_int64_t) :: seed
+  end type rw_wall_params
+
+  !> One particle-wall hit in global axes, SI units (rw_hit).
+  type, bind(c), public :: rw_hit
+     real(c_double) :: velocity(3), spin(3), normal(3), lay(3), wall_velocity(3)
+     real(c_double) :: diameter
+     integer(c_int64_t) :: particle_id, collision_index
+  end type rw_hit
+
+  !> The rebound of a hit (rw_result).
+  type, bind(c), public :: rw_result
+     real(c_double) :: velocity(3), spin(3)
+     real(c_double) :: gamma, gamma_star
+     integer(c_int32_t) :: candidate_walls
+     integer(c_int32_t) :: status
+  end type rw_result
+
+  public :: rw_wall_params_default, rw_wall_new, rw_wall_free, rw_rebound, rw_version_string
+
+  interface
+     integer(c_int32_t) function rw_wall_params_default(params) bind(c, name="rw_wall_params_default")
+       import :: c_int32_t, rw_wall_params
+       type(rw_wall_params), intent(out) :: params
+     end function rw_wall_params_default
+
+     integer(c_int32_t) function rw_wall_new(params, wall, message, message_len) bind(c, name="rw_wall_new")
+       import :: c_int32_t, c_ptr, c_char, c_size_t, rw_wall_params
+       type(rw_wall_params), intent(in) :: params
+       type(c_ptr), intent(out) :: wall
+       character(kind=c_char), intent(out) :: message(*)
+       integer(c_size_t), value :: message_len
+     end function rw_wall_new
+
+     subroutine rw_wall_free(wall) bind(c, name="rw_wall_free")
+       import :: c_ptr
+       type(c_ptr), value :: wall
+     end subroutine rw_wall_free
+
+     integer(c_int32_t) function rw_rebound(wall, hit, result) bind(c, name="rw_rebound")
+       import :: c_int32_t, c_ptr, rw_hit, rw_result
+       type(c_ptr), value :: wall
+       type(rw_hit), intent(in) :: hit
+       type(rw_result), intent(out) :: result
+     end function rw_rebound
+
+     type(c_ptr) function rw_version() bind(c, name="rw_version")
+       import :: c_ptr
+     end function rw_version
+  end interface
+
+contains
+
+  !> The library version as a Fortran string.
+  function rw_version_string() result(v)
+    character(len=:), allocatable :: v
+    character(kind=c_char), pointer :: chars(:)
+    integer :: n
+    call c_f_pointer(rw_version(), chars, [32])
+    n = 0
+    do while (n < 32)
+       if (chars(n + 1) == c_null_char) exit
+       n = n + 1
+    end do
+    allocate(character(len=n) :: v)
+    v = transfer(chars(1:n), v)
+  end function rw_version_string
+end module roughwall

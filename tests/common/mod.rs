@@ -131,8 +131,9 @@ pub fn ensure_tools(tools: &[(&str, &str)]) {
         "export DEBIAN_FRONTEND=noninteractive; apt-get update -qq && apt-get install -y -qq --no-install-recommends {}",
         missing.join(" ")
     );
-    let out = Command::new("sh")
-        .args(["-c", &script])
+    // One apt-get at a time, whichever test asks.
+    let out = Command::new("flock")
+        .args(["/tmp/roughwall-apt.lock", "sh", "-c", &script])
         .output()
         .expect("run apt-get");
     assert!(

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The code_saturne checks of the roughwall C library (run by `cargo test`, tests/code_saturne.rs):
+#  (a) a smooth elastic roughwall wall gives the trajectories of code_saturne's built-in
+#      CS_LAGR_REBOUND (compare_traj.py: same particles, steps and cells; positions and
+#      velocities within TOL, default 1e-12: the rebound goes through the wall's frame and
+#      back, so the last bits may differ);
+#  (b) the Sec. 4 glass-steel wall: the run's wall hits, for the comparison with
+#      `rebound stochastic` that the Rust test makes.
+# Installs code_saturne (Debian's 6.0.2), gcc and gfortran when missing (install.sh).
+# Usage: run_checks.sh WORKDIR   Prints "CHECK (a): PASS" and "HITS (b): <dir>" on success.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+work=${1:?usage: run_checks.sh WORKDIR}
+mkdir -p "$work"
+"$here/install.sh" >&2
+export USER=${USER:-root}
+t0=$(date +%s.%N)
+declare -A resu
+for mode in builtin user; do
+  resu[$mode]=$("$here/setup_case.sh" smooth "$mode" "$work/a-$mode")
+  "$work/a-$mode/run.sh" > "$work/a-$mode.log" 2>&1 || { tail -30 "$work/a-$mode.log" >&2; exit 1; }
+done
+python3 "$here/compare_traj.py" "${resu[builtin]}" "${resu[user]}" --tol "${TOL:-1e-12}" --hits "${resu[user]}"
+t1=$(date +%s.%N)
+resu_b=$("$here/setup_case.sh" glass-steel user "$work/b")
+"$work/b/run.sh" > "$work/b.log" 2>&1 || { tail -30 "$work/b.log" >&2; exit 1; }
+t2=$(date +%s.%N)
+grep -h "roughwall" "$resu_b"/listing 2>/dev/null | head -1 || true
+echo "HITS (b): $resu_b"
+awk -v a="$t0" -v b="$t1" -v c="$t2" 'BEGIN {printf "times: check (a) %.1f s, run (b) %.1f s\n", b - a, c - b}'

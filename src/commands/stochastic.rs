@@ -188,8 +188,8 @@ pub fn finish(
         let mut r = t.result();
         r.push_curve(gamma_model_curve(&wall, &cond, p.scene.bin_width_deg));
         let mut row = toml::Table::new();
-        row.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
-        row.insert("beta_in_deg".into(), f(cond.beta_in_deg()));
+        row.insert("alpha_in_deg".into(), f(round(cond.alpha_in_deg(), 9)));
+        row.insert("beta_in_deg".into(), f(round(cond.beta_in_deg(), 9)));
         row.insert("rebounds".into(), toml::Value::Integer(c.particles as i64));
         row.insert(
             "blocks".into(),

@@ -171,22 +171,38 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Merge(a) => a.threads,
         Command::Compare(_) | Command::Report(_) => None,
     };
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    // More threads than a few per core only cost memory (a stack each) and scheduling.
+    let max_threads = (8 * cores).max(8);
     let threads = match threads {
-        Some(0) => {
+        Some(n) if n == 0 || n > max_threads => {
             return Err(Error::invalid(
                 "--threads",
-                0,
-                "a positive number of threads",
+                n,
+                &format!("1 to {max_threads} (8 per core, {cores} cores here)"),
             ))
         }
         Some(n) => n,
-        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        None => cores,
     };
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
         .map_err(|e| Error::Io(format!("thread pool: {e}")))?;
-    pool.install(|| match &cli.command {
+    // Warnings are printed once the command has succeeded, so that an error is always the
+    // one line a failed run prints.
+    // (`install` runs the command on a pool thread: capture there.)
+    let (result, warnings) = pool.install(|| crate::case::capture_warnings(|| dispatch(&cli)));
+    if result.is_ok() {
+        for w in warnings {
+            eprintln!("warning: {w}");
+        }
+    }
+    result
+}
+
+fn dispatch(cli: &Cli) -> Result<()> {
+    match &cli.command {
         Command::Surface(a) => commands::surface::run(a),
         Command::Deterministic(a) => commands::deterministic::run(a),
         Command::Stochastic(a) => commands::stochastic::run(a),
@@ -194,7 +210,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Compare(a) => commands::compare::run(a),
         Command::Report(a) => commands::report::run(a),
         Command::Merge(a) => commands::merge::run(a),
-    })
+    }
 }
 
 /// The first paragraph of a clap error, on one line (clap adds usage lines after it).

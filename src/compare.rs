@@ -14,7 +14,7 @@
 use crate::error::{Error, Result};
 use crate::figures::{plot_grid_svg, sweep_plots, sweep_series, Kind, Plot, Series, SweepPoint};
 use crate::output::schema::{read_run as read_tables, ConditionKey, RunTables};
-use crate::output::{fmt_num, fmt_opt, write_atomic, CsvTable};
+use crate::output::{fmt_num, fmt_opt, out_dir, write_atomic, CsvTable};
 use crate::tally::Quantity;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -416,7 +416,9 @@ pub fn write_overlays(
 }
 
 /// Writes `comparison.csv`, `unmatched.csv`, the overlays and a small `run.toml` into
-/// `out` (created). Both inputs are read and checked before anything is written.
+/// `out`, as a whole (staging directory, lock, swap: [`crate::output::out_dir`]). `out` must
+/// be a new directory or a previous rebound output other than `a_dir` and `b_dir`; both
+/// inputs are read and checked before anything is written.
 pub fn run_compare(
     a_dir: &Path,
     b_dir: &Path,
@@ -424,6 +426,8 @@ pub fn run_compare(
     label_a: &str,
     label_b: &str,
 ) -> Result<(usize, usize)> {
+    out_dir::check_out(out, "--out")?;
+    out_dir::check_distinct(out, "--out", &[("--a", a_dir), ("--b", b_dir)])?;
     let a = read_run(a_dir, "--a")?;
     let b = read_run(b_dir, "--b")?;
     let (rows, unmatched) = compare_runs(&a, &b);
@@ -455,10 +459,11 @@ pub fn run_compare(
             b_dir.display()
         )));
     }
-    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
-    comparison_table(&rows).write(&out.join("comparison.csv"))?;
-    unmatched_table(&unmatched).write(&out.join("unmatched.csv"))?;
-    let figs = write_overlays(out, &a, &b, label_a, label_b)?;
+    let staged = out_dir::OutputDir::begin(out, "--out")?;
+    let dir = staged.path();
+    comparison_table(&rows).write(&dir.join("comparison.csv"))?;
+    unmatched_table(&unmatched).write(&dir.join("unmatched.csv"))?;
+    let figs = write_overlays(dir, &a, &b, label_a, label_b)?;
     let mut run = toml::Table::new();
     run.insert("command".into(), "compare".into());
     run.insert("version".into(), env!("CARGO_PKG_VERSION").into());
@@ -478,7 +483,8 @@ pub fn run_compare(
         toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
     );
     let text = toml::to_string_pretty(&root).map_err(|e| Error::Io(format!("run.toml: {e}")))?;
-    write_atomic(&out.join("run.toml"), text.as_bytes())?;
+    write_atomic(&dir.join("run.toml"), text.as_bytes())?;
+    staged.commit()?;
     Ok((rows.len(), unmatched.len()))
 }
 

@@ -1,6 +1,12 @@
-//! One error type for the whole tool. Its variant decides the exit status:
-//! bad input (case file, command line, input file) and not-yet-implemented
-//! models exit with 2, everything else with 1.
+//! One error type for the whole tool. Its kind decides the exit status:
+//!
+//! | status | kind |
+//! | --- | --- |
+//! | 0 | success |
+//! | 1 | I/O: a file could not be read or written (disk full, permissions) |
+//! | 2 | input: a wrong key, value, option or input file (also a model not implemented yet) |
+//! | 3 | model: valid input the model could not turn into a result (e.g. no particle history could be followed) |
+//! | 4 | internal: a bug |
 
 use std::fmt::{self, Display};
 use std::path::Path;
@@ -13,6 +19,10 @@ pub enum Error {
     NotImplemented(String),
     /// Reading or writing files failed.
     Io(String),
+    /// Valid input that the model could not turn into a result.
+    Model(String),
+    /// A bug: something the code assumes did not hold.
+    Internal(String),
 }
 
 pub type Result<T> = std::result::Result<T, Error>;
@@ -33,16 +43,29 @@ impl Error {
         match self {
             Error::Input(_) | Error::NotImplemented(_) => 2,
             Error::Io(_) => 1,
+            Error::Model(_) => 3,
+            Error::Internal(_) => 4,
         }
+    }
+}
+
+/// A message on one line, whatever it quotes (a case value may hold a newline).
+fn one_line(m: &str) -> std::borrow::Cow<'_, str> {
+    if m.contains(['\n', '\r']) {
+        m.replace('\n', "\\n").replace('\r', "\\r").into()
+    } else {
+        m.into()
     }
 }
 
 impl Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Error::Input(m) => write!(f, "{m}"),
-            Error::NotImplemented(m) => write!(f, "not implemented yet: {m}"),
-            Error::Io(m) => write!(f, "I/O error: {m}"),
+            Error::Input(m) => write!(f, "{}", one_line(m)),
+            Error::NotImplemented(m) => write!(f, "not implemented yet: {}", one_line(m)),
+            Error::Io(m) => write!(f, "I/O error: {}", one_line(m)),
+            Error::Model(m) => write!(f, "model: {}", one_line(m)),
+            Error::Internal(m) => write!(f, "internal error (please report it): {}", one_line(m)),
         }
     }
 }

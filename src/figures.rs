@@ -67,9 +67,16 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(23, 190, 207),
 ];
 
+/// Axis range of the data: padded, and kept where the plotting library draws it quickly and
+/// well (a degenerate or huge range would make its tick search spin): at most
+/// `MAX_DECADES` decades on a log axis, a finite span of at least 1e-9 of the values' size on
+/// a linear one.
 fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
+    const MAX_DECADES: f64 = 30.0;
+    const LIMIT: f64 = 1e300;
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for v in vals.filter(|v| v.is_finite() && (!log || *v > 0.0)) {
+        let v = v.clamp(-LIMIT, LIMIT);
         lo = lo.min(v);
         hi = hi.max(v);
     }
@@ -77,15 +84,22 @@ fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
         return if log { (0.1, 10.0) } else { (0.0, 1.0) };
     }
     if log {
-        if hi <= lo {
+        let (lo, hi) = (lo.max(1e-300), hi.max(1e-300));
+        let lo = lo.max(hi / 10f64.powf(MAX_DECADES));
+        if hi <= lo * (1.0 + 1e-9) {
             return (lo / 2.0, hi * 2.0);
         }
         return (lo / 1.2, hi * 1.2);
     }
-    if hi <= lo {
-        return (lo - 1.0, hi + 1.0);
+    let scale = lo.abs().max(hi.abs());
+    if hi - lo <= 1e-9 * scale || hi <= lo {
+        // A single value (or a span lost in rounding): a window of ±1, or of ±5 % of the
+        // value where ±1 would be lost in rounding.
+        let mid = 0.5 * lo + 0.5 * hi;
+        let half = if scale < 1e15 { 1.0 } else { 0.05 * scale };
+        return (mid - half, mid + half);
     }
-    let pad = 0.05 * (hi - lo);
+    let pad = 0.05 * hi - 0.05 * lo;
     (lo - pad, hi + pad)
 }
 
@@ -350,8 +364,8 @@ pub fn sweep_plots(mean: Vec<Series>, std: Vec<Series>, x_label: &str) -> [Plot;
 pub fn condition_title(c: &crate::incidence::IncidentCondition) -> String {
     format!(
         "α⁻ = {}°, β⁻ = {}°",
-        crate::output::fmt_num(c.alpha_in_deg()),
-        crate::output::fmt_num(c.beta_in_deg())
+        crate::incidence::fmt_key(c.alpha_in_deg()),
+        crate::incidence::fmt_key(c.beta_in_deg())
     )
 }
 
@@ -483,5 +497,32 @@ mod tests {
         let pts = vec![(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 1.0)];
         let out = simplify(pts, |p| (p.0 as i32, p.1 as i32));
         assert_eq!(out, vec![(0.0, 0.0), (2.0, 0.0), (2.0, 1.0)]);
+    }
+}
+
+#[cfg(test)]
+mod degenerate {
+    use super::*;
+
+    #[test]
+    fn huge_and_degenerate_ranges_draw_quickly() {
+        let dir = tempfile::tempdir().unwrap();
+        let t = std::time::Instant::now();
+        for (log, pts) in [
+            (true, vec![(0.1, 1.0), (1e308, 2.0)]),
+            (false, vec![(0.0, 1e308), (1.0, -1e308)]),
+            (false, vec![(5e-324, 0.0), (1e-323, 0.0)]),
+            (true, vec![(1e-300, 1e-300), (1e300, 1e300)]),
+        ] {
+            let plot = Plot {
+                title: "t".into(),
+                series: vec![Series::new("s", pts, Kind::Line)],
+                log_x: log,
+                log_y: log,
+                ..Default::default()
+            };
+            plot_svg(&dir.path().join("f.svg"), &plot).unwrap();
+        }
+        assert!(t.elapsed().as_secs_f64() < 5.0, "{:?}", t.elapsed());
     }
 }

@@ -12,11 +12,15 @@ pub struct SpeedLaw {
     pub std_m_s: f64,
 }
 
-/// One incident condition `(α⁻, β⁻)` in radians.
+/// One incident condition `(α⁻, β⁻)`: in radians for the physics, and in degrees exactly as
+/// the case gave them, so that outputs name the condition the user asked for (`-15`, never
+/// `-14.999999999999998`) and two conditions that differ in the case never merge.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct IncidentCondition {
     pub alpha_in: f64,
     pub beta_in: f64,
+    alpha_deg: f64,
+    beta_deg: f64,
 }
 
 impl IncidentCondition {
@@ -25,14 +29,29 @@ impl IncidentCondition {
         IncidentCondition {
             alpha_in: alpha_in_deg.to_radians(),
             beta_in: beta_in_deg.to_radians(),
+            alpha_deg: alpha_in_deg,
+            beta_deg: beta_in_deg,
         }
     }
 
+    /// `α⁻` in degrees, as given.
     pub fn alpha_in_deg(&self) -> f64 {
-        self.alpha_in.to_degrees()
+        self.alpha_deg
     }
+
+    /// `β⁻` in degrees, as given.
     pub fn beta_in_deg(&self) -> f64 {
-        self.beta_in.to_degrees()
+        self.beta_deg
+    }
+}
+
+/// An angle of a condition key in the CSV files: the shortest decimal that reads back as the
+/// same number (`-15`, `-89.999999`, `1e-9`), so keys round-trip exactly; `-0` is written `0`.
+pub fn fmt_key(deg: f64) -> String {
+    if deg == 0.0 {
+        "0".into()
+    } else {
+        format!("{deg}")
     }
 }
 

@@ -16,6 +16,7 @@ pub mod ffi;
 pub mod figures;
 pub mod force;
 pub mod incidence;
+pub mod memory;
 pub mod output;
 pub mod progress;
 pub mod report;

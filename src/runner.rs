@@ -10,6 +10,7 @@ use crate::progress::Progress;
 use crate::tally::engine::{self, ConditionStats};
 use crate::tally::partial::{Partial, PartialFile, RunIdentity, PARTIAL_FILE};
 use crate::tally::{BlockTally, ConditionTally, Plan, Shard, TallySpec};
+use sha2::Digest;
 use std::path::{Path, PathBuf};
 
 /// What the command line adds to a case for a tally run.
@@ -34,12 +35,18 @@ pub fn identity(
 ) -> Result<RunIdentity> {
     let (surface_file, surface_sha256) = match surface_file {
         Some(p) => {
-            let bytes = std::fs::read(p)
-                .map_err(|e| Error::Input(format!("--surface file `{}`: {e}", p.display())))?;
-            (
-                Some(p.display().to_string()),
-                Some(crate::tally::partial::sha256_hex(&bytes)),
-            )
+            let bad =
+                |e: std::io::Error| Error::Input(format!("--surface file `{}`: {e}", p.display()));
+            // Streamed: a height file may be larger than the memory the run may use.
+            let mut file = std::fs::File::open(p).map_err(bad)?;
+            let mut hasher = sha2::Sha256::new();
+            std::io::copy(&mut file, &mut hasher).map_err(bad)?;
+            let digest: String = hasher
+                .finalize()
+                .iter()
+                .map(|b| format!("{b:02x}"))
+                .collect();
+            (Some(p.display().to_string()), Some(digest))
         }
         None => (None, None),
     };

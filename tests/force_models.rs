@@ -305,9 +305,13 @@ fn errors() {
     assert!(one_line(Model::HertzRigid.evaluate(&bad, &imp).unwrap_err()).contains("poisson"));
 }
 
-/// Extreme but valid speeds and sizes (physics notes §9): finite numbers out, never NaN.
+/// Extreme but valid speeds and sizes (physics notes §9): finite numbers out, never NaN; and
+/// speeds outside the physical range (0, or 1e-6 … 1e4 m/s) refused rather than computed.
 #[test]
 fn extreme_inputs_stay_finite() {
+    for u in [1e-300, 1e-20, 5e-7, 1.1e4, 1e308] {
+        assert!(Impact::from_deg(2.0, 45.0, u).is_err(), "U = {u}");
+    }
     let tiny = Particle {
         diameter: 1e-9,
         ..glass()
@@ -318,7 +322,7 @@ fn extreme_inputs_stay_finite() {
         ..glass()
     };
     for p in [glass(), tiny, huge] {
-        for u in [1e-300, 1e-20, 1e-6, 100.0, 1e4] {
+        for u in [0.0, 1e-6, 1e-3, 100.0, 1e4] {
             for lambda in [1.0, 1.5, 3.0, 10.0] {
                 for beta in [0.0, 0.5, 45.0, 89.9, 90.0] {
                     for m in models_for(lambda) {
@@ -337,6 +341,9 @@ fn extreme_inputs_stay_finite() {
                             "{m:?} U={u} λ={lambda} β={beta}: ξ={}",
                             r.xi
                         );
+                        if u > 0.0 {
+                            assert!(r.f_max > 0.0, "{m:?} U={u} λ={lambda} β={beta}");
+                        }
                         if let Some(t) = r.contact_time {
                             assert!(t.is_finite() && t >= 0.0, "{m:?} U={u}");
                         }

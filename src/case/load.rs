@@ -97,7 +97,11 @@ fn reject_non_finite(v: &toml::Value, path: &str) -> std::result::Result<(), Str
 
 /// Turns a (multi-line) TOML/serde error into one line with the file, line and key.
 fn one_line(origin: &str, text: &str, e: &toml::de::Error) -> Error {
-    let msg = e.message().replace('\n', " ");
+    let mut msg = e.message().replace('\n', " ");
+    // serde's words for a sweep key of the wrong shape; say what is allowed instead.
+    if msg.contains("untagged enum Values") {
+        msg = "allowed a number, a list of numbers, { start, stop, step } or { log_start, log_stop, points }".into();
+    }
     let Some(span) = e.span() else {
         return Error::Input(format!("{origin}: {msg}"));
     };

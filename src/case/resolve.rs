@@ -101,6 +101,36 @@ impl Scene {
     }
 }
 
+/// `v` within `[lo, hi]` (the physical range of a key; `why` says what bounds it).
+fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
+    if v.is_finite() && (lo..=hi).contains(&v) {
+        Ok(v)
+    } else {
+        Err(Error::invalid(
+            key,
+            v,
+            &format!("{lo} to {hi}{unit} ({why})"),
+        ))
+    }
+}
+
+/// Incident speeds (m/s): below a micrometre per second adhesion, not rebound, decides;
+/// above 10 km/s impacts are hypervelocity (the wall melts). Both bounds keep every derived
+/// quantity (squares of velocity components) far from underflow and overflow.
+pub const SPEED_RANGE_M_S: (f64, f64) = (1e-6, 1e4);
+/// Particle diameters (µm): a nanometre to a metre.
+pub const DIAMETER_RANGE_UM: (f64, f64) = (1e-3, 1e6);
+/// ψ of Eq. (34): the paper uses 2 (Konan et al. 1.5); below 0.01 almost every candidate
+/// rebound is rejected (hundreds of redraws per rebound), above 100 none is.
+pub const PSI_RANGE: (f64, f64) = (0.01, 100.0);
+/// Lengths of a generated surface (µm): a picometre to a kilometre.
+pub const LENGTH_RANGE_UM: (f64, f64) = (1e-6, 1e9);
+/// Longest list of incident angles (each of `alpha_deg`, `beta_deg`), and most conditions.
+pub const MAX_ANGLES: usize = 1000;
+pub const MAX_CONDITIONS: usize = 10_000;
+/// Longest `[stats] beta_star_deg` list.
+pub const MAX_BETA_STAR: usize = 1000;
+
 fn positive(key: &str, v: f64) -> Result<f64> {
     if v > 0.0 && v.is_finite() {
         Ok(v)
@@ -215,7 +245,16 @@ impl Case {
         };
         let need =
             |v: Option<f64>, k: &str| v.ok_or_else(|| Error::Input(format!("[{sec}] needs `{k}`")));
-        let length_um = positive(&format!("{sec}.length_um"), need(w.length_um, "length_um")?)?;
+        let (lo, hi) = LENGTH_RANGE_UM;
+        let lengths = "a surface's lengths, a picometre to a kilometre";
+        let length_um = within(
+            &format!("{sec}.length_um"),
+            need(w.length_um, "length_um")?,
+            lo,
+            hi,
+            " µm",
+            lengths,
+        )?;
         let nodes = w
             .nodes
             .ok_or_else(|| Error::Input(format!("[{sec}] needs `nodes`")))?;
@@ -227,28 +266,59 @@ impl Case {
             ));
         }
         let h_um = need(w.rms_height_um, "rms_height_um")?;
-        if h_um < 0.0 {
-            return Err(Error::invalid(
+        if h_um != 0.0 {
+            within(
                 &format!("{sec}.rms_height_um"),
                 h_um,
-                "a number ≥ 0",
-            ));
+                lo,
+                hi,
+                " µm (or 0)",
+                lengths,
+            )?;
         }
         let axis =
             |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<Option<f64>> {
-                match (c, d) {
-                    (Some(_), Some(_)) => Err(Error::Input(format!(
-                        "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
-                    ))),
-                    (Some(c), None) => Ok(Some(positive(&format!("{sec}.{cname}"), c)?)),
-                    (None, Some(d)) => {
-                        let d = deviation(&format!("{sec}.{dname}"), d)?;
-                        Ok(wall::corr_length_from_deviation(h_um, d))
+                let c = match (c, d) {
+                    (Some(_), Some(_)) => {
+                        return Err(Error::Input(format!(
+                            "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
+                        )))
                     }
-                    (None, None) => Err(Error::Input(format!(
-                        "[{sec}] needs `{cname}` or `{dname}`"
-                    ))),
-                }
+                    (Some(c), None) => {
+                        let c = within(&format!("{sec}.{cname}"), c, lo, hi, " µm", lengths)?;
+                        // The slope it makes with h must be one the wall models cover (Eq. 15).
+                        if h_um > 0.0 {
+                            deviation(
+                                &format!("{sec}.{cname} (as the deviation √2 h/c_L, Eq. 15)"),
+                                wall::deviation_from_surface(h_um, c).to_degrees(),
+                            )?;
+                        }
+                        Some(c)
+                    }
+                    (None, Some(d)) => {
+                        let dr = deviation(&format!("{sec}.{dname}"), d)?;
+                        let c = wall::corr_length_from_deviation(h_um, dr);
+                        if let Some(c) = c.filter(|_| h_um > 0.0) {
+                            within(
+                                &format!(
+                                    "{sec}.{dname} (as the correlation length √2 h/Δ, Eq. 15)"
+                                ),
+                                c,
+                                lo,
+                                hi,
+                                " µm",
+                                lengths,
+                            )?;
+                        }
+                        c
+                    }
+                    (None, None) => {
+                        return Err(Error::Input(format!(
+                            "[{sec}] needs `{cname}` or `{dname}`"
+                        )))
+                    }
+                };
+                Ok(c)
             };
         let cx = axis(
             w.corr_length_x_um,
@@ -297,6 +367,12 @@ impl Case {
                 }
             }
         }
+        crate::memory::require(
+            &format!("{sec}.nodes"),
+            nodes,
+            crate::surface::generate::generation_bytes(&spec),
+            &format!("a {nodes} × {nodes} surface"),
+        )?;
         Ok(spec)
     }
 
@@ -307,6 +383,13 @@ impl Case {
             .as_ref()
             .map(|s| s.beta_star_deg.clone())
             .unwrap_or_else(|| vec![0.0, 30.0, 60.0, 90.0]);
+        if list.len() > MAX_BETA_STAR {
+            return Err(Error::invalid(
+                "stats.beta_star_deg",
+                format!("a list of {} angles", list.len()),
+                &format!("at most {MAX_BETA_STAR} directions"),
+            ));
+        }
         if list.is_empty() {
             return Err(Error::invalid(
                 "stats.beta_star_deg",
@@ -350,7 +433,20 @@ impl Case {
                 "a non-empty list of angles in [-180, 180]",
             ));
         }
+        for (key, list) in [
+            ("incidence.alpha_deg", &inc.alpha_deg),
+            ("incidence.beta_deg", &betas),
+        ] {
+            if list.len() > MAX_ANGLES {
+                return Err(Error::invalid(
+                    key,
+                    format!("a list of {} angles", list.len()),
+                    &format!("at most {MAX_ANGLES} angles"),
+                ));
+            }
+        }
         let mut conditions = Vec::new();
+        let mut seen = std::collections::HashSet::new();
         for &a in &inc.alpha_deg {
             if !(-90.0..0.0).contains(&a) {
                 return Err(Error::invalid(
@@ -369,24 +465,33 @@ impl Case {
                 }
                 // Normal incidence has no incident plane: β⁻ is taken as 0 (notes §1).
                 let beta = if a == -90.0 { 0.0 } else { b };
-                let c = IncidentCondition {
-                    alpha_in: a.to_radians(),
-                    beta_in: beta.to_radians(),
-                };
-                if !conditions.contains(&c) {
+                let c = IncidentCondition::from_degrees(a, beta);
+                // −0 and 0 are one angle.
+                if seen.insert(((a + 0.0).to_bits(), (beta + 0.0).to_bits())) {
                     conditions.push(c);
                 }
             }
         }
-        let mean = inc.speed_mean_m_s.unwrap_or(1.0);
-        let std = inc.speed_std_m_s.unwrap_or(0.0);
-        positive("incidence.speed_mean_m_s", mean)?;
-        if std < 0.0 {
+        if conditions.len() > MAX_CONDITIONS {
             return Err(Error::invalid(
-                "incidence.speed_std_m_s",
-                std,
-                "a number ≥ 0",
+                "incidence.alpha_deg",
+                format!("{} × {} conditions", inc.alpha_deg.len(), betas.len()),
+                &format!("at most {MAX_CONDITIONS} (α⁻, β⁻) conditions"),
             ));
+        }
+        let (lo, hi) = SPEED_RANGE_M_S;
+        let why = "rebound off a rigid wall, neither adhesion nor hypervelocity";
+        let mean = within(
+            "incidence.speed_mean_m_s",
+            inc.speed_mean_m_s.unwrap_or(1.0),
+            lo,
+            hi,
+            " m/s",
+            why,
+        )?;
+        let std = inc.speed_std_m_s.unwrap_or(0.0);
+        if std != 0.0 {
+            within("incidence.speed_std_m_s", std, lo, hi, " m/s (or 0)", why)?;
         }
         let p = self.particles.clone().unwrap_or_default();
         let target = p
@@ -406,7 +511,15 @@ impl Case {
                 "an integer from 1 to 100000000",
             ));
         }
-        let diameter_um = positive("particles.diameter_um", p.diameter_um.unwrap_or(500.0))?;
+        let (lo, hi) = DIAMETER_RANGE_UM;
+        let diameter_um = within(
+            "particles.diameter_um",
+            p.diameter_um.unwrap_or(500.0),
+            lo,
+            hi,
+            " µm",
+            "a nanometre to a metre",
+        )?;
         let bin = self
             .output
             .as_ref()
@@ -421,6 +534,17 @@ impl Case {
             ));
         }
         let psi = self.psi()?;
+        // Every condition keeps its tally (12 histograms and 2 ratio curves of these bins),
+        // and a few blocks per thread are in flight.
+        let per_tally = (12.0 * 360.0 / bin * 8.0 + 2.0 * 180.0 / bin * 32.0) as u64;
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get()) as u64;
+        let tallies = conditions.len() as u64 + 4 * 8 * threads;
+        crate::memory::require(
+            "output.bin_width_deg",
+            bin,
+            per_tally.saturating_mul(tallies),
+            &format!("tallying {} conditions", conditions.len()),
+        )?;
         Ok(Scene {
             wall,
             conditions,
@@ -440,7 +564,15 @@ impl Case {
     /// ψ of the single-collision probability, Eq. (34): `[stochastic] psi`, default 2 (the paper's).
     pub fn psi(&self) -> Result<f64> {
         let psi = self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0);
-        positive("stochastic.psi", psi)
+        let (lo, hi) = PSI_RANGE;
+        within(
+            "stochastic.psi",
+            psi,
+            lo,
+            hi,
+            "",
+            "below, almost every candidate rebound is redrawn; above, none is; the paper uses 2",
+        )
     }
 
     /// The collision law of `[collision]` (default: ideally elastic).
@@ -550,11 +682,21 @@ impl Values {
                         "start ≤ stop and step > 0",
                     ));
                 }
-                let n = ((r.stop - r.start) / r.step + 1e-9).floor() as usize + 1;
-                if n > 1_000_000 {
-                    return Err(Error::invalid(key, n, "at most 1000000 points"));
+                // Count in floating point first: a tiny step must not overflow the count.
+                let n = ((r.stop - r.start) / r.step + 1e-9).floor() + 1.0;
+                if n.is_nan() || n > 1e6 {
+                    return Err(Error::invalid(
+                        key,
+                        format!(
+                            "{{start = {}, stop = {}, step = {}}} ({n:e} points)",
+                            r.start, r.stop, r.step
+                        ),
+                        "at most 1000000 points",
+                    ));
                 }
-                (0..n).map(|i| r.start + i as f64 * r.step).collect()
+                (0..n as usize)
+                    .map(|i| r.start + i as f64 * r.step)
+                    .collect()
             }
             Values::Log(r) => {
                 if !(1..=1_000_000).contains(&r.points) {
@@ -579,6 +721,16 @@ impl Values {
         };
         if v.is_empty() {
             return Err(Error::invalid(key, "[]", "at least one value"));
+        }
+        if v.len() > 1_000_000 {
+            return Err(Error::invalid(
+                key,
+                format!("a list of {} values", v.len()),
+                "at most 1000000 values",
+            ));
+        }
+        if let Some(bad) = v.iter().find(|x| !x.is_finite()) {
+            return Err(Error::invalid(key, bad, "finite values"));
         }
         Ok(v)
     }

@@ -10,8 +10,9 @@ use crate::deterministic::{
     fill_block, plots, tally_spec, LostCounts, ModelSetup, Tracker, DEFAULT_MAX_COLLISIONS,
 };
 use crate::error::{Error, Result};
+use crate::output::out_dir::{check_distinct, check_out};
 use crate::output::schema::write_tables;
-use crate::output::{prepare_out_dir, Manifest};
+use crate::output::{prepare_out_dir, Manifest, OutputDir};
 use crate::runner::{self, TallyOverrides};
 use crate::surface::generate;
 use crate::surface::heights_io::read_heights;
@@ -23,6 +24,11 @@ use std::path::Path;
 
 /// The built-in case: the first wall of Sec. 3, (Δξ, Δζ) = (2.5°, 7.5°).
 pub const DEFAULT_CASE: &str = include_str!("../../configs/cases/aniso.toml");
+
+/// Flattest incident angle the tracker is asked to follow (degrees): a descent from the top
+/// of a shipped surface to its bottom at this angle takes some 2 · 10⁵ cells, well within
+/// the step budget (`deterministic::trace::MAX_STEPS`).
+pub const MIN_ABS_ALPHA_DEG: f64 = 1e-3;
 
 /// Largest accepted `[deterministic] max_collisions`.
 const MAX_COLLISIONS_LIMIT: i64 = 1_000_000;
@@ -266,6 +272,20 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
     scene.set_count(o.particles)?;
     scene.set_target_se(o.target_se)?;
     let options = deterministic_options(case)?;
+    // Flatter than this, every history would exhaust the tracker's step budget.
+    if let Some(c) = scene
+        .conditions
+        .iter()
+        .find(|c| c.alpha_in_deg().abs() < MIN_ABS_ALPHA_DEG)
+    {
+        return Err(Error::invalid(
+            "incidence.alpha_deg",
+            c.alpha_in_deg(),
+            &format!(
+                "|α⁻| ≥ {MIN_ABS_ALPHA_DEG}° for the deterministic model (the grazing limit its step budget follows; the stochastic model takes any angle)"
+            ),
+        ));
+    }
     let surface = match surface_file {
         Some(_) => None,
         None => Some(SurfacePlan::for_scene(&scene, &options.scene)?),
@@ -311,14 +331,29 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
         p.scene.target_se_deg,
         o.shard,
     )?;
-    let identity = runner::identity(
-        "deterministic",
-        &ctx.case_text,
-        &ctx.case_origin,
-        ctx.seed,
-        &o,
-        args.surface.as_deref(),
-    )?;
+    // What shards must agree on (a shard's partial tally records it).
+    let identity = plan
+        .shard
+        .map(|_| {
+            runner::identity(
+                "deterministic",
+                &ctx.case_text,
+                &ctx.case_origin,
+                ctx.seed,
+                &o,
+                args.surface.as_deref(),
+            )
+        })
+        .transpose()?;
+    let target = match plan.shard {
+        Some(shard) => ctx.shard_dir(&args.common, shard),
+        None => ctx.out_dir.clone(),
+    };
+    check_out(&target, "--out")?;
+    if let Some(file) = &args.surface {
+        // `--out` is replaced as a whole: it must not hold the height file the run reads.
+        check_distinct(&target, "--out", &[("--surface", file.as_path())])?;
+    }
     // Everything the user gave is checked; now the surface (the only slow input step).
     let t0 = std::time::Instant::now();
     let (field, source) = match (&args.surface, &p.surface) {
@@ -330,7 +365,7 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
                 SurfacePlan::Auto(_) => "auto",
             },
         ),
-        (None, None) => return Err(Error::Io("internal: no surface plan".into())),
+        (None, None) => return Err(Error::Internal("no surface plan".into())),
     };
     let gen_s = t0.elapsed().as_secs_f64();
     let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| {
@@ -351,6 +386,9 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
             plan.shard.is_none_or(|s| s.index == 1),
         ),
     );
+    // The surface is valid: lock and stage the output directory (a shard's own directory for
+    // a shard run), then compute.
+    let out = OutputDir::begin(&target, "--out")?;
     let t1 = std::time::Instant::now();
     let seed = ctx.seed;
     let done = runner::execute(&plan, "deterministic", |k, start, end, block| {
@@ -366,19 +404,28 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
     });
     let seconds = t1.elapsed().as_secs_f64();
     let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
-    if let Some(shard) = plan.shard {
-        let dir = ctx.shard_dir(&args.common, shard);
-        runner::write_partial(&dir, &identity, &plan, p.notes, tallies, seconds + gen_s)?;
-        return Ok(());
+    if let Some(identity) = &identity {
+        runner::write_partial(
+            out.path(),
+            identity,
+            &plan,
+            p.notes,
+            tallies,
+            seconds + gen_s,
+        )?;
+    } else {
+        let mut manifest = ctx.manifest;
+        manifest.set_run("surface_s", f(round(gen_s, 3)));
+        finish(out.path(), manifest, &p, &tallies, Some(&stats), seconds)?;
     }
-    let mut manifest = ctx.manifest;
-    manifest.set_run("surface_s", f(round(gen_s, 3)));
-    finish(&ctx.out_dir, manifest, &p, &tallies, Some(&stats), seconds)
+    out.commit()?;
+    Ok(())
 }
 
-/// Writes the outputs of a run (or of merged shards) into `dir`: `summary.csv`,
-/// `pdfs.csv`, `moments.csv`, the figures and `run.toml`. `stats` are the per-condition
-/// run statistics of a one-process run (`None` after a merge).
+/// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
+/// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
+/// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
+/// after a merge).
 pub fn finish(
     dir: &Path,
     mut manifest: Manifest,
@@ -403,7 +450,7 @@ pub fn finish(
             ));
         }
         if t.followed() == 0 {
-            return Err(Error::Io(format!(
+            return Err(Error::Model(format!(
                 "α⁻ = {}°, β⁻ = {}°: no particle could be followed ({})",
                 cond.alpha_in_deg(),
                 cond.beta_in_deg(),
@@ -460,8 +507,8 @@ fn condition_row(
     r: &ConditionResult,
 ) -> toml::Value {
     let mut row = toml::Table::new();
-    row.insert("alpha_in_deg".into(), f(round(cond.alpha_in_deg(), 9)));
-    row.insert("beta_in_deg".into(), f(round(cond.beta_in_deg(), 9)));
+    row.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
+    row.insert("beta_in_deg".into(), f(cond.beta_in_deg()));
     row.insert(
         "histories".into(),
         toml::Value::Integer(t.counters.particles as i64),

@@ -12,6 +12,8 @@
 //! - SVG figures: `fmax_vs_beta.svg` (Fig. 6), `xi_vs_beta.svg` (Fig. 9) when β varies,
 //!   `fmax_vs_un.svg` (Figs. 8, 10–12; one panel per (λ, β), at most 12) when U_N varies, and always `sphere_check.svg` (Fig. 4);
 //! - `run.toml`.
+//!
+//! `--out` is written as a whole (staging directory, lock, swap: [`crate::output::out_dir`]).
 use crate::case::{Case, ParticleSection, SweepSection};
 use crate::cli::ForceSweepArgs;
 use crate::commands::Context;
@@ -20,7 +22,7 @@ use crate::figures::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 use crate::force::report::{self, Accuracy, Convergence};
 use crate::force::sweep::{Row, Sweep};
 use crate::force::{hertz_dynamic, hertz_sphere, material, Impact, Model, Particle};
-use crate::output::{fmt_num, fmt_opt, prepare_out_dir, CsvTable};
+use crate::output::{fmt_num, fmt_opt, CsvTable, OutputDir};
 use std::path::Path;
 
 /// The columns of `force_sweep.csv` (issue 5).
@@ -80,9 +82,9 @@ const FIG6: Particle = Particle {
 pub fn run(args: &ForceSweepArgs) -> Result<()> {
     let mut ctx = Context::new(&args.common, "force-sweep", DEFAULT_CASE)?;
     let (material, sweep) = resolve(&ctx.case)?;
+    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
     let rows = sweep.rows(&material)?;
-    prepare_out_dir(&ctx.out_dir)?;
-    let dir = ctx.out_dir.clone();
+    let dir = out.path().to_path_buf();
     rows_table(&rows).write(&dir.join("force_sweep.csv"))?;
 
     let acc = report::accuracy(&rows);
@@ -114,6 +116,7 @@ pub fn run(args: &ForceSweepArgs) -> Result<()> {
     );
     ctx.manifest.set("force", toml::Value::Table(info));
     ctx.manifest.write(&dir)?;
+    let dir = out.commit()?;
     eprintln!(
         "force-sweep: {} rows → {}",
         rows.len(),

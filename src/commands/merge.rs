@@ -4,6 +4,8 @@
 use crate::cli::MergeArgs;
 use crate::commands::{deterministic, stochastic, Context};
 use crate::error::{Error, Result};
+use crate::output::out_dir::{check_distinct, check_out};
+use crate::output::OutputDir;
 use crate::runner::{self, overrides_of};
 use crate::tally::partial::RunIdentity;
 use std::path::PathBuf;
@@ -22,8 +24,18 @@ fn context(id: &RunIdentity, out: Option<PathBuf>) -> Result<Context> {
 
 /// Runs the subcommand.
 pub fn run(args: &MergeArgs) -> Result<()> {
+    let inputs: Vec<(&str, &std::path::Path)> = args
+        .inputs
+        .iter()
+        .map(|p| ("SHARD_DIR", p.as_path()))
+        .collect();
+    if let Some(out) = &args.out {
+        // Output paths first (the default `--out` needs the shards' case).
+        check_out(out, "--out")?;
+        check_distinct(out, "--out", &inputs)?;
+    }
     let merged = runner::merge(&args.inputs, |id| {
-        let ctx = context(id, None)?;
+        let ctx = context(id, args.out.clone())?;
         let (_, o) = overrides_of(id)?;
         match id.command.as_str() {
             "stochastic" => {
@@ -43,6 +55,9 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     let id = &merged.identity;
     let ctx = context(id, args.out.clone())?;
     let (_, o) = overrides_of(id)?;
+    // The merged outputs replace `--out` as a whole: it must not be one of the shards read.
+    check_distinct(&ctx.out_dir, "--out", &inputs)?;
+    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
     let mut manifest = ctx.manifest;
     manifest.set_run("merged_shards", toml::Value::Integer(merged.shards as i64));
     manifest.set_run(
@@ -60,13 +75,15 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         "stochastic" => {
             let mut p = stochastic::prepare(&ctx.case, &o)?;
             p.notes = merged.manifest;
-            stochastic::finish(&ctx.out_dir, manifest, &p, &merged.tallies, None, seconds)
+            stochastic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
         }
         _ => {
             let surface = id.surface_file.as_deref().map(std::path::Path::new);
             let mut p = deterministic::prepare(&ctx.case, &o, surface)?;
             p.notes = merged.manifest;
-            deterministic::finish(&ctx.out_dir, manifest, &p, &merged.tallies, None, seconds)
+            deterministic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
         }
     }
+    out.commit()?;
+    Ok(())
 }

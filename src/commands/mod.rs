@@ -10,7 +10,7 @@ pub mod surface;
 
 use crate::case::{self, Case, DEFAULT_SEED};
 use crate::cli::CommonArgs;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::output::Manifest;
 use std::path::PathBuf;
 
@@ -28,7 +28,9 @@ pub struct Context {
 
 impl Context {
     /// Loads the case (or the built-in `default_toml`) and resolves seed, threads and `--out`
-    /// (default `results/<case name>/<command>/`). Creates nothing on disk.
+    /// (default `results/<case name>/<command>/`, for a case `name` that is one plain path
+    /// component). Creates nothing on disk: commands write through an
+    /// [`OutputDir`](crate::output::OutputDir) begun on `out_dir`.
     pub fn new(common: &CommonArgs, command: &str, default_toml: &str) -> Result<Context> {
         let (case_text, case_origin) = case::load_text(common.case.as_deref(), default_toml)?;
         Context::from_text(
@@ -51,8 +53,13 @@ impl Context {
         let case = case::parse(&case_text, &case_origin)?;
         let seed = seed.or(case.seed).unwrap_or(DEFAULT_SEED);
         let threads = rayon::current_num_threads();
-        let out_dir =
-            out.unwrap_or_else(|| PathBuf::from("results").join(&case.name).join(command));
+        let out_dir = match out {
+            Some(d) => d,
+            None => {
+                check_name(&case.name)?;
+                PathBuf::from("results").join(&case.name).join(command)
+            }
+        };
         let manifest = Manifest::new(command, &case, seed, threads);
         Ok(Context {
             case,
@@ -75,4 +82,22 @@ impl Context {
                 .join(format!("shard-{}-of-{}", shard.index, shard.count)),
         }
     }
+}
+
+/// A case `name` names the default output directory `results/<name>/<command>/`: it must be
+/// one plain path component, so that the outputs stay under `results/`.
+pub fn check_name(name: &str) -> Result<()> {
+    let plain = !name.is_empty()
+        && name.len() <= 255
+        && name != "."
+        && name != ".."
+        && !name.contains(['/', '\\', '\0']);
+    if plain {
+        return Ok(());
+    }
+    Err(Error::invalid(
+        "name",
+        format!("{name:?}"),
+        "one plain path component (not empty, no `/`, `\\` or NUL, not `.` or `..`, at most 255 bytes): the default output directory is results/<name>/<command>/",
+    ))
 }

@@ -4,6 +4,11 @@ use crate::cli::ReportArgs;
 use crate::error::{Error, Result};
 
 /// Writes `REPORT.md` and the aggregated tables under `--results`.
+///
+/// Unlike the other commands, `report` does not replace a directory as a whole: it adds a
+/// few files (`REPORT.md`, `fig4.csv`/`.svg`, `speed_vs_error.csv`/`.svg`) to an existing
+/// results tree that the runs own, so each file is written on its own, atomically
+/// (`output::write_atomic`: temporary file, then rename).
 pub fn run(args: &ReportArgs) -> Result<()> {
     if !args.results.is_dir() {
         return Err(Error::invalid(

@@ -7,7 +7,7 @@ use crate::cli::StochasticArgs;
 use crate::commands::Context;
 use crate::error::Result;
 use crate::output::schema::write_tables;
-use crate::output::{prepare_out_dir, Manifest};
+use crate::output::{prepare_out_dir, Manifest, OutputDir};
 use crate::runner::{self, TallyOverrides};
 use crate::stochastic::plots::write_figures;
 use crate::stochastic::simulate::{fill_block, gamma_model_curve, tally_spec, ModelSetup};
@@ -68,6 +68,8 @@ pub struct Prepared {
 /// Resolves the scene, the model and what to tally (warnings on stderr).
 pub fn prepare(case: &Case, o: &TallyOverrides) -> Result<Prepared> {
     let mut scene = case.scene()?;
+    // One case file drives both models: its `[deterministic]` section is checked here too.
+    crate::commands::deterministic::deterministic_options(case)?;
     scene.set_count(o.particles)?;
     scene.set_target_se(o.target_se)?;
     let wall = scene.wall.deviations();
@@ -121,14 +123,27 @@ pub fn run(args: &StochasticArgs) -> Result<()> {
         p.scene.target_se_deg,
         o.shard,
     )?;
-    let identity = runner::identity(
-        "stochastic",
-        &ctx.case_text,
-        &ctx.case_origin,
-        ctx.seed,
-        &o,
-        None,
-    )?;
+    // What shards must agree on (a shard's partial tally records it).
+    let identity = plan
+        .shard
+        .map(|_| {
+            runner::identity(
+                "stochastic",
+                &ctx.case_text,
+                &ctx.case_origin,
+                ctx.seed,
+                &o,
+                None,
+            )
+        })
+        .transpose()?;
+    // Every input is checked: lock and stage the output directory (a shard's own directory
+    // for a shard run), then compute.
+    let target = match plan.shard {
+        Some(shard) => ctx.shard_dir(&args.common, shard),
+        None => ctx.out_dir.clone(),
+    };
+    let out = OutputDir::begin(&target, "--out")?;
     let t0 = std::time::Instant::now();
     let seed = ctx.seed;
     let done = runner::execute(&plan, "stochastic", |k, start, end, block| {
@@ -143,24 +158,26 @@ pub fn run(args: &StochasticArgs) -> Result<()> {
     });
     let seconds = t0.elapsed().as_secs_f64();
     let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
-    if let Some(shard) = plan.shard {
-        let dir = ctx.shard_dir(&args.common, shard);
-        runner::write_partial(&dir, &identity, &plan, p.notes, tallies, seconds)?;
-        return Ok(());
+    if let Some(identity) = &identity {
+        runner::write_partial(out.path(), identity, &plan, p.notes, tallies, seconds)?;
+    } else {
+        finish(
+            out.path(),
+            ctx.manifest,
+            &p,
+            &tallies,
+            Some(&stats),
+            seconds,
+        )?;
     }
-    finish(
-        &ctx.out_dir,
-        ctx.manifest,
-        &p,
-        &tallies,
-        Some(&stats),
-        seconds,
-    )
+    out.commit()?;
+    Ok(())
 }
 
-/// Writes the outputs of a run (or of merged shards) into `dir`: `summary.csv`,
-/// `pdfs.csv`, `moments.csv`, the figures and `run.toml`. `stats` are the per-condition
-/// run statistics of a one-process run (`None` after a merge).
+/// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
+/// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
+/// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
+/// after a merge).
 pub fn finish(
     dir: &Path,
     mut manifest: Manifest,
@@ -188,8 +205,8 @@ pub fn finish(
         let mut r = t.result();
         r.push_curve(gamma_model_curve(&wall, &cond, p.scene.bin_width_deg));
         let mut row = toml::Table::new();
-        row.insert("alpha_in_deg".into(), f(round(cond.alpha_in_deg(), 9)));
-        row.insert("beta_in_deg".into(), f(round(cond.beta_in_deg(), 9)));
+        row.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
+        row.insert("beta_in_deg".into(), f(cond.beta_in_deg()));
         row.insert("rebounds".into(), toml::Value::Integer(c.particles as i64));
         row.insert(
             "blocks".into(),

@@ -1,17 +1,19 @@
 //! `rebound surface`: generate the Garcia–Stoll surface of the case and measure the
 //! statistics of Radenkovic & Simonin 2021, Table 1 (Eqs. 7–9, 14–15).
 //!
-//! Outputs in `--out`: `surface_summary.csv`, `normal_angles.csv`, `height_map.svg`,
-//! `normal_angle_pdfs.svg`, `run.toml` (timings only there), and with `--heights FILE`
-//! the height field in the format of [`crate::surface::heights_io`].
+//! Outputs in `--out` ([`OUTPUT_FILES`]): `surface_summary.csv`, `normal_angles.csv`,
+//! `height_map.svg`, `normal_angle_pdfs.svg`, `run.toml` (timings only there), and with
+//! `--heights FILE` the height field in the format of [`crate::surface::heights_io`].
+//! `--out` is written as a whole ([`crate::output::out_dir`]); a `--heights` file inside it
+//! moves with the swap, one outside it is written on its own (atomically).
 
 use crate::cli::SurfaceArgs;
 use crate::commands::Context;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
-use crate::output::{fmt_num, prepare_out_dir, CsvTable};
+use crate::output::out_dir::{place_file, OutputDir};
+use crate::output::{fmt_num, CsvTable};
 use crate::surface::figure::height_map_svg;
-use crate::surface::generate::generation_bytes;
 use crate::surface::heights_io::write_heights;
 use crate::surface::stats::{surface_stats, HistogramSpec, RotatedStats, SurfaceStats};
 use crate::surface::{generate, HeightField};
@@ -54,6 +56,15 @@ pub const ANGLES_HEADER: [&str; 9] = [
     "model_rho_xi_zeta",
 ];
 
+/// The files the command writes into `--out`.
+pub const OUTPUT_FILES: [&str; 5] = [
+    "surface_summary.csv",
+    "normal_angles.csv",
+    "height_map.svg",
+    "normal_angle_pdfs.svg",
+    "run.toml",
+];
+
 /// Bins of the `ξ*`, `ζ*` histograms.
 const HIST_BINS: usize = 100;
 
@@ -64,7 +75,12 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     let spec = ctx.case.surface_spec()?;
     let betas = ctx.case.beta_star()?;
     let target = spec.deviations();
-    check_memory(&spec)?;
+    let heights = args
+        .heights
+        .as_deref()
+        .map(|h| place_file(h, "--heights", &ctx.out_dir, &OUTPUT_FILES))
+        .transpose()?;
+    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
 
     let t0 = Instant::now();
     let field = generate(&spec, ctx.seed);
@@ -77,8 +93,7 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     let stats = surface_stats(&field, &betas, Some(hist));
     let t_stats = t0.elapsed().as_secs_f64() - t_gen;
 
-    prepare_out_dir(&ctx.out_dir)?;
-    let dir = ctx.out_dir.clone();
+    let dir = out.path().to_path_buf();
     summary_table(&spec, &target, &stats).write(&dir.join("surface_summary.csv"))?;
     angles_table(&target, &stats).write(&dir.join("normal_angles.csv"))?;
     height_map_svg(
@@ -92,8 +107,8 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
         ),
     )?;
     pdf_figure(&dir.join("normal_angle_pdfs.svg"), &target, &stats)?;
-    if let Some(path) = &args.heights {
-        write_heights(path, &field)?;
+    if let (Some(path), Some(place)) = (&args.heights, &heights) {
+        write_heights(&place.path_in(&out), &field)?;
         ctx.manifest
             .set_run("heights_file", path.display().to_string().into());
     }
@@ -103,39 +118,12 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     ctx.manifest
         .set_run("stats_s", toml::Value::Float(round_ms(t_stats)));
     ctx.manifest.write(&dir)?;
+    out.commit()?;
     Ok(())
 }
 
 /// Refuses a grid whose generation would not fit in the available memory (Linux:
 /// `MemAvailable` of /proc/meminfo) instead of letting the allocation abort the process.
-fn check_memory(spec: &crate::case::SurfaceSpec) -> Result<()> {
-    let need = generation_bytes(spec);
-    let Some(avail) = mem_available_bytes() else {
-        return Ok(());
-    };
-    if need > avail {
-        let gib = |b: u64| format!("{:.1} GiB", b as f64 / (1u64 << 30) as f64);
-        return Err(Error::invalid(
-            "surface.nodes",
-            spec.nodes,
-            &format!(
-                "a grid that fits in memory: {} nodes per side need {} and {} are available",
-                spec.nodes,
-                gib(need),
-                gib(avail)
-            ),
-        ));
-    }
-    Ok(())
-}
-
-fn mem_available_bytes() -> Option<u64> {
-    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kb * 1024)
-}
-
 fn round_ms(s: f64) -> f64 {
     (s * 1e3).round() / 1e3
 }

@@ -109,7 +109,14 @@ pub fn outcome(h: &History, beta_in: f64, wall: &Deviations, psi: f64) -> Option
     })
 }
 
+/// Histories traced in parallel before they are tallied in order (bounded memory).
+const CHUNK: u64 = 4096;
+
 /// Tallies histories `start..end` of a condition into `block`, in particle order.
+///
+/// Histories are traced in parallel in chunks of [`CHUNK`] and tallied in particle order, so
+/// that a run with fewer blocks than threads (a few thousand particles) still uses every
+/// thread, and the tally is the same for any thread count.
 pub fn fill_block(
     tracker: &Tracker<'_>,
     setup: &ModelSetup,
@@ -120,16 +127,28 @@ pub fn fill_block(
     block: &mut BlockTally,
 ) {
     let prefix = stream_prefix(seed, cond_index);
-    for i in start..end {
-        let h = history_at(tracker, setup, cond, &prefix, i);
-        match h.fate {
-            Fate::Lost(r) => block.push_lost(r as usize),
-            Fate::Escaped => {
-                if let Some(o) = outcome(&h, cond.beta_in, &setup.wall, setup.psi) {
-                    block.push(&o);
+    let mut lo = start;
+    while lo < end {
+        let hi = (lo + CHUNK).min(end);
+        let fates: Vec<Result<Outcome, LostReason>> = (lo..hi)
+            .into_par_iter()
+            .map(|i| {
+                let h = history_at(tracker, setup, cond, &prefix, i);
+                match h.fate {
+                    Fate::Lost(r) => Err(r),
+                    Fate::Escaped => {
+                        outcome(&h, cond.beta_in, &setup.wall, setup.psi).ok_or(LostReason::Stopped)
+                    }
                 }
+            })
+            .collect();
+        for f in &fates {
+            match f {
+                Ok(o) => block.push(o),
+                Err(r) => block.push_lost(*r as usize),
             }
         }
+        lo = hi;
     }
 }
 

@@ -155,14 +155,29 @@ pub fn choose_surface(
         ));
     }
     let nodes = 8 * next_smooth((target as usize).div_ceil(8));
-    Ok(SurfaceChoice {
+    let choice = SurfaceChoice {
         length_m: nodes as f64 * spacing,
         nodes,
         spacing_m: spacing,
         rms_height_m: h,
         corr_length_x_m: cx,
         corr_length_z_m: cz,
-    })
+    };
+    let spec = crate::case::SurfaceSpec {
+        length_m: choice.length_m,
+        nodes,
+        rms_height_m: h,
+        corr_length_x_m: cx,
+        corr_length_z_m: cz,
+    };
+    crate::memory::require(
+        "deterministic.side_per_corr_length",
+        opt.side_per_corr_length,
+        crate::surface::generate::generation_bytes(&spec),
+        &format!("the automatic {nodes}-node surface"),
+    )
+    .map_err(|e| e.to_string())?;
+    Ok(choice)
 }
 
 #[cfg(test)]

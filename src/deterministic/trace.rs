@@ -84,6 +84,12 @@ pub struct HitInfo {
 /// Default cap on collisions per particle.
 pub const DEFAULT_MAX_COLLISIONS: u32 = 1000;
 
+/// The step budget of one history: cells and tiles crossed in all. Enough for a ray
+/// descending from the top of a shipped surface to its bottom at 0.001° (about 2 · 10⁵ cells,
+/// 3 · 10⁴ tiles) many times over; ≈ 0.04 s of one core. A history that exhausts it is lost
+/// (`LostReason::StepBudget`) and counted.
+pub const MAX_STEPS: u64 = 4_000_000;
+
 /// Side of a tile of the coarse max-height map, in cells.
 const TILE: usize = 8;
 
@@ -223,9 +229,7 @@ impl<'a> Tracker<'a> {
             }
             _ => None,
         };
-        // Enough for a ray descending from the top to the bottom at 0.001° over
-        // the whole range, several periods, and then some.
-        let max_steps = 20_000_000;
+        let max_steps = MAX_STEPS;
         Ok(Tracker {
             field,
             nx,
@@ -544,7 +548,10 @@ impl<'a> Tracker<'a> {
                 if tile == checked_tile {
                     // Already known to need the cell walk.
                 } else if let Some((t_new, c_new, g_new)) =
-                    self.skip_tiles(tiles, o, d, &cell, t_cur, t_y)
+                    match self.skip_tiles(tiles, o, d, &cell, t_cur, t_y, steps) {
+                        Ok(skip) => skip,
+                        Err(()) => return Walk::Lost(LostReason::StepBudget),
+                    }
                 {
                     t_cur = t_new;
                     cell = c_new;
@@ -719,7 +726,9 @@ impl<'a> Tracker<'a> {
     /// If the ray at `t_cur` sits at the border of a tile (or anywhere inside one)
     /// and stays above that tile's maximum until it leaves it, returns the time,
     /// cell and clearance where it enters the next tile that may be hit; `None`
-    /// if the current tile must be walked cell by cell.
+    /// if the current tile must be walked cell by cell. Every tile crossed counts against
+    /// the history's step budget (`Err` when it is exhausted): a nearly horizontal ray may
+    /// cross tiles for ever.
     #[allow(clippy::too_many_arguments)]
     fn skip_tiles(
         &self,
@@ -729,13 +738,18 @@ impl<'a> Tracker<'a> {
         cell: &Cell,
         t_cur: f64,
         t_y: f64,
-    ) -> Option<(f64, Cell, f64)> {
+        steps: &mut u64,
+    ) -> std::result::Result<Option<(f64, Cell, f64)>, ()> {
         let (twx, twz) = (tiles.twx as i64, tiles.twz as i64);
         let mut c = *cell;
         let mut t = t_cur;
         let mut skipped = false;
         let mut last_axis_x = true;
         loop {
+            *steps += 1;
+            if *steps > self.max_steps {
+                return Err(());
+            }
             // Tile of the current cell (unwrapped) and its exit time.
             let tx = c.ix >> tiles.shx;
             let tz = c.iz >> tiles.shz;
@@ -770,7 +784,7 @@ impl<'a> Tracker<'a> {
             }
             if t_out >= t_y {
                 // Above this tile until the segment ends: nothing more to hit.
-                return Some((t_y, c, 1.0));
+                return Ok(Some((t_y, c, 1.0)));
             }
             // Move to the first cell of the next tile.
             let px = o.x + d.x * t_out;
@@ -798,7 +812,7 @@ impl<'a> Tracker<'a> {
             skipped = true;
         }
         if !skipped {
-            return None;
+            return Ok(None);
         }
         // Clearance at the entry point on the edge just crossed.
         let y = o.y + d.y * t;
@@ -820,7 +834,7 @@ impl<'a> Tracker<'a> {
                 y - lerp(hc.2, hc.3, sx)
             }
         };
-        Some((t, c, g))
+        Ok(Some((t, c, g)))
     }
 
     #[inline]

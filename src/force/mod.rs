@@ -38,10 +38,10 @@ impl Particle {
     /// True if every property is finite and physical (the cheap check of the hot path).
     #[inline]
     pub fn is_valid(&self) -> bool {
-        let pos = |v: f64| v.is_finite() && v > 0.0;
-        pos(self.density)
-            && pos(self.youngs)
-            && pos(self.diameter)
+        let within = |v: f64, (lo, hi): (f64, f64)| v.is_finite() && (lo..=hi).contains(&v);
+        within(self.density, DENSITY_RANGE_KG_M3)
+            && within(self.youngs, YOUNGS_RANGE_PA)
+            && within(self.diameter, DIAMETER_RANGE_M)
             && self.poisson.is_finite()
             && self.poisson > -1.0
             && self.poisson <= 0.5
@@ -59,16 +59,38 @@ impl Particle {
 
     #[cold]
     fn explain(&self) -> Result<()> {
-        let pos = |key: &str, v: f64| {
-            if v.is_finite() && v > 0.0 {
+        let within = |key: &str, v: f64, (lo, hi): (f64, f64), scale: f64, why: &str| {
+            if v.is_finite() && (lo..=hi).contains(&v) {
                 Ok(())
             } else {
-                Err(Error::invalid(key, v, "a finite number > 0"))
+                Err(Error::invalid(
+                    key,
+                    v * scale,
+                    &format!("{} to {} ({why})", lo * scale, hi * scale),
+                ))
             }
         };
-        pos("density_kg_m3", self.density)?;
-        pos("youngs_pa", self.youngs)?;
-        pos("diameter_um", self.diameter * 1e6)?;
+        within(
+            "density_kg_m3",
+            self.density,
+            DENSITY_RANGE_KG_M3,
+            1.0,
+            "solid particles",
+        )?;
+        within(
+            "youngs_pa",
+            self.youngs,
+            YOUNGS_RANGE_PA,
+            1.0,
+            "from soft gels to diamond",
+        )?;
+        within(
+            "diameter_um",
+            self.diameter,
+            DIAMETER_RANGE_M,
+            1e6,
+            "a nanometre to a metre",
+        )?;
         if !(self.poisson.is_finite() && self.poisson > -1.0 && self.poisson <= 0.5) {
             return Err(Error::invalid("poisson", self.poisson, "-1 < σ ≤ 0.5"));
         }
@@ -119,8 +141,12 @@ impl Impact {
         if !(beta_deg.is_finite() && (0.0..=90.0).contains(&beta_deg)) {
             return Err(Error::invalid("beta_deg", beta_deg, "0 ≤ β ≤ 90"));
         }
-        if !(u_n.is_finite() && u_n >= 0.0) {
-            return Err(Error::invalid("u_n_m_s", u_n, "a finite number ≥ 0"));
+        if !(u_n == 0.0 || (u_n.is_finite() && (MIN_U_N_M_S..=MAX_U_N_M_S).contains(&u_n))) {
+            return Err(Error::invalid(
+                "u_n_m_s",
+                u_n,
+                "0, or 1e-6 to 10000 m/s (elastic impacts: slower ones are adhesion's, faster ones hypervelocity)",
+            ));
         }
         Ok(imp)
     }
@@ -129,11 +155,11 @@ impl Impact {
     #[inline]
     pub fn is_valid(&self) -> bool {
         self.lambda.is_finite()
-            && self.lambda >= 1.0
+            && (1.0..=MAX_LAMBDA).contains(&self.lambda)
             && self.beta.is_finite()
             && (0.0..=std::f64::consts::FRAC_PI_2).contains(&self.beta)
-            && self.u_n.is_finite()
-            && self.u_n >= 0.0
+            && (self.u_n == 0.0
+                || (self.u_n.is_finite() && (MIN_U_N_M_S..=MAX_U_N_M_S).contains(&self.u_n)))
     }
 
     /// Re-validates an impact built by hand (β in radians, [0, π/2]).
@@ -165,16 +191,29 @@ impl Impact {
 
 /// λ must be finite and ≥ 1: prolate spheroids and the sphere. Oblate spheroids are not modelled.
 pub fn validate_lambda(lambda: f64) -> Result<()> {
-    if lambda.is_finite() && lambda >= 1.0 {
+    if lambda.is_finite() && (1.0..=MAX_LAMBDA).contains(&lambda) {
         Ok(())
     } else {
         Err(Error::invalid(
             "lambda",
             lambda,
-            "λ ≥ 1 (prolate spheroids and the sphere; oblate spheroids, λ < 1, are not modelled)",
+            "1 ≤ λ ≤ 1000 (prolate spheroids and the sphere, up to fibres of 1000:1; oblate spheroids, λ < 1, are not modelled)",
         ))
     }
 }
+
+/// Particle densities (kg/m³): solids from aerogels to osmium, with room to spare.
+pub const DENSITY_RANGE_KG_M3: (f64, f64) = (1.0, 1e5);
+/// Young's moduli (Pa): soft gels (1 kPa) to diamond (≈ 1 TPa).
+pub const YOUNGS_RANGE_PA: (f64, f64) = (1e3, 1e13);
+/// Volume-equivalent diameters (m): a nanometre to a metre.
+pub const DIAMETER_RANGE_M: (f64, f64) = (1e-9, 1.0);
+/// Aspect ratios λ: spheres to fibres of 1000:1.
+pub const MAX_LAMBDA: f64 = 1000.0;
+/// Normal impact speeds (m/s): 0, or elastic impacts from a micrometre per second (slower,
+/// adhesion decides) to far below hypervelocity.
+pub const MIN_U_N_M_S: f64 = 1e-6;
+pub const MAX_U_N_M_S: f64 = 1e4;
 
 /// What a model returns for one impact.
 #[derive(Debug, Clone, Copy, PartialEq)]

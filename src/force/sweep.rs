@@ -3,6 +3,9 @@ use super::{Impact, Model, Particle};
 use crate::error::{Error, Result};
 use rayon::prelude::*;
 
+/// Most points a sweep may have in all (models × D × λ × β × U_N).
+pub const MAX_ROWS: usize = 1_000_000;
+
 /// A resolved sweep: every list non-empty, β in degrees, U_N in m/s.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sweep {
@@ -71,7 +74,36 @@ impl Sweep {
         for &u in &self.u_ns {
             Impact::from_deg(self.lambdas[0], 0.0, u)?;
         }
-        Ok(())
+        // Each axis is bounded; so is their product (rows, the CSV and its memory).
+        let rows = [
+            self.models.len(),
+            self.diameters.len(),
+            self.lambdas.len(),
+            self.betas_deg.len(),
+            self.u_ns.len(),
+        ]
+        .iter()
+        .fold(1u128, |a, &n| a * n as u128);
+        if rows > MAX_ROWS as u128 {
+            return Err(Error::invalid(
+                "sweep",
+                format!(
+                    "{} models × {} diameters × {} λ × {} β × {} U_N = {rows} points",
+                    self.models.len(),
+                    self.diameters.len(),
+                    self.lambdas.len(),
+                    self.betas_deg.len(),
+                    self.u_ns.len()
+                ),
+                &format!("at most {MAX_ROWS} points in all"),
+            ));
+        }
+        crate::memory::require(
+            "sweep",
+            format!("{rows} points"),
+            rows as u64 * std::mem::size_of::<Row>() as u64 * 3,
+            "the sweep's rows and their CSV",
+        )
     }
 
     /// Number of rows.

@@ -1,17 +1,21 @@
-//! Writing results: atomic files (temporary file, then rename), deterministic number
+//! Writing results: output directories written as a whole (staging directory, lock and
+//! swap: `out_dir`), atomic files (temporary file, then rename), deterministic number
 //! formatting, CSV tables (`csv`), the schema of the tally outputs (`schema`) and the run
 //! manifest `run.toml`.
 
 pub mod csv;
+pub mod out_dir;
 pub mod schema;
 
 pub use self::csv::{CsvTable, Rows};
+pub use self::out_dir::OutputDir;
 
 use crate::error::{Error, Result};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-/// Creates the output directory (and parents).
+/// Creates the output directory (and parents). Commands write into the staging directory of
+/// an [`OutputDir`]; this only makes sure a directory exists.
 pub fn prepare_out_dir(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))
 }

@@ -9,6 +9,7 @@
 use super::csv::{CsvTable, Rows};
 use super::fmt_num;
 use crate::error::{Error, Result};
+use crate::incidence::fmt_key;
 use crate::tally::{ConditionResult, Estimate, Quantity};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -88,8 +89,8 @@ pub fn summary_row(r: &ConditionResult) -> Vec<String> {
     let std = |e: Option<Estimate>| opt(e.map(|e| e.std));
     let se = |e: Option<Estimate>| opt(e.map(|e| e.se));
     vec![
-        fmt_num(s.condition.alpha_in_deg()),
-        fmt_num(s.condition.beta_in_deg()),
+        fmt_key(s.condition.alpha_in_deg()),
+        fmt_key(s.condition.beta_in_deg()),
         fmt_num(s.deviations.delta_xi.to_degrees()),
         fmt_num(s.deviations.delta_zeta.to_degrees()),
         s.particles.to_string(),
@@ -127,7 +128,7 @@ pub fn tables(results: &[ConditionResult]) -> [CsvTable; 3] {
     for r in results {
         summary.push(summary_row(r));
         let c = r.condition();
-        let (a, b) = (fmt_num(c.alpha_in_deg()), fmt_num(c.beta_in_deg()));
+        let (a, b) = (fmt_key(c.alpha_in_deg()), fmt_key(c.beta_in_deg()));
         for pdf in &r.pdfs {
             for bin in &pdf.bins {
                 pdfs.push(vec![
@@ -187,12 +188,13 @@ fn cell<'a>(row: &'a std::collections::HashMap<String, String>, key: &str) -> &'
 }
 
 fn number(s: &str, path: &Path, what: &str) -> Result<f64> {
-    s.trim().parse::<f64>().map_err(|_| {
-        Error::Input(format!(
-            "{}: not a rebound output (`{what}` = \"{s}\" is not a number)",
+    match s.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => Err(Error::Input(format!(
+            "{}: not a rebound output (`{what}` = \"{s}\" is not a finite number)",
             path.display()
-        ))
-    })
+        ))),
+    }
 }
 
 /// Reads `summary.csv`, `pdfs.csv` and (when present) `moments.csv` of a run directory;

@@ -61,6 +61,12 @@ fn header(f: &HeightField) -> [u8; HEADER_LEN] {
 /// surfaces, so that a corrupt header cannot ask for absurd amounts of memory.
 pub const MAX_NODES: u64 = 40_000 * 40_000;
 
+/// Grid spacings a height file may have (m).
+const MIN_SPACING_M: f64 = 1e-12;
+const MAX_SPACING_M: f64 = 1e3;
+/// Largest height a height file may hold (m): a rough wall, not a mountain range.
+const MAX_HEIGHT_M: f64 = 1.0;
+
 /// Reads a height field written by [`write_heights`]. Every problem — missing file,
 /// foreign file, unknown version, impossible sizes or spacings, truncated or
 /// over-long data, non-finite heights — is an `Error::Input` naming the file.
@@ -100,14 +106,24 @@ pub fn read_heights(path: &Path) -> Result<HeightField> {
             "invalid grid {nx} × {nz}: allowed 1 to {MAX_NODES} nodes in total"
         )));
     }
+    // A rough wall's grid: spacings from a picometre to a kilometre.
     for (name, d) in [("dx", dx), ("dz", dz)] {
-        if !(d.is_finite() && d > 0.0) {
+        if !(d.is_finite() && (MIN_SPACING_M..=MAX_SPACING_M).contains(&d)) {
             return Err(bad(format!(
-                "invalid spacing {name} = {d}: allowed a positive number of metres"
+                "invalid spacing {name} = {d}: allowed {MIN_SPACING_M} to {MAX_SPACING_M} metres"
             )));
         }
     }
     let count = nx * nz;
+    // Heights in f64, and the tracker's tile map beside them.
+    let need = count.saturating_mul(9);
+    if let Some(avail) = crate::memory::available_bytes().filter(|&a| need > a) {
+        return Err(bad(format!(
+            "a {nx} × {nz} height field needs {}, the process may use {} (the least of the address-space limit, the cgroup limit and the free memory)",
+            crate::memory::human(need),
+            crate::memory::human(avail)
+        )));
+    }
     let expected = HEADER_LEN as u64 + 4 * count;
     if len != expected {
         let what = if len < expected {
@@ -130,12 +146,13 @@ pub fn read_heights(path: &Path) -> Result<HeightField> {
             .map_err(|e| bad(format!("cannot read the heights: {e}")))?;
         for b in bytes.chunks_exact(4) {
             let v = f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
-            if !v.is_finite() {
+            if !(v.is_finite() && (v as f64).abs() <= MAX_HEIGHT_M) {
                 let i = heights.len();
                 return Err(bad(format!(
-                    "height at node (ix = {}, iz = {}) is {v}: allowed finite numbers",
+                    "height at node (ix = {}, iz = {}), byte offset {}, is {v}: allowed finite heights within ±{MAX_HEIGHT_M} m",
                     i % nx as usize,
-                    i / nx as usize
+                    i / nx as usize,
+                    HEADER_LEN + 4 * i
                 )));
             }
             heights.push(v as f64);

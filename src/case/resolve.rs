@@ -13,6 +13,8 @@ use crate::wall::{self, Deviations};
 pub const LOW_ROUGHNESS_LIMIT_DEG: f64 = 7.5;
 /// Beyond this deviation the wall models are not meant to be used at all.
 pub const MAX_DEVIATION_DEG: f64 = 20.0;
+/// Steepest rms slope (degrees) a generated surface may have.
+pub const MAX_SURFACE_SLOPE_DEG: f64 = 45.0;
 
 /// A generated surface, SI units. A `None` correlation length means `Δ = 0` along that
 /// axis: the surface is exactly constant along it (notes §4).
@@ -276,50 +278,64 @@ impl Case {
                 lengths,
             )?;
         }
-        let axis =
-            |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<Option<f64>> {
-                let c = match (c, d) {
-                    (Some(_), Some(_)) => {
-                        return Err(Error::Input(format!(
-                            "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
-                        )))
-                    }
-                    (Some(c), None) => {
-                        let c = within(&format!("{sec}.{cname}"), c, lo, hi, " µm", lengths)?;
-                        // The slope it makes with h must be one the wall models cover (Eq. 15).
-                        if h_um > 0.0 {
-                            deviation(
-                                &format!("{sec}.{cname} (as the deviation √2 h/c_L, Eq. 15)"),
-                                wall::deviation_from_surface(h_um, c).to_degrees(),
-                            )?;
+        let axis = |c: Option<f64>,
+                    d: Option<f64>,
+                    cname: &str,
+                    dname: &str|
+         -> Result<Option<f64>> {
+            let c = match (c, d) {
+                (Some(_), Some(_)) => {
+                    return Err(Error::Input(format!(
+                        "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
+                    )))
+                }
+                (Some(c), None) => {
+                    let c = within(&format!("{sec}.{cname}"), c, lo, hi, " µm", lengths)?;
+                    // The rms slope √2 h/c_L (Eq. 14) of a generated surface: up to 45°
+                    // (Fig. 4 studies it beyond the low-roughness range; the wall models
+                    // themselves stop at 20°, checked in `scene`).
+                    if h_um > 0.0 {
+                        let d = wall::deviation_from_surface(h_um, c).to_degrees();
+                        if !(d <= MAX_SURFACE_SLOPE_DEG) {
+                            return Err(Error::invalid(
+                                    &format!("{sec}.{cname}"),
+                                    c,
+                                    &format!(
+                                        "a correlation length giving an rms slope √2 h/c_L of at most {MAX_SURFACE_SLOPE_DEG}° (Eq. 14); it gives {d}°"
+                                    ),
+                                ));
                         }
-                        Some(c)
-                    }
-                    (None, Some(d)) => {
-                        let dr = deviation(&format!("{sec}.{dname}"), d)?;
-                        let c = wall::corr_length_from_deviation(h_um, dr);
-                        if let Some(c) = c.filter(|_| h_um > 0.0) {
-                            within(
-                                &format!(
-                                    "{sec}.{dname} (as the correlation length √2 h/Δ, Eq. 15)"
-                                ),
-                                c,
-                                lo,
-                                hi,
-                                " µm",
-                                lengths,
-                            )?;
+                        if d > LOW_ROUGHNESS_LIMIT_DEG {
+                            warn(&format!(
+                                    "`{sec}.{cname}` = {c} µm gives Δ = √2 h/c_L = {d:.2}° (Eq. 15), beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°)"
+                                ));
                         }
-                        c
                     }
-                    (None, None) => {
-                        return Err(Error::Input(format!(
-                            "[{sec}] needs `{cname}` or `{dname}`"
-                        )))
+                    Some(c)
+                }
+                (None, Some(d)) => {
+                    let dr = deviation(&format!("{sec}.{dname}"), d)?;
+                    let c = wall::corr_length_from_deviation(h_um, dr);
+                    if let Some(c) = c.filter(|_| h_um > 0.0) {
+                        within(
+                            &format!("{sec}.{dname} (as the correlation length √2 h/Δ, Eq. 15)"),
+                            c,
+                            lo,
+                            hi,
+                            " µm",
+                            lengths,
+                        )?;
                     }
-                };
-                Ok(c)
+                    c
+                }
+                (None, None) => {
+                    return Err(Error::Input(format!(
+                        "[{sec}] needs `{cname}` or `{dname}`"
+                    )))
+                }
             };
+            Ok(c)
+        };
         let cx = axis(
             w.corr_length_x_um,
             w.delta_xi_deg,
@@ -415,6 +431,21 @@ impl Case {
     /// The scene shared by `deterministic` and `stochastic`.
     pub fn scene(&self) -> Result<Scene> {
         let wall = self.wall_source()?;
+        // A generated surface may be steeper than the wall models go (`surface` studies it).
+        let d = wall.deviations();
+        for (key, v) in [
+            ("delta_xi_deg", d.delta_xi),
+            ("delta_zeta_deg", d.delta_zeta),
+        ] {
+            let deg = v.to_degrees();
+            if deg > MAX_DEVIATION_DEG {
+                return Err(Error::invalid(
+                    &format!("surface ({key} by Eq. 15)"),
+                    deg,
+                    &format!("0 to {MAX_DEVIATION_DEG} degrees for the wall models"),
+                ));
+            }
+        }
         let inc = self.incidence.as_ref().ok_or_else(|| {
             Error::Input("the case needs an [incidence] section with `alpha_deg`".into())
         })?;

@@ -296,7 +296,7 @@ impl Case {
                     // themselves stop at 20°, checked in `scene`).
                     if h_um > 0.0 {
                         let d = wall::deviation_from_surface(h_um, c).to_degrees();
-                        if !(d <= MAX_SURFACE_SLOPE_DEG) {
+                        if d.is_nan() || d > MAX_SURFACE_SLOPE_DEG {
                             return Err(Error::invalid(
                                     &format!("{sec}.{cname}"),
                                     c,

@@ -4,6 +4,10 @@ use super::schema::Case;
 use crate::error::{Error, Result};
 use std::path::{Path, PathBuf};
 
+/// Largest case file read (bytes): far above any real case, far below what would strain the
+/// parser (a 50 MB list of angles is a mistake, not a case).
+pub const MAX_CASE_BYTES: u64 = 4 << 20;
+
 /// Seed used when neither the case nor `--seed` gives one.
 pub const DEFAULT_SEED: u64 = 2021;
 
@@ -41,6 +45,14 @@ pub fn load_text(path: Option<&Path>, default_toml: &str) -> Result<(String, Str
     match path {
         Some(p) => {
             let resolved = resolve_path(p)?;
+            let size = std::fs::metadata(&resolved).map_or(0, |m| m.len());
+            if size > MAX_CASE_BYTES {
+                return Err(Error::invalid(
+                    "--case",
+                    format!("`{}` ({size} bytes)", resolved.display()),
+                    &format!("a case file of at most {MAX_CASE_BYTES} bytes"),
+                ));
+            }
             let text = std::fs::read_to_string(&resolved)
                 .map_err(|e| Error::Input(format!("case file `{}`: {e}", resolved.display())))?;
             Ok((text, resolved.display().to_string()))

@@ -103,6 +103,38 @@ fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+/// Keeps a coordinate within a few axis spans of the axis range (in log space on a log axis).
+#[derive(Clone, Copy)]
+struct Clamp {
+    lo: f64,
+    hi: f64,
+}
+
+impl Clamp {
+    const SPANS: f64 = 4.0;
+
+    fn new(lo: f64, hi: f64, log: bool) -> Self {
+        let (lo, hi) = if log {
+            let r = (hi / lo).max(1.0).powf(Self::SPANS);
+            ((lo / r).max(f64::MIN_POSITIVE), hi * r)
+        } else {
+            let span = hi - lo;
+            (lo - Self::SPANS * span, hi + Self::SPANS * span)
+        };
+        let lo = if lo.is_finite() { lo } else { f64::MIN };
+        let hi = if hi.is_finite() { hi } else { f64::MAX };
+        Clamp { lo, hi }
+    }
+
+    fn apply(self, v: f64) -> f64 {
+        if v.is_nan() {
+            v
+        } else {
+            v.clamp(self.lo, self.hi)
+        }
+    }
+}
+
 /// Renders `plots` side by side in a grid of `cols` columns into an SVG file.
 pub fn plot_grid_svg(path: &Path, plots: &[Plot], cols: usize) -> Result<()> {
     let cols = cols.max(1);
@@ -159,6 +191,13 @@ where
     } else {
         y0
     };
+    // Points far outside the axes would map to pixel offsets past i32 inside the plotting
+    // library; held a few chart widths out, they draw the same lines.
+    let (cx, cy) = (
+        Clamp::new(x0, x1, plot.log_x),
+        Clamp::new(y0, y1, plot.log_y),
+    );
+    let clamp = |p: (f64, f64)| (cx.apply(p.0), cy.apply(p.1));
     let mut builder = ChartBuilder::on(area);
     builder
         .caption(&plot.title, ("sans-serif", 16))
@@ -189,13 +228,14 @@ where
                             && (!plot.log_x || p.0 > 0.0)
                             && (!plot.log_y || p.1 > 0.0)
                     })
+                    .map(clamp)
                     .collect();
                 let bars: Vec<(f64, f64, f64)> = s
                     .points
                     .iter()
                     .zip(&s.err)
                     .filter(|(p, e)| p.0.is_finite() && p.1.is_finite() && e.is_finite())
-                    .map(|(p, e)| (p.0, p.1 - e, p.1 + e))
+                    .map(|(p, e)| (cx.apply(p.0), cy.apply(p.1 - e), cy.apply(p.1 + e)))
                     .collect();
                 chart
                     .draw_series(bars.into_iter().map(|(x, lo, hi)| {

@@ -11,6 +11,7 @@ pub mod collision;
 pub mod commands;
 pub mod compare;
 pub mod deterministic;
+pub mod erosion;
 pub mod error;
 pub mod ffi;
 pub mod figures;

@@ -14,6 +14,7 @@ use rayon::prelude::*;
 use roughwall::angles::{alpha_xy_of_velocity, incident_angles, normal_from_gamma};
 use roughwall::case::SpeedLaw;
 use roughwall::collision::{CollisionLaw, ShParams};
+use roughwall::erosion::{finnie::Finnie, ErosionModel, ErosionSetup};
 use roughwall::incidence::IncidentCondition;
 use roughwall::incidence::{draw_speed, incident_velocity};
 use roughwall::rng;
@@ -40,10 +41,7 @@ fn scenes() -> Vec<Scene> {
         delta_xi: x.to_radians(),
         delta_zeta: z.to_radians(),
     };
-    let fixed = SpeedLaw {
-        mean_m_s: 6.0,
-        std_m_s: 0.0,
-    };
+    let fixed = SpeedLaw::horizontal(6.0, 0.0);
     vec![
         Scene {
             name: "elastic_2.5_7.5_alpha-12.5_beta60",
@@ -59,10 +57,7 @@ fn scenes() -> Vec<Scene> {
             law: CollisionLaw::SommerfeldHuber(ShParams::glass_steel()),
             alpha_deg: -15.0,
             beta_deg: 60.0,
-            speed: SpeedLaw {
-                mean_m_s: 5.91,
-                std_m_s: 1.16,
-            },
+            speed: SpeedLaw::horizontal(5.91, 1.16),
         },
         Scene {
             name: "elastic_2.5_7.5_grazing_alpha-0.5_beta60",
@@ -101,6 +96,37 @@ fn bench_rebounds(c: &mut Criterion) {
                 seed += 1;
                 batch(&s, N, seed)
             })
+        });
+    }
+    g.finish();
+}
+
+/// Finnie erosion (OpenFOAM's defaults, steel's flow stress) on 500 µm glass.
+fn finnie() -> ErosionSetup {
+    ErosionSetup {
+        model: ErosionModel::Finnie(Finnie {
+            flow_stress_pa: 1e9,
+            psi: 2.0,
+            k: 2.0,
+        }),
+        particle_mass_kg: 2500.0 * std::f64::consts::PI / 6.0 * 500e-6f64.powi(3),
+        diameter_m: 500e-6,
+    }
+}
+
+/// The cost of tallying erosion: one tallied block of rebounds on one core, without and
+/// with `[erosion]` (issue 12: at most 10 % when enabled).
+fn bench_erosion(c: &mut Criterion) {
+    let mut g = c.benchmark_group("stochastic_erosion");
+    let n = 65_536;
+    g.throughput(Throughput::Elements(n));
+    g.sample_size(20);
+    for s in scenes().iter().take(2) {
+        g.bench_function(format!("{}_tallied_block", s.name), |b| {
+            b.iter(|| black_box(tallied_block_eroding(s, n, None)))
+        });
+        g.bench_function(format!("{}_tallied_block_finnie", s.name), |b| {
+            b.iter(|| black_box(tallied_block_eroding(s, n, Some(finnie()))))
         });
     }
     g.finish();
@@ -178,15 +204,21 @@ fn report(_: &mut Criterion) {
 /// One tallied block of `n` rebounds of a scene on one core: what `rebound stochastic` does
 /// per worker.
 fn tallied_block(s: &Scene, n: u64) -> BlockTally {
+    tallied_block_eroding(s, n, None)
+}
+
+/// [`tallied_block`] with an erosion law (or none).
+fn tallied_block_eroding(s: &Scene, n: u64, erosion: Option<ErosionSetup>) -> BlockTally {
     let setup = ModelSetup {
         wall: s.wall,
         law: s.law,
         psi: 2.0,
         diameter_m: 500e-6,
         speed: s.speed,
+        erosion,
     };
     let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
-    let mut block = BlockTally::new(&tally_spec(&s.wall, cond, 1.0), 0);
+    let mut block = BlockTally::new(&tally_spec(&s.wall, cond, 1.0, erosion.as_ref()), 0);
     fill_block(&setup, &cond, 0, 1, (0, n), &mut block);
     block
 }
@@ -288,5 +320,12 @@ fn breakdown(_: &mut Criterion) {
     println!("| **total, tallied rebound** | **{tallied:.0}** | 100 % |");
 }
 
-criterion_group!(benches, report, breakdown, bench_rebounds, bench_sampler);
+criterion_group!(
+    benches,
+    report,
+    breakdown,
+    bench_rebounds,
+    bench_sampler,
+    bench_erosion
+);
 criterion_main!(benches);

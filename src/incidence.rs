@@ -5,11 +5,59 @@ use nalgebra::Vector3;
 use rand::Rng;
 use rand_distr::{Distribution, Normal};
 
-/// Horizontal incident speed `~ N(mean, std)` (Radenkovic & Simonin 2021, Sec. 4).
+/// Incident speed `~ N(mean, std)`: by default the *horizontal* speed, as in Radenkovic &
+/// Simonin 2021, Sec. 4 (`|U| = u_h / cos α`); or the speed `|U|` itself, which an erosion
+/// study against the impact angle needs (a fixed impact energy at every angle).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpeedLaw {
     pub mean_m_s: f64,
     pub std_m_s: f64,
+    pub reference: SpeedReference,
+}
+
+/// What the drawn speed of a [`SpeedLaw`] is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SpeedReference {
+    /// The horizontal speed `u_h` (the paper's convention).
+    #[default]
+    Horizontal,
+    /// The speed `|U|`.
+    Magnitude,
+}
+
+impl SpeedReference {
+    /// The name in case files (`[incidence] speed_reference`).
+    pub fn name(self) -> &'static str {
+        match self {
+            SpeedReference::Horizontal => "horizontal",
+            SpeedReference::Magnitude => "magnitude",
+        }
+    }
+}
+
+impl SpeedLaw {
+    /// A horizontal-speed law (the paper's convention).
+    pub const fn horizontal(mean_m_s: f64, std_m_s: f64) -> SpeedLaw {
+        SpeedLaw {
+            mean_m_s,
+            std_m_s,
+            reference: SpeedReference::Horizontal,
+        }
+    }
+
+    /// The incident velocity for angles `alpha < 0`, `beta` (rad) and a drawn speed `s`:
+    /// [`incident_velocity`] for a horizontal speed, `s` along the incident direction for
+    /// a speed magnitude.
+    #[inline]
+    pub fn velocity(&self, alpha: f64, beta: f64, s: f64) -> Vector3<f64> {
+        match self.reference {
+            SpeedReference::Horizontal => incident_velocity(alpha, beta, s),
+            SpeedReference::Magnitude => {
+                let ca = alpha.cos();
+                Vector3::new(ca * beta.cos(), alpha.sin(), -ca * beta.sin()) * s
+            }
+        }
+    }
 }
 
 /// One incident condition `(α⁻, β⁻)`: in radians for the physics, and in degrees exactly as
@@ -97,12 +145,32 @@ mod tests {
     }
 
     #[test]
+    fn a_speed_magnitude_is_the_impact_speed_at_every_angle() {
+        let law = SpeedLaw {
+            reference: SpeedReference::Magnitude,
+            ..SpeedLaw::horizontal(7.0, 0.0)
+        };
+        for a in [-1e-4, -0.3, -1.2, -std::f64::consts::FRAC_PI_2] {
+            let u = law.velocity(a, 0.7, 7.0);
+            assert!((u.norm() - 7.0).abs() < 1e-12, "{a}");
+            let (aa, bb) = crate::angles::incident_angles(&u);
+            assert!((aa - a).abs() < 1e-12);
+            if a > -1.5 {
+                assert!((bb - 0.7).abs() < 1e-12);
+            }
+        }
+        // The paper's convention is the plain incident velocity, bit for bit.
+        let h = SpeedLaw::horizontal(7.0, 0.0);
+        assert_eq!(
+            h.velocity(-0.3, 0.7, 7.0),
+            incident_velocity(-0.3, 0.7, 7.0)
+        );
+    }
+
+    #[test]
     fn speeds_are_positive() {
         let mut r = crate::rng::stream(1, &[5]);
-        let law = SpeedLaw {
-            mean_m_s: 0.5,
-            std_m_s: 1.0,
-        };
+        let law = SpeedLaw::horizontal(0.5, 1.0);
         assert!((0..10_000).all(|_| draw_speed(&law, &mut r) > 0.0));
     }
 }

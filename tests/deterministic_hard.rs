@@ -17,10 +17,7 @@ fn laws() -> [CollisionLaw; 2] {
     ]
 }
 
-const GS_SPEED: SpeedLaw = SpeedLaw {
-    mean_m_s: 5.91,
-    std_m_s: 1.16,
-};
+const GS_SPEED: SpeedLaw = SpeedLaw::horizontal(5.91, 1.16);
 
 /// Every summary cell and PDF value of a condition is a finite number.
 fn assert_finite(r: &ConditionRun, what: &str) {

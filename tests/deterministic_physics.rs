@@ -202,10 +202,7 @@ fn sommerfeld_huber_never_gains_energy_and_keeps_the_pushing_direction() {
     // Sec. 4: glass on steel, D = 500 µm, u ~ N(5.91, 1.16) m/s, on the high-anisotropy
     // wall (3.8°, 7.5°) and the 2-D wall (3.8°, 0°).
     let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
-    let speed = roughwall::case::SpeedLaw {
-        mean_m_s: 5.91,
-        std_m_s: 1.16,
-    };
+    let speed = roughwall::case::SpeedLaw::horizontal(5.91, 1.16);
     let hra = wall(3.8, 7.5, 8.0, 40.0, 4);
     let two_d = wall(3.8, 0.0, 8.0, 40.0, 5);
     for (f, dv, sign) in [(&hra, dev(3.8, 7.5), -1.0), (&two_d, dev(3.8, 0.0), 1.0)] {

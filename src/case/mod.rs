@@ -1,6 +1,7 @@
 //! TOML case files: the schema (`schema`), loading with one-line errors (`load`),
 //! and validated SI views of the sections each command needs (`resolve`).
 
+pub mod erosion;
 pub mod load;
 pub mod resolve;
 pub mod schema;

@@ -5,7 +5,7 @@ use super::schema::*;
 use super::warn;
 use crate::collision::{CollisionLaw, ShParams};
 use crate::error::{Error, Result};
-pub use crate::incidence::{IncidentCondition, SpeedLaw};
+pub use crate::incidence::{IncidentCondition, SpeedLaw, SpeedReference};
 use crate::wall::{self, Deviations};
 
 /// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
@@ -76,6 +76,17 @@ pub struct Scene {
     pub law: CollisionLaw,
     pub bin_width_deg: f64,
     pub psi: f64,
+    /// The erosion law of `[erosion]` (none: nothing is computed).
+    pub erosion: Option<crate::erosion::ErosionModel>,
+    /// Particle density (kg/m³): with the diameter, the particle mass.
+    pub density_kg_m3: f64,
+}
+
+impl Scene {
+    /// Mass of one particle (kg): a sphere of the case's diameter and density.
+    pub fn particle_mass_kg(&self) -> f64 {
+        self.density_kg_m3 * std::f64::consts::PI / 6.0 * self.diameter_m.powi(3)
+    }
 }
 
 impl Scene {
@@ -104,7 +115,7 @@ impl Scene {
 }
 
 /// `v` within `[lo, hi]` (the physical range of a key; `why` says what bounds it).
-fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
+pub(super) fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
     if v.is_finite() && (lo..=hi).contains(&v) {
         Ok(v)
     } else {
@@ -133,7 +144,7 @@ pub const MAX_CONDITIONS: usize = 10_000;
 /// Longest `[stats] beta_star_deg` list.
 pub const MAX_BETA_STAR: usize = 1000;
 
-fn positive(key: &str, v: f64) -> Result<f64> {
+pub(super) fn positive(key: &str, v: f64) -> Result<f64> {
     if v > 0.0 && v.is_finite() {
         Ok(v)
     } else {
@@ -524,6 +535,17 @@ impl Case {
         if std != 0.0 {
             within("incidence.speed_std_m_s", std, lo, hi, " m/s (or 0)", why)?;
         }
+        let reference = match inc.speed_reference.as_deref() {
+            None | Some("horizontal") => SpeedReference::Horizontal,
+            Some("magnitude") => SpeedReference::Magnitude,
+            Some(other) => {
+                return Err(Error::invalid(
+                    "incidence.speed_reference",
+                    format!("\"{other}\""),
+                    "\"horizontal\" (the speed law is the horizontal speed) or \"magnitude\" (it is |U|)",
+                ))
+            }
+        };
         let p = self.particles.clone().unwrap_or_default();
         let target = p
             .target_se_deg
@@ -580,8 +602,8 @@ impl Case {
             wall,
             conditions,
             speed: SpeedLaw {
-                mean_m_s: mean,
-                std_m_s: std,
+                reference,
+                ..SpeedLaw::horizontal(mean, std)
             },
             count: count as usize,
             target_se_deg: target,
@@ -589,6 +611,15 @@ impl Case {
             law: self.collision_law()?,
             bin_width_deg: bin,
             psi,
+            erosion: self.erosion_model()?,
+            density_kg_m3: within(
+                "particles.density_kg_m3",
+                p.density_kg_m3.unwrap_or(2500.0),
+                10.0,
+                3e4,
+                " kg/m³",
+                "a solid particle; glass 2500",
+            )?,
         })
     }
 

@@ -37,6 +37,10 @@ pub struct Case {
     pub particle: Option<ParticleSection>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sweep: Option<SweepSection>,
+    /// Wall erosion by the impacts (`deterministic`, `stochastic`); nothing is computed
+    /// without it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub erosion: Option<ErosionSection>,
 }
 
 /// `[surface]` or `[wall]`: either correlation lengths or normal-angle deviations per axis
@@ -78,6 +82,10 @@ pub struct IncidenceSection {
     pub speed_mean_m_s: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub speed_std_m_s: Option<f64>,
+    /// `"horizontal"` (default: the speed law is the horizontal speed, the paper's
+    /// convention) or `"magnitude"` (it is `|U|`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed_reference: Option<String>,
 }
 
 /// `[particles]`: how many histories per condition (or a target standard error), and
@@ -93,6 +101,9 @@ pub struct ParticlesSection {
     pub target_se_deg: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub diameter_um: Option<f64>,
+    /// Particle density (kg/m³): the particle mass of the per-particle erosion volume.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub density_kg_m3: Option<f64>,
 }
 
 /// `[collision]`: the collision law and its parameters.
@@ -206,4 +217,51 @@ pub struct LogRange {
     pub log_start: f64,
     pub log_stop: f64,
     pub points: i64,
+}
+
+/// `[erosion]`: the erosion law and its parameters. Which keys apply depends on `model`.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ErosionSection {
+    /// `"finnie"`, `"dnv"` or `"oka"`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub model: Option<String>,
+    /// Finnie: the wall's plastic flow stress `p` (Pa).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub flow_stress_pa: Option<f64>,
+    /// Finnie: ratio `ψ` of contact depth to cutting depth.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub psi: Option<f64>,
+    /// Finnie: ratio `K` of vertical to horizontal force; DNV: the material constant `K`
+    /// ((m/s)^-n); Oka: the particle factor `K` (mm³/kg).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub k: Option<f64>,
+    /// DNV: the velocity exponent `n`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub n: Option<f64>,
+    /// DNV: the wall's density `ρ_t` (kg/m³).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_density_kg_m3: Option<f64>,
+    /// DNV: `"ductile"` or `"brittle"`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle_dependency: Option<String>,
+    /// Oka: the wall's Vickers hardness `Hv` (GPa).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hardness_gpa: Option<f64>,
+    /// Oka: exponents (defaults: Oka & Yoshida 2005 Part 2's SiO2 correlations).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub k1: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub k2: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub k3: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub n1: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub n2: Option<f64>,
+    /// Oka: reference speed `U'` (m/s) and diameter `D'` (µm).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reference_speed_m_s: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reference_diameter_um: Option<f64>,
 }

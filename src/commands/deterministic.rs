@@ -9,6 +9,7 @@ use crate::deterministic::scene::{choose_surface, SceneOptions, SurfaceChoice};
 use crate::deterministic::{
     fill_block, plots, tally_spec, LostCounts, ModelSetup, Tracker, DEFAULT_MAX_COLLISIONS,
 };
+use crate::erosion::ErosionSetup;
 use crate::error::{Error, Result};
 use crate::output::out_dir::{check_distinct, check_out};
 use crate::output::schema::write_tables;
@@ -302,13 +303,18 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
         law: scene.law,
         diameter_m: scene.diameter_m,
         speed: scene.speed,
+        erosion: scene.erosion.map(|model| ErosionSetup {
+            model,
+            particle_mass_kg: scene.particle_mass_kg(),
+            diameter_m: scene.diameter_m,
+        }),
         wall: dev,
         psi: scene.psi,
     };
     let specs = scene
         .conditions
         .iter()
-        .map(|c| tally_spec(&dev, *c, scene.bin_width_deg))
+        .map(|c| tally_spec(&dev, *c, scene.bin_width_deg, setup.erosion.as_ref()))
         .collect();
     Ok(Prepared {
         scene,
@@ -490,6 +496,15 @@ pub fn finish(
         manifest.set_run("target_se_deg", f(t));
     }
     manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
+    if let Some(e) = &p.setup.erosion {
+        manifest.set("erosion", e.manifest());
+    }
+    if p.scene.speed.reference != crate::incidence::SpeedReference::Horizontal {
+        manifest.set_run(
+            "speed_reference",
+            toml::Value::String(p.scene.speed.reference.name().into()),
+        );
+    }
     manifest.set_run("compute_s", f(round(seconds, 4)));
     let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();
     if stats.is_some() && seconds > 0.0 {

@@ -5,6 +5,7 @@
 use crate::case::{warn, Case, Scene, WallSource};
 use crate::cli::StochasticArgs;
 use crate::commands::Context;
+use crate::erosion::ErosionSetup;
 use crate::error::Result;
 use crate::output::schema::write_tables;
 use crate::output::{prepare_out_dir, Manifest, OutputDir};
@@ -98,11 +99,16 @@ pub fn prepare(case: &Case, o: &TallyOverrides) -> Result<Prepared> {
         psi: scene.psi,
         diameter_m: scene.diameter_m,
         speed: scene.speed,
+        erosion: scene.erosion.map(|model| ErosionSetup {
+            model,
+            particle_mass_kg: scene.particle_mass_kg(),
+            diameter_m: scene.diameter_m,
+        }),
     };
     let specs = scene
         .conditions
         .iter()
-        .map(|c| tally_spec(&wall, *c, scene.bin_width_deg))
+        .map(|c| tally_spec(&wall, *c, scene.bin_width_deg, setup.erosion.as_ref()))
         .collect();
     Ok(Prepared {
         scene,
@@ -261,6 +267,15 @@ pub fn finish(
         manifest.set_run("target_se_deg", f(t));
     }
     manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
+    if let Some(e) = &p.setup.erosion {
+        manifest.set("erosion", e.manifest());
+    }
+    if p.scene.speed.reference != crate::incidence::SpeedReference::Horizontal {
+        manifest.set_run(
+            "speed_reference",
+            toml::Value::String(p.scene.speed.reference.name().into()),
+        );
+    }
     manifest.set_run("delta_xi_deg", f(round(wall.delta_xi.to_degrees(), 6)));
     manifest.set_run("delta_zeta_deg", f(round(wall.delta_zeta.to_degrees(), 6)));
     let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();

@@ -10,11 +10,12 @@ use crate::angles::{
     alpha_xy_of_velocity, gamma_from_normal, incident_angles, wrap_pi, xi_zeta_of_normal,
 };
 use crate::collision::CollisionLaw;
-use crate::incidence::{draw_speed, incident_velocity, IncidentCondition, SpeedLaw};
+use crate::erosion::ErosionSetup;
+use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw};
 use crate::rng;
 use crate::tally::{
-    Bin, BlockTally, ConditionResult, ConditionTally, ModelKind, Outcome, Quantity, TallySpec,
-    BLOCK_SIZE,
+    Bin, BlockTally, ConditionResult, ConditionTally, ErosionOutcome, ModelKind, Outcome, Quantity,
+    TallySpec, BLOCK_SIZE,
 };
 use crate::wall::Deviations;
 use nalgebra::Vector3;
@@ -33,6 +34,8 @@ pub struct ModelSetup {
     pub wall: Deviations,
     /// ψ of Eq. (34), for the Fig. 12 model curve.
     pub psi: f64,
+    /// The erosion law, when the case tallies erosion.
+    pub erosion: Option<ErosionSetup>,
 }
 
 /// History `i` of condition `cond` (index `cond_index` in the case): its start `(x, z)`
@@ -63,14 +66,27 @@ fn history_at(
     prefix: &rng::StreamPrefix,
     i: u64,
 ) -> History {
+    history_observed(tracker, setup, cond, prefix, i, |_| {})
+}
+
+/// [`history_at`] reporting every collision to `observe`.
+#[inline]
+fn history_observed(
+    tracker: &Tracker<'_>,
+    setup: &ModelSetup,
+    cond: &IncidentCondition,
+    prefix: &rng::StreamPrefix,
+    i: u64,
+    observe: impl FnMut(&HitInfo),
+) -> History {
     let (lx, lz) = tracker.periods();
     let mut r = prefix.stream(i);
     let x = r.gen::<f64>() * lx;
     let z = r.gen::<f64>() * lz;
     let u_h = draw_speed(&setup.speed, &mut r);
-    let u = incident_velocity(cond.alpha_in, cond.beta_in, u_h);
+    let u = setup.speed.velocity(cond.alpha_in, cond.beta_in, u_h);
     let collide = |u, w, n| setup.law.collide(u, w, n, setup.diameter_m);
-    tracker.trace(x, z, u, Vector3::zeros(), &collide)
+    tracker.trace_observed(x, z, u, Vector3::zeros(), collide, observe)
 }
 
 /// The tallied record of a followed history (`None` for a lost one).
@@ -106,6 +122,7 @@ pub fn outcome(h: &History, beta_in: f64, wall: &Deviations, psi: f64) -> Option
         } else {
             1.0
         },
+        erosion: None,
     })
 }
 
@@ -127,6 +144,9 @@ pub fn fill_block(
     block: &mut BlockTally,
 ) {
     let prefix = stream_prefix(seed, cond_index);
+    if let Some(erosion) = &setup.erosion {
+        return fill_block_eroding(tracker, setup, erosion, cond, &prefix, (start, end), block);
+    }
     let mut lo = start;
     while lo < end {
         let hi = (lo + CHUNK).min(end);
@@ -152,13 +172,91 @@ pub fn fill_block(
     }
 }
 
+/// The histories of a chunk traced by one task of [`fill_block_eroding`], in particle order:
+/// each history's fate, and the local impact angles of all of them in one buffer.
+#[derive(Default)]
+struct ErodedChunk {
+    fates: Vec<Result<Outcome, LostReason>>,
+    /// End of each history's impact angles in `angles`.
+    ends: Vec<usize>,
+    angles: Vec<f64>,
+}
+
+/// [`fill_block`] with erosion: every collision of a history adds the volume its local
+/// impact removes (at the collision's own angle to the facet hit and speed), and its local
+/// impact angle to the `impact_angle_local` PDF (for followed histories only).
+fn fill_block_eroding(
+    tracker: &Tracker<'_>,
+    setup: &ModelSetup,
+    erosion: &ErosionSetup,
+    cond: &IncidentCondition,
+    prefix: &rng::StreamPrefix,
+    (start, end): (u64, u64),
+    block: &mut BlockTally,
+) {
+    let mut lo = start;
+    while lo < end {
+        let hi = (lo + CHUNK).min(end);
+        // Folds keep contiguous runs of particles in order, one buffer per task rather
+        // than one allocation per history.
+        let parts: Vec<ErodedChunk> = (lo..hi)
+            .into_par_iter()
+            .fold(ErodedChunk::default, |mut part, i| {
+                let mut per_mass = 0.0;
+                let angles = &mut part.angles;
+                let h = history_observed(tracker, setup, cond, prefix, i, |hit| {
+                    let (alpha, v) = erosion.impact(&hit.u_in, &hit.normal);
+                    per_mass += v;
+                    angles.push(alpha);
+                });
+                part.ends.push(part.angles.len());
+                part.fates.push(match h.fate {
+                    Fate::Lost(r) => Err(r),
+                    Fate::Escaped => outcome(&h, cond.beta_in, &setup.wall, setup.psi)
+                        .map(|o| Outcome {
+                            erosion: Some(ErosionOutcome {
+                                per_mass,
+                                rejected_per_mass: None,
+                            }),
+                            ..o
+                        })
+                        .ok_or(LostReason::Stopped),
+                });
+                part
+            })
+            .collect();
+        for part in &parts {
+            let mut from = 0;
+            for (f, &to) in part.fates.iter().zip(&part.ends) {
+                match f {
+                    Ok(o) => {
+                        for &a in &part.angles[from..to] {
+                            block.push_impact(a, false);
+                        }
+                        block.push(o);
+                    }
+                    Err(r) => block.push_lost(*r as usize),
+                }
+                from = to;
+            }
+        }
+        lo = hi;
+    }
+}
+
 /// The tally specification of a condition of this model.
-pub fn tally_spec(wall: &Deviations, cond: IncidentCondition, bin_width_deg: f64) -> TallySpec {
+pub fn tally_spec(
+    wall: &Deviations,
+    cond: IncidentCondition,
+    bin_width_deg: f64,
+    erosion: Option<&ErosionSetup>,
+) -> TallySpec {
     TallySpec {
         condition: cond,
         deviations: *wall,
         bin_width_deg,
         model: ModelKind::Deterministic,
+        erosion_particle_mass_kg: erosion.map(|e| e.particle_mass_kg),
     }
 }
 
@@ -266,7 +364,7 @@ pub fn run_condition(
 impl ConditionRun {
     /// The tally of these histories, exactly as a tallied run of the same seed gives it.
     pub fn tally(&self, bin_width_deg: f64) -> ConditionResult {
-        let spec = tally_spec(&self.setup.wall, self.condition, bin_width_deg);
+        let spec = tally_spec(&self.setup.wall, self.condition, bin_width_deg, None);
         let mut t = ConditionTally::new(spec);
         let mut next = self.outcomes.iter();
         for (b, chunk) in self.fates.chunks(BLOCK_SIZE as usize).enumerate() {

@@ -52,6 +52,76 @@ impl ErosionModel {
     }
 }
 
+/// What a run needs to tally erosion: the law and the particle mass (for the volume per
+/// particle).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ErosionSetup {
+    pub model: ErosionModel,
+    pub particle_mass_kg: f64,
+    /// Particle diameter (m), for laws with a size effect (Oka).
+    pub diameter_m: f64,
+}
+
+impl ErosionSetup {
+    /// The local impact angle (rad, to the element of unit normal `n`) of velocity `u`
+    /// and the wall volume per unit particle mass (m³/kg) that impact removes.
+    #[inline]
+    pub fn impact(&self, u: &nalgebra::Vector3<f64>, n: &nalgebra::Vector3<f64>) -> (f64, f64) {
+        let (alpha, speed) = impact(u, n);
+        (
+            alpha,
+            self.model.volume_per_mass(speed, alpha, self.diameter_m),
+        )
+    }
+}
+
+impl ErosionSetup {
+    /// The resolved law for `run.toml`: the model, every parameter (defaults filled in, SI
+    /// units) and the particle mass.
+    pub fn manifest(&self) -> toml::Value {
+        let mut t = toml::Table::new();
+        let mut put = |k: &str, v: f64| {
+            t.insert(k.into(), toml::Value::Float(v));
+        };
+        match &self.model {
+            ErosionModel::Finnie(f) => {
+                put("flow_stress_pa", f.flow_stress_pa);
+                put("psi", f.psi);
+                put("k", f.k);
+            }
+            ErosionModel::Dnv(d) => {
+                put("k", d.k);
+                put("n", d.n);
+                put("target_density_kg_m3", d.target_density_kg_m3);
+            }
+            ErosionModel::Oka(o) => {
+                put("hardness_gpa", o.hardness_gpa);
+                put("k", o.k);
+                put("k1", o.k1);
+                put("k2", o.k2);
+                put("k3", o.k3);
+                put("n1", o.n1);
+                put("n2", o.n2);
+                put("reference_speed_m_s", o.reference_speed_m_s);
+                put("reference_diameter_m", o.reference_diameter_m);
+            }
+        }
+        put("particle_mass_kg", self.particle_mass_kg);
+        if let ErosionModel::Dnv(d) = &self.model {
+            let a = match d.angle_dependency {
+                dnv::AngleDependency::Ductile => "ductile",
+                dnv::AngleDependency::Brittle => "brittle",
+            };
+            t.insert("angle_dependency".into(), toml::Value::String(a.into()));
+        }
+        t.insert(
+            "model".into(),
+            toml::Value::String(self.model.name().into()),
+        );
+        toml::Value::Table(t)
+    }
+}
+
 /// The impact angle (rad, to the local wall plane, in `[0, π/2]`) and speed of a velocity
 /// `u` arriving on a wall element of unit normal `n` (pointing into the flow).
 #[inline]

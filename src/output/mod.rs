@@ -56,6 +56,26 @@ pub fn write_atomic_with(
     Ok(())
 }
 
+/// A number for a CSV cell in scientific notation, 7 significant digits (`1.817077e-8`):
+/// for quantities whose scale is far from 1, such as erosion in m³/kg. Empty for
+/// non-finite values, like [`fmt_num`].
+pub fn fmt_sci(x: f64) -> String {
+    if !x.is_finite() {
+        return String::new();
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let s = format!("{x:.6e}");
+    match s.split_once('e') {
+        Some((m, e)) if m.contains('.') => {
+            let m = m.trim_end_matches('0').trim_end_matches('.');
+            format!("{m}e{e}")
+        }
+        _ => s,
+    }
+}
+
 /// A number for a CSV cell: 7 significant digits, shortest form, the same on every machine.
 /// Non-finite values are a bug upstream; they are written as an empty cell rather than `NaN`.
 pub fn fmt_num(x: f64) -> String {
@@ -142,6 +162,19 @@ mod tests {
         assert_eq!(fmt_num(-1e-9), "-0.000000001");
         assert_eq!(fmt_num(0.0), "0");
         assert_eq!(fmt_num(f64::NAN), "");
+    }
+
+    #[test]
+    fn scientific_cells_keep_seven_digits() {
+        assert_eq!(fmt_sci(1.8170774e-8), "1.817077e-8");
+        assert_eq!(fmt_sci(-2.5e-17), "-2.5e-17");
+        assert_eq!(fmt_sci(3.0), "3e0");
+        assert_eq!(fmt_sci(0.0), "0");
+        assert_eq!(fmt_sci(f64::INFINITY), "");
+        for x in [1.8170774e-8, 3.787272e-43, 6.02214076e23] {
+            let back: f64 = fmt_sci(x).parse().unwrap();
+            assert!((back / x - 1.0).abs() < 5e-7, "{x}");
+        }
     }
 
     #[test]

@@ -7,7 +7,7 @@
 //! stochastic model, or the standard error of a model curve).
 
 use super::csv::{CsvTable, Rows};
-use super::fmt_num;
+use super::{fmt_num, fmt_sci};
 use crate::error::{Error, Result};
 use crate::incidence::fmt_key;
 use crate::tally::{ConditionResult, Estimate, Quantity};
@@ -44,6 +44,20 @@ pub const SUMMARY_HEADER: [&str; 28] = [
     "se_p_single",
     "se_mean_collisions",
     "se_mean_speed_ratio",
+];
+
+/// Columns appended to `summary.csv` when the case has `[erosion]`: wall volume per unit
+/// particle mass (m³/kg), impacts per history, what rejected stochastic candidates would
+/// remove (m³/kg), and the volume per particle (m³), each with its standard error.
+pub const SUMMARY_EROSION_HEADER: [&str; 8] = [
+    "erosion_per_mass",
+    "se_erosion_per_mass",
+    "mean_impacts",
+    "se_mean_impacts",
+    "erosion_per_mass_rejected",
+    "se_erosion_per_mass_rejected",
+    "erosion_per_particle_m3",
+    "se_erosion_per_particle_m3",
 ];
 
 /// Columns of `pdfs.csv` (long format); `se` is the standard error of `value`.
@@ -120,13 +134,39 @@ pub fn summary_row(r: &ConditionResult) -> Vec<String> {
     ]
 }
 
+/// The erosion cells of a condition's `summary.csv` row (empty without erosion).
+fn erosion_cells(r: &ConditionResult) -> Vec<String> {
+    let Some(e) = &r.summary.erosion else {
+        return vec![String::new(); SUMMARY_EROSION_HEADER.len()];
+    };
+    let sci = |x: Option<f64>| x.map(fmt_sci).unwrap_or_default();
+    let pair = |x: Option<Estimate>| [sci(x.map(|e| e.mean)), sci(x.map(|e| e.se))];
+    let impacts = e.impacts;
+    [
+        pair(e.per_mass),
+        [opt(impacts.map(|e| e.mean)), opt(impacts.map(|e| e.se))],
+        pair(e.rejected_per_mass),
+        pair(e.per_particle),
+    ]
+    .concat()
+}
+
 /// `summary.csv`, `pdfs.csv` and `moments.csv` of a run.
 pub fn tables(results: &[ConditionResult]) -> [CsvTable; 3] {
-    let mut summary = CsvTable::new(&SUMMARY_HEADER);
+    let erosion = results.iter().any(|r| r.summary.erosion.is_some());
+    let mut header = SUMMARY_HEADER.to_vec();
+    if erosion {
+        header.extend(SUMMARY_EROSION_HEADER);
+    }
+    let mut summary = CsvTable::new(&header);
     let mut pdfs = CsvTable::new(&PDFS_HEADER);
     let mut moments = CsvTable::new(&MOMENTS_HEADER);
     for r in results {
-        summary.push(summary_row(r));
+        let mut row = summary_row(r);
+        if erosion {
+            row.extend(erosion_cells(r));
+        }
+        summary.push(row);
         let c = r.condition();
         let (a, b) = (fmt_key(c.alpha_in_deg()), fmt_key(c.beta_in_deg()));
         for pdf in &r.pdfs {
@@ -143,14 +183,16 @@ pub fn tables(results: &[ConditionResult]) -> [CsvTable; 3] {
             }
         }
         for (q, e) in &r.estimates {
+            // Erosion volumes (m³/kg) are far below 1: scientific notation.
+            let f = if q.is_erosion() { fmt_sci } else { fmt_num };
             moments.push(vec![
                 a.clone(),
                 b.clone(),
                 q.name().to_string(),
                 e.n.to_string(),
-                fmt_num(e.mean),
-                fmt_num(e.std),
-                fmt_num(e.se),
+                f(e.mean),
+                f(e.std),
+                f(e.se),
             ]);
         }
     }

@@ -318,7 +318,40 @@ pub fn rebound_from<R: Rng + ?Sized>(
     diameter_m: f64,
     rng: &mut R,
 ) -> Rebound {
+    rebound_from_observed(
+        inc,
+        u_in,
+        omega_in,
+        wall,
+        law,
+        psi,
+        diameter_m,
+        rng,
+        |_, _| {},
+    )
+}
+
+/// [`rebound_from`] reporting every candidate rebound to `observe`: the normal of the
+/// virtual wall hit and whether the rebound was accepted (the last call) or rejected as a
+/// multiple collision (Fig. 13, step 6). The smooth-wall fallback and the trivial cases
+/// with a collision report the mean wall `j` as accepted.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn rebound_from_observed<R: Rng + ?Sized>(
+    inc: &Incidence,
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    rng: &mut R,
+    mut observe: impl FnMut(&Vector3<f64>, bool),
+) -> Rebound {
     if let Some(done) = trivial(u_in, omega_in, wall, law, psi, diameter_m) {
+        if done.candidates > 0 {
+            observe(&done.normal, true);
+        }
         return done;
     }
     let mut candidates = 0u32;
@@ -337,8 +370,10 @@ pub fn rebound_from<R: Rng + ?Sized>(
         let (u, w) = law.collide(u_in, omega_in, seen.normal, diameter_m);
         // Step 6.
         if !accept_single_collision(&u, wall, psi, rng) {
+            observe(&seen.normal, false);
             continue;
         }
+        observe(&seen.normal, true);
         // Step 7.
         return Rebound {
             velocity: u,
@@ -353,6 +388,7 @@ pub fn rebound_from<R: Rng + ?Sized>(
     }
     let j = Vector3::new(0.0, 1.0, 0.0);
     let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
+    observe(&j, true);
     Rebound {
         velocity: u,
         spin: w,

@@ -1,13 +1,14 @@
 //! Many rebounds of one incident condition, reproducibly: each rebound from its own random
 //! stream, tallied block by block (`rebound stochastic`, Radenkovic & Simonin 2021, Sec. 4).
 
-use super::rebound_model::{rebound_from, Incidence, Rebound, MAX_TRIES};
+use super::rebound_model::{rebound_from_observed, Incidence, Rebound, MAX_TRIES};
 use super::shadow_effect;
 use crate::angles::{alpha_xy_of_velocity, incident_angles, wrap_pi};
 use crate::collision::CollisionLaw;
-use crate::incidence::{draw_speed, incident_velocity, IncidentCondition, SpeedLaw};
+use crate::erosion::ErosionSetup;
+use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw};
 use crate::rng;
-use crate::tally::{Bin, BlockTally, ModelKind, Outcome, Pdf, Quantity, TallySpec};
+use crate::tally::{Bin, BlockTally, ErosionOutcome, ModelKind, Outcome, Pdf, Quantity, TallySpec};
 use crate::wall::{rotated_moments, Deviations};
 use nalgebra::Vector3;
 
@@ -19,6 +20,8 @@ pub struct ModelSetup {
     pub psi: f64,
     pub diameter_m: f64,
     pub speed: SpeedLaw,
+    /// The erosion law, when the case tallies erosion.
+    pub erosion: Option<ErosionSetup>,
 }
 
 /// The tallied record of one stochastic rebound (radians; `β⁻ = beta_in`).
@@ -55,7 +58,7 @@ pub fn rebound_of(
     i: u64,
     seed: u64,
 ) -> (Vector3<f64>, Rebound) {
-    let per_unit = incident_velocity(cond.alpha_in, cond.beta_in, 1.0);
+    let per_unit = setup.speed.velocity(cond.alpha_in, cond.beta_in, 1.0);
     let inc = Incidence::new(cond.alpha_in, cond.beta_in, &setup.wall);
     rebound_at(setup, &inc, &per_unit, &stream_prefix(seed, cond_index), i)
 }
@@ -76,9 +79,23 @@ fn rebound_at(
     prefix: &rng::StreamPrefix,
     i: u64,
 ) -> (Vector3<f64>, Rebound) {
+    rebound_observed(setup, inc, per_unit, prefix, i, |_, _, _| {})
+}
+
+/// [`rebound_at`] reporting every candidate rebound to `observe`: the incident velocity,
+/// the virtual wall's normal and whether the rebound was accepted.
+#[inline]
+fn rebound_observed(
+    setup: &ModelSetup,
+    inc: &Incidence,
+    per_unit: &Vector3<f64>,
+    prefix: &rng::StreamPrefix,
+    i: u64,
+    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+) -> (Vector3<f64>, Rebound) {
     let mut r = prefix.stream(i);
     let u = per_unit * draw_speed(&setup.speed, &mut r);
-    let reb = rebound_from(
+    let reb = rebound_from_observed(
         inc,
         u,
         Vector3::zeros(),
@@ -87,6 +104,7 @@ fn rebound_at(
         setup.psi,
         setup.diameter_m,
         &mut r,
+        |n, accepted| observe(&u, n, accepted),
     );
     (u, reb)
 }
@@ -100,9 +118,35 @@ pub fn fill_block(
     (start, end): (u64, u64),
     block: &mut BlockTally,
 ) {
-    let per_unit = incident_velocity(cond.alpha_in, cond.beta_in, 1.0);
+    let per_unit = setup.speed.velocity(cond.alpha_in, cond.beta_in, 1.0);
     let inc = Incidence::new(cond.alpha_in, cond.beta_in, &setup.wall);
     let prefix = stream_prefix(seed, cond_index);
+    if let Some(erosion) = &setup.erosion {
+        for i in start..end {
+            // The accepted virtual wall's impact erodes; the rejected candidates stand for
+            // the repeated hits of a multiple collision, tallied apart.
+            let (mut accepted, mut rejected) = (0.0, 0.0);
+            let (u, reb) = rebound_observed(setup, &inc, &per_unit, &prefix, i, |u, n, ok| {
+                let (alpha, v) = erosion.impact(u, n);
+                if ok {
+                    accepted += v;
+                } else {
+                    rejected += v;
+                }
+                block.push_impact(alpha, !ok);
+            });
+            let o = Outcome {
+                erosion: Some(ErosionOutcome {
+                    per_mass: accepted,
+                    rejected_per_mass: Some(rejected),
+                }),
+                ..outcome(&reb, &u, cond.beta_in)
+            };
+            block.push(&o);
+            block.push_candidates(reb.tries, reb.candidates, reb.tries >= MAX_TRIES);
+        }
+        return;
+    }
     for i in start..end {
         let (u, reb) = rebound_at(setup, &inc, &per_unit, &prefix, i);
         block.push(&outcome(&reb, &u, cond.beta_in));
@@ -111,12 +155,18 @@ pub fn fill_block(
 }
 
 /// The tally specification of a condition of this model.
-pub fn tally_spec(wall: &Deviations, cond: IncidentCondition, bin_width_deg: f64) -> TallySpec {
+pub fn tally_spec(
+    wall: &Deviations,
+    cond: IncidentCondition,
+    bin_width_deg: f64,
+    erosion: Option<&ErosionSetup>,
+) -> TallySpec {
     TallySpec {
         condition: cond,
         deviations: *wall,
         bin_width_deg,
         model: ModelKind::Stochastic,
+        erosion_particle_mass_kg: erosion.map(|e| e.particle_mass_kg),
     }
 }
 

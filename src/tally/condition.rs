@@ -9,7 +9,7 @@
 use super::histogram::{Histogram, RatioCurve};
 use super::moments::{Moments, ShiftedSums};
 use super::quantity::Quantity;
-use super::results::{ConditionResult, Estimate, Pdf, Proportion, Summary};
+use super::results::{ConditionResult, ErosionSummary, Estimate, Pdf, Proportion, Summary};
 use crate::incidence::IncidentCondition;
 use crate::wall::{conditional_gamma_star, rotated_moments, Deviations};
 
@@ -62,6 +62,19 @@ pub struct Outcome {
     pub p_single_model: Option<f64>,
     /// `|U⁺| / |U⁻|`.
     pub speed_ratio: f64,
+    /// Wall erosion by this history (when the case has `[erosion]`).
+    pub erosion: Option<ErosionOutcome>,
+}
+
+/// The wall volume one history removes, per unit particle mass (m³/kg).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ErosionOutcome {
+    /// Deterministic: summed over every collision; stochastic: the accepted virtual wall's
+    /// impact.
+    pub per_mass: f64,
+    /// Stochastic: summed over the rejected candidate rebounds (the repeated hits they
+    /// stand for).
+    pub rejected_per_mass: Option<f64>,
 }
 
 /// Number of reasons a deterministic history can be lost (`deterministic::LostReason`).
@@ -74,10 +87,12 @@ pub struct TallySpec {
     pub deviations: Deviations,
     pub bin_width_deg: f64,
     pub model: ModelKind,
+    /// The particle mass (kg) when the case tallies erosion; `None` without `[erosion]`.
+    pub erosion_particle_mass_kg: Option<f64>,
 }
 
 /// The quantities with moments, in record order (also the histogram order, but for the last).
-const MOMENT_QUANTITIES: [Quantity; 13] = [
+const MOMENT_QUANTITIES: [Quantity; 15] = [
     Quantity::AlphaOut,
     Quantity::AlphaOutXy,
     Quantity::BetaOut,
@@ -91,11 +106,21 @@ const MOMENT_QUANTITIES: [Quantity; 13] = [
     Quantity::GammaStarGivenGamma0,
     Quantity::GammaStarGivenGammaDg,
     Quantity::SpeedRatio,
+    Quantity::ErosionPerMass,
+    Quantity::ErosionPerMassRejected,
 ];
 /// Moments per block record.
 pub const NM: usize = MOMENT_QUANTITIES.len();
-/// Histograms per block: every moment quantity but the speed ratio.
-const NH: usize = NM - 1;
+/// Histograms per block of the moment quantities: all before the speed ratio.
+const NH: usize = SPEED_RATIO;
+const SPEED_RATIO: usize = 12;
+const EROSION: usize = 13;
+const EROSION_REJECTED: usize = 14;
+/// With `[erosion]`, two more histograms follow: local impact angles of the impacts that
+/// count (every deterministic collision, the accepted stochastic wall) and of rejected
+/// stochastic candidates.
+const IMPACT: usize = NH;
+const IMPACT_REJECTED: usize = NH + 1;
 const ALPHA_OUT: usize = 0;
 const DBETA: usize = 3;
 const ALPHA_FIRST: usize = 9;
@@ -115,7 +140,7 @@ fn gamma_slices(spec: &TallySpec) -> ([(f64, f64); 2], f64) {
 
 fn histograms(spec: &TallySpec) -> Vec<Histogram> {
     let (_, slice_width) = gamma_slices(spec);
-    MOMENT_QUANTITIES[..NH]
+    let mut h: Vec<Histogram> = MOMENT_QUANTITIES[..NH]
         .iter()
         .enumerate()
         .map(|(i, q)| {
@@ -127,7 +152,17 @@ fn histograms(spec: &TallySpec) -> Vec<Histogram> {
             };
             Histogram::new(lo, hi, w)
         })
-        .collect()
+        .collect();
+    if spec.erosion_particle_mass_kg.is_some() {
+        for q in [
+            Quantity::ImpactAngleLocal,
+            Quantity::ImpactAngleLocalRejected,
+        ] {
+            let (lo, hi) = q.range_deg();
+            h.push(Histogram::new(lo, hi, spec.bin_width_deg));
+        }
+    }
+    h
 }
 
 /// Integer counters of a block or condition.
@@ -257,7 +292,13 @@ impl BlockTally {
                 self.angle(SLICE_0 + k, o.gamma_star_first);
             }
         }
-        self.sums[NM - 1].push(o.speed_ratio);
+        self.sums[SPEED_RATIO].push(o.speed_ratio);
+        if let Some(e) = o.erosion {
+            self.sums[EROSION].push(e.per_mass);
+            if let Some(r) = e.rejected_per_mass {
+                self.sums[EROSION_REJECTED].push(r);
+            }
+        }
         if let Some(c) = o.collisions {
             let k = &mut self.counters;
             k.collisions += c as u64;
@@ -270,6 +311,17 @@ impl BlockTally {
             if let (Some(p), Some(a)) = (&mut self.p_first, o.alpha_first) {
                 p.push(a.to_degrees(), c == 1, o.p_single_model);
             }
+        }
+    }
+
+    /// Tallies the local impact angle `alpha` (rad, to the wall element hit) of one impact:
+    /// one that counts (`rejected = false`) or a rejected stochastic candidate. Only with
+    /// `[erosion]`; call it for followed histories only, before [`BlockTally::push`].
+    #[inline]
+    pub fn push_impact(&mut self, alpha: f64, rejected: bool) {
+        let i = if rejected { IMPACT_REJECTED } else { IMPACT };
+        if let Some(h) = self.hists.get_mut(i) {
+            h.push(alpha.to_degrees());
         }
     }
 
@@ -435,6 +487,20 @@ impl ConditionTally {
             max_collisions,
             speed_ratio: est(Quantity::SpeedRatio),
             lost,
+            erosion: self.spec.erosion_particle_mass_kg.map(|mass| {
+                let per_mass = est(Quantity::ErosionPerMass);
+                ErosionSummary {
+                    per_mass,
+                    per_particle: per_mass.map(|e| e.scaled(mass)),
+                    impacts: match self.spec.model {
+                        ModelKind::Deterministic => collisions,
+                        ModelKind::Stochastic => {
+                            Estimate::of_counts(followed, k.candidates as u128, k.candidates_sq)
+                        }
+                    },
+                    rejected_per_mass: est(Quantity::ErosionPerMassRejected),
+                }
+            }),
         };
         // Densities in the order of earlier versions of `pdfs.csv`, then the Fig. 12 curves,
         // then the quantities added since (first rebound angle, Fig. 11 slices).
@@ -454,6 +520,14 @@ impl ConditionTally {
             }
         }
         pdfs.extend((ALPHA_FIRST..NH).filter_map(density));
+        for (i, q) in [
+            (IMPACT, Quantity::ImpactAngleLocal),
+            (IMPACT_REJECTED, Quantity::ImpactAngleLocalRejected),
+        ] {
+            if let Some(h) = self.hists.get(i).filter(|h| h.total() > 0) {
+                pdfs.push(Pdf::new(q, h.density()));
+            }
+        }
         let mut estimates: Vec<(Quantity, Estimate)> = MOMENT_QUANTITIES
             .iter()
             .zip(&moments)
@@ -527,6 +601,7 @@ mod tests {
             },
             bin_width_deg: 1.0,
             model,
+            erosion_particle_mass_kg: None,
         }
     }
 

@@ -279,6 +279,7 @@ mod tests {
             },
             bin_width_deg: 1.0,
             model: ModelKind::Stochastic,
+            erosion_particle_mass_kg: None,
         };
         Plan {
             specs: vec![spec(-10.0), spec(-20.0)],

@@ -17,8 +17,8 @@ pub mod partial;
 pub mod quantity;
 pub mod results;
 
-pub use condition::{BlockTally, ConditionTally, ModelKind, Outcome, TallySpec};
+pub use condition::{BlockTally, ConditionTally, ErosionOutcome, ModelKind, Outcome, TallySpec};
 pub use engine::{Plan, Shard, BLOCK_SIZE};
 pub use histogram::Bin;
 pub use quantity::Quantity;
-pub use results::{ConditionResult, Estimate, Pdf, Proportion, Summary};
+pub use results::{ConditionResult, ErosionSummary, Estimate, Pdf, Proportion, Summary};

@@ -39,11 +39,20 @@ pub enum Quantity {
     PSingleModel,
     /// The analytic `P_eff(γ | α⁻)` (Eqs. 31–33) at the `gamma_first` bin centres (stochastic).
     GammaModel,
+    /// Impact angle to the local wall element (facet hit, or accepted virtual wall) of every
+    /// impact that counts for erosion.
+    ImpactAngleLocal,
+    /// Impact angle to the local wall element of rejected stochastic candidates.
+    ImpactAngleLocalRejected,
+    /// Wall volume removed per unit particle mass by one history (m³/kg; moments only).
+    ErosionPerMass,
+    /// What the rejected stochastic candidates of one rebound would remove (m³/kg; moments only).
+    ErosionPerMassRejected,
 }
 
 impl Quantity {
     /// Every quantity, in the order `pdfs.csv` and `moments.csv` list them.
-    pub const ALL: [Quantity; 18] = [
+    pub const ALL: [Quantity; 22] = [
         Quantity::AlphaOut,
         Quantity::AlphaOutXy,
         Quantity::BetaOut,
@@ -62,6 +71,10 @@ impl Quantity {
         Quantity::GammaStarGivenGammaDg,
         Quantity::SpeedRatio,
         Quantity::Collisions,
+        Quantity::ImpactAngleLocal,
+        Quantity::ImpactAngleLocalRejected,
+        Quantity::ErosionPerMass,
+        Quantity::ErosionPerMassRejected,
     ];
 
     /// The name used in the CSV files.
@@ -85,6 +98,10 @@ impl Quantity {
             Quantity::PSingleGivenAlphaFirst => "p_single_given_alpha_first",
             Quantity::PSingleModel => "p_single_model",
             Quantity::GammaModel => "gamma_model",
+            Quantity::ImpactAngleLocal => "impact_angle_local",
+            Quantity::ImpactAngleLocalRejected => "impact_angle_local_rejected",
+            Quantity::ErosionPerMass => "erosion_per_mass",
+            Quantity::ErosionPerMassRejected => "erosion_per_mass_rejected",
         }
     }
 
@@ -103,6 +120,16 @@ impl Quantity {
                 | Quantity::PSingleModel
                 | Quantity::SpeedRatio
                 | Quantity::Collisions
+                | Quantity::ErosionPerMass
+                | Quantity::ErosionPerMassRejected
+        )
+    }
+
+    /// Whether it is a wall-erosion volume (m³/kg) rather than an angle or a ratio.
+    pub fn is_erosion(self) -> bool {
+        matches!(
+            self,
+            Quantity::ErosionPerMass | Quantity::ErosionPerMassRejected
         )
     }
 
@@ -110,6 +137,7 @@ impl Quantity {
     pub fn range_deg(self) -> (f64, f64) {
         match self {
             Quantity::BetaOut | Quantity::Dbeta | Quantity::DbetaFirst => (-180.0, 180.0),
+            Quantity::ImpactAngleLocal | Quantity::ImpactAngleLocalRejected => (0.0, 90.0),
             _ => (-90.0, 90.0),
         }
     }

@@ -26,6 +26,16 @@ impl Estimate {
         })
     }
 
+    /// The estimate of `c x` for a constant `c > 0`.
+    pub fn scaled(&self, c: f64) -> Estimate {
+        Estimate {
+            n: self.n,
+            mean: self.mean * c,
+            std: self.std * c,
+            se: self.se * c,
+        }
+    }
+
     /// From exact integer sums `Σx`, `Σx²` of `n` integer values: the variance
     /// `(nΣx² − (Σx)²) / (n(n − 1))` is formed in integers, so it is exact before the
     /// final division.
@@ -113,6 +123,23 @@ pub struct Summary {
     pub speed_ratio: Option<Estimate>,
     /// Histories that could not be followed (deterministic).
     pub lost: Option<u64>,
+    /// Wall erosion (with `[erosion]`).
+    pub erosion: Option<ErosionSummary>,
+}
+
+/// The erosion columns of `summary.csv`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ErosionSummary {
+    /// Wall volume removed per unit mass of particles (m³/kg): the mean over histories of
+    /// the volume each removes per unit of its mass.
+    pub per_mass: Option<Estimate>,
+    /// The same per particle (m³): `per_mass` times the particle mass.
+    pub per_particle: Option<Estimate>,
+    /// Impacts per history: deterministic collisions; stochastic candidate rebounds
+    /// (the accepted one and the rejected ones).
+    pub impacts: Option<Estimate>,
+    /// Stochastic: what the rejected candidates would remove, per unit mass (m³/kg).
+    pub rejected_per_mass: Option<Estimate>,
 }
 
 /// A PDF or per-bin curve of one quantity.

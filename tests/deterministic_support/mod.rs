@@ -161,6 +161,7 @@ pub fn run(
         speed,
         wall: *dv,
         psi: 2.0,
+        erosion: None,
     };
     run_condition(
         tracker,
@@ -172,10 +173,7 @@ pub fn run(
     )
 }
 
-pub const UNIT: SpeedLaw = SpeedLaw {
-    mean_m_s: 1.0,
-    std_m_s: 0.0,
-};
+pub const UNIT: SpeedLaw = SpeedLaw::horizontal(1.0, 0.0);
 
 pub fn deg(v: impl Iterator<Item = f64>) -> Vec<f64> {
     v.map(f64::to_degrees).collect()

@@ -24,6 +24,9 @@ pub struct Series {
     pub kind: Kind,
     /// Error bars: half-width at each point (empty: none), drawn in the series' colour.
     pub err: Vec<f64>,
+    /// Palette index of the colour (default: the series' position), so that two series of
+    /// one thing (e.g. a line and its markers) share a colour.
+    pub color: Option<usize>,
 }
 
 impl Series {
@@ -33,7 +36,14 @@ impl Series {
             points,
             kind,
             err: Vec::new(),
+            color: None,
         }
+    }
+
+    /// The series drawn in palette colour `i`.
+    pub fn with_color(mut self, i: usize) -> Series {
+        self.color = Some(i);
+        self
     }
 
     /// The series with error bars of half-width `err` (one per point).
@@ -217,7 +227,7 @@ where
                 .draw()
                 .map_err(draw_err)?;
             for (i, s) in plot.series.iter().enumerate() {
-                let color = PALETTE[i % PALETTE.len()];
+                let color = PALETTE[s.color.unwrap_or(i) % PALETTE.len()];
                 let pts: Vec<(f64, f64)> = s
                     .points
                     .iter()
@@ -268,9 +278,12 @@ where
                         .draw_series(pts.into_iter().map(|p| Circle::new(p, 3, color.filled())))
                         .map_err(draw_err)?,
                 };
-                anno.label(s.label.clone()).legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2))
-                });
+                // A series without a label has no legend entry.
+                if !s.label.is_empty() {
+                    anno.label(s.label.clone()).legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2))
+                    });
+                }
             }
             if plot.series.iter().any(|s| !s.label.is_empty()) {
                 chart

@@ -1142,19 +1142,30 @@ const STOCHASTIC_NA: [&str; 7] = [
     "se_mean_collisions",
 ];
 
+/// Columns of `summary.csv` that the deterministic model leaves empty (docs/outputs.md):
+/// the rejected candidates' erosion, which only the stochastic model has.
+const DETERMINISTIC_NA: [&str; 2] = [
+    "erosion_per_mass_rejected",
+    "se_erosion_per_mass_rejected",
+];
+
 /// Text columns; every other column holds numbers.
 const TEXT_COLUMNS: [&str; 2] = ["model", "quantity"];
 
 /// Where docs/outputs.md allows an empty cell ("not applicable to this model"):
 /// - `summary.csv` of `stochastic`: the collision and first-rebound columns (`STOCHASTIC_NA`);
-///   `deterministic`'s `summary.csv`: nowhere;
+///   `deterministic`'s: the rejected candidates' erosion columns (`DETERMINISTIC_NA`);
 /// - `pdfs.csv`: `se` of the model curves `gamma_model` and `p_single_model` only;
 /// - `force_sweep.csv`: `contact_time_s` for `hu2021` and for U_N = 0 only;
 /// - `moments.csv`, `accuracy.csv`, `dynamic_convergence.csv`, `surface_summary.csv`,
 ///   `normal_angles.csv` and any other CSV: nowhere.
 fn empty_allowed(cmd: Cmd, file: &str, col: &str, row: &dyn Fn(&str) -> String) -> bool {
     match file {
-        "summary.csv" => cmd == Cmd::Stochastic && STOCHASTIC_NA.contains(&col),
+        "summary.csv" => match cmd {
+            Cmd::Stochastic => STOCHASTIC_NA.contains(&col),
+            Cmd::Deterministic => DETERMINISTIC_NA.contains(&col),
+            _ => false,
+        },
         "pdfs.csv" => {
             col == "se" && matches!(row("quantity").as_str(), "gamma_model" | "p_single_model")
         }

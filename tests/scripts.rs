@@ -65,6 +65,19 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
     for fig in ["fig4", "fig6", "fig8", "fig9", "fig10", "fig11", "fig12"] {
         expect.push((format!("hu2021/{fig}/force_sweep.csv"), force.into()));
     }
+    let eroding = format!(
+        "{summary},{}",
+        roughwall::output::schema::SUMMARY_EROSION_HEADER.join(",")
+    );
+    for wall in ["smooth", "iso", "2d", "aniso", "aniso-rev"] {
+        for model in ["deterministic", "stochastic"] {
+            expect.push((
+                format!("erosion/{wall}/{model}/summary.csv"),
+                eroding.clone(),
+            ));
+        }
+    }
+    expect.push(("erosion/erosion.csv".into(), "wall,delta_xi_deg,delta_zeta_deg,model,beta_in_deg,alpha_nominal_deg,erosion_per_mass,se_erosion_per_mass,erosion_per_mass_rejected,se_erosion_per_mass_rejected,mean_impacts,ratio_to_smooth".into()));
     for (file, head) in &expect {
         assert_eq!(&header(&o.join(file)), head, "{file}");
     }
@@ -74,6 +87,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         "radenkovic2021/sec3-aniso/deterministic",
         "radenkovic2021/sec3-aniso/stochastic",
         "hu2021/fig6",
+        "erosion/aniso/deterministic",
     ] {
         assert!(o.join(dir).join("run.toml").is_file(), "{dir}/run.toml");
         let svgs = std::fs::read_dir(o.join(dir))
@@ -88,6 +102,9 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
             .count();
         assert!(svgs > 0, "{dir} has no figure");
     }
+    for svg in ["erosion/erosion.svg", "erosion/erosion_ratios.svg"] {
+        assert!(o.join(svg).is_file(), "{svg}");
+    }
     let report = std::fs::read_to_string(o.join("REPORT.md")).unwrap();
     for section in [
         "Table 1",
@@ -96,6 +113,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         "stochastic model (SM)",
         "Sec. 4.2",
         "Hu et al.",
+        "Erosion on rough walls",
         "Speed against error",
     ] {
         assert!(report.contains(section), "REPORT.md lacks {section}");

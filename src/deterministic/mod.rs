@@ -205,9 +205,9 @@ fn fill_block_eroding(
                 let mut per_mass = 0.0;
                 let angles = &mut part.angles;
                 let h = history_observed(tracker, setup, cond, prefix, i, |hit| {
-                    let (alpha, v) = erosion.impact(&hit.u_in, &hit.normal);
+                    let (a, v) = erosion.impact(&hit.u_in, hit.u_in.norm(), &hit.normal);
                     per_mass += v;
-                    angles.push(alpha);
+                    angles.push(a.alpha);
                 });
                 part.ends.push(part.angles.len());
                 part.fates.push(match h.fate {

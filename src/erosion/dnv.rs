@@ -40,9 +40,14 @@ impl Dnv {
     /// The angle function `F(α)` of RP-O501 Eq. (3.3) (ductile) or `2α/π` (brittle).
     #[inline]
     pub fn angle_function(&self, alpha: f64) -> f64 {
+        self.angle_function_s(alpha, alpha.sin())
+    }
+
+    /// [`Dnv::angle_function`] with `sin α` given.
+    #[inline]
+    pub fn angle_function_s(&self, alpha: f64, s: f64) -> f64 {
         match self.angle_dependency {
             AngleDependency::Ductile => {
-                let s = alpha.sin();
                 A * (s + B * (s - s * s)).powf(EXPONENT) * (1.0 - (-C * alpha).exp())
             }
             AngleDependency::Brittle => 2.0 * alpha / std::f64::consts::PI,
@@ -52,7 +57,13 @@ impl Dnv {
     /// Wall volume removed per unit particle mass (m³/kg): `K F(α) U^n / ρ_t`.
     #[inline]
     pub fn volume_per_mass(&self, speed: f64, alpha: f64) -> f64 {
-        self.k * self.angle_function(alpha) * speed.powf(self.n) / self.target_density_kg_m3
+        self.volume_per_mass_s(speed, alpha, alpha.sin())
+    }
+
+    /// [`Dnv::volume_per_mass`] with `sin α` given.
+    #[inline]
+    pub fn volume_per_mass_s(&self, speed: f64, alpha: f64, s: f64) -> f64 {
+        self.k * self.angle_function_s(alpha, s) * speed.powf(self.n) / self.target_density_kg_m3
     }
 }
 

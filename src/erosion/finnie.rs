@@ -26,6 +26,14 @@ impl Finnie {
     #[inline]
     pub fn angle_function(&self, alpha: f64) -> f64 {
         let (s, c) = alpha.sin_cos();
+        self.angle_function_sc(s, c)
+    }
+
+    /// [`Finnie::angle_function`] of `sin α`, `cos α` (`α` in `[0, π/2]`): a run has them
+    /// from the impact velocity without trigonometry, and `cos α` is exactly 0 at normal
+    /// incidence.
+    #[inline]
+    pub fn angle_function_sc(&self, s: f64, c: f64) -> f64 {
         if s < self.k / 6.0 * c {
             2.0 * s * c - 6.0 / self.k * s * s
         } else {
@@ -36,7 +44,14 @@ impl Finnie {
     /// Volume removed per unit particle mass (m³/kg): `|U|²/(p ψ K) · f(α)`.
     #[inline]
     pub fn volume_per_mass(&self, speed: f64, alpha: f64) -> f64 {
-        speed * speed / (self.flow_stress_pa * self.psi * self.k) * self.angle_function(alpha)
+        let (s, c) = alpha.sin_cos();
+        self.volume_per_mass_sc(speed, s, c)
+    }
+
+    /// [`Finnie::volume_per_mass`] of `sin α`, `cos α`.
+    #[inline]
+    pub fn volume_per_mass_sc(&self, speed: f64, s: f64, c: f64) -> f64 {
+        speed * speed / (self.flow_stress_pa * self.psi * self.k) * self.angle_function_sc(s, c)
     }
 }
 

@@ -68,7 +68,12 @@ impl Oka {
     /// `g(α) = (sin α)^n1 (1 + Hv (1 − sin α))^n2` (Part 1, Eq. 2); `g(90°) = 1`.
     #[inline]
     pub fn angle_function(&self, alpha: f64) -> f64 {
-        let s = alpha.sin();
+        self.angle_function_s(alpha.sin())
+    }
+
+    /// [`Oka::angle_function`] of `sin α`.
+    #[inline]
+    pub fn angle_function_s(&self, s: f64) -> f64 {
         s.powf(self.n1) * (1.0 + self.hardness_gpa * (1.0 - s)).powf(self.n2)
     }
 
@@ -85,7 +90,13 @@ impl Oka {
     /// Wall volume removed per unit particle mass (m³/kg): `g(α) E90`.
     #[inline]
     pub fn volume_per_mass(&self, speed: f64, alpha: f64, diameter_m: f64) -> f64 {
-        self.angle_function(alpha) * self.normal_volume_per_mass(speed, diameter_m)
+        self.volume_per_mass_s(speed, alpha.sin(), diameter_m)
+    }
+
+    /// [`Oka::volume_per_mass`] of `sin α`.
+    #[inline]
+    pub fn volume_per_mass_s(&self, speed: f64, s: f64, diameter_m: f64) -> f64 {
+        self.angle_function_s(s) * self.normal_volume_per_mass(speed, diameter_m)
     }
 }
 

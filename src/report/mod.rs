@@ -1,8 +1,10 @@
 //! `rebound report`: reads the outputs the reproduction scripts wrote under `results/`
 //! and writes `REPORT.md` (ours beside the papers' numbers), `fig4.csv`/`fig4.svg`
-//! (Radenkovic & Simonin 2021, Fig. 4) and `speed_vs_error.csv`/`.svg`.
+//! (Radenkovic & Simonin 2021, Fig. 4), the erosion study's table and figures and
+//! `speed_vs_error.csv`/`.svg`.
 //! Every number in the report is read from a file in `results/`; a missing run is said so.
 
+pub mod erosion;
 pub mod paper;
 pub mod sections;
 
@@ -26,6 +28,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     sections::ds_vs_sm(results, &mut md)?;
     sections::sec4(results, &mut md)?;
     sections::hu(results, &mut md)?;
+    erosion::erosion(results, &mut md)?;
     sections::speed_vs_error(results, &mut md)?;
     write_atomic(&results.join("REPORT.md"), md.as_bytes())
 }

@@ -126,14 +126,19 @@ pub fn fill_block(
             // The accepted virtual wall's impact erodes; the rejected candidates stand for
             // the repeated hits of a multiple collision, tallied apart.
             let (mut accepted, mut rejected) = (0.0, 0.0);
+            let mut speed = f64::NAN;
             let (u, reb) = rebound_observed(setup, &inc, &per_unit, &prefix, i, |u, n, ok| {
-                let (alpha, v) = erosion.impact(u, n);
+                // One incident velocity for every candidate: its norm once.
+                if speed.is_nan() {
+                    speed = u.norm();
+                }
+                let (a, v) = erosion.impact(u, speed, n);
                 if ok {
                     accepted += v;
                 } else {
                     rejected += v;
                 }
-                block.push_impact(alpha, !ok);
+                block.push_impact(a.alpha, !ok);
             });
             let o = Outcome {
                 erosion: Some(ErosionOutcome {

@@ -24,6 +24,7 @@ fn model() -> WallModel {
         },
         psi: Some(2.0),
         seed: 2021,
+        ..Default::default()
     })
     .unwrap()
     .0

@@ -20,7 +20,7 @@ use roughwall::incidence::{draw_speed, incident_velocity};
 use roughwall::rng;
 use roughwall::stochastic::shadow_effect::ShadowSampler;
 use roughwall::stochastic::simulate::{fill_block, outcome, tally_spec, ModelSetup};
-use roughwall::stochastic::{rebound, rebound_from, Incidence};
+use roughwall::stochastic::{rebound, rebound_from, Incidence, Variant, VariantKind};
 use roughwall::tally::BlockTally;
 use roughwall::wall::{conditional_gamma_star, delta_gamma, rotated_moments, Deviations};
 use std::time::Instant;
@@ -132,6 +132,26 @@ fn bench_erosion(c: &mut Criterion) {
     g.finish();
 }
 
+/// The cost of each rough-wall variant: one tallied block of rebounds on one core.
+fn bench_variants(c: &mut Criterion) {
+    let mut g = c.benchmark_group("stochastic_variants");
+    let n = 65_536;
+    g.throughput(Throughput::Elements(n));
+    g.sample_size(20);
+    for s in scenes().iter().take(2) {
+        for kind in VariantKind::ALL {
+            let v = Variant {
+                kind,
+                delta_gamma: None,
+            };
+            g.bench_function(format!("{}_{}", s.name, kind.name()), |b| {
+                b.iter(|| black_box(tallied_block_with(s, n, None, v)))
+            });
+        }
+    }
+    g.finish();
+}
+
 fn bench_sampler(c: &mut Criterion) {
     let mut g = c.benchmark_group("shadow_sampler");
     g.throughput(Throughput::Elements(1));
@@ -209,6 +229,16 @@ fn tallied_block(s: &Scene, n: u64) -> BlockTally {
 
 /// [`tallied_block`] with an erosion law (or none).
 fn tallied_block_eroding(s: &Scene, n: u64, erosion: Option<ErosionSetup>) -> BlockTally {
+    tallied_block_with(s, n, erosion, Variant::default())
+}
+
+/// [`tallied_block`] with an erosion law (or none) and a rough-wall variant.
+fn tallied_block_with(
+    s: &Scene,
+    n: u64,
+    erosion: Option<ErosionSetup>,
+    variant: Variant,
+) -> BlockTally {
     let setup = ModelSetup {
         wall: s.wall,
         law: s.law,
@@ -216,6 +246,7 @@ fn tallied_block_eroding(s: &Scene, n: u64, erosion: Option<ErosionSetup>) -> Bl
         diameter_m: 500e-6,
         speed: s.speed,
         erosion,
+        variant,
     };
     let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
     let mut block = BlockTally::new(&tally_spec(&s.wall, cond, 1.0, erosion.as_ref()), 0);
@@ -326,6 +357,7 @@ criterion_group!(
     breakdown,
     bench_rebounds,
     bench_sampler,
-    bench_erosion
+    bench_erosion,
+    bench_variants
 );
 criterion_main!(benches);

@@ -64,6 +64,31 @@
 #define RW_PRESET_GLASS_STEEL 1
 
 /*
+ Radenkovic & Simonin 2021 (the default rough-wall model).
+ */
+#define RW_MODEL_RADENKOVIC_SIMONIN_2021 0
+
+/*
+ Sommerfeld & Huber 1999: isotropic, shadow effect, repeated hits.
+ */
+#define RW_MODEL_SOMMERFELD_HUBER_1999 1
+
+/*
+ The impact angle perturbed in the incident plane (OpenFOAM forks).
+ */
+#define RW_MODEL_GAUSSIAN_ANGLE 2
+
+/*
+ A Gaussian tilt with a uniform azimuth (LIGGGHTS-PFM).
+ */
+#define RW_MODEL_GAUSSIAN_TILT 3
+
+/*
+ The normal rotated by two shadow-weighted Gaussian angles (ELEXI).
+ */
+#define RW_MODEL_NORMAL_PERTURBATION 4
+
+/*
  An immutable wall handle, safe to share between threads.
  */
 typedef struct rw_wall rw_wall;
@@ -104,6 +129,15 @@ typedef struct {
    Seed of every hit's random stream, with (particle id, collision index).
    */
   uint64_t seed;
+  /*
+   The rough-wall model: `RW_MODEL_RADENKOVIC_SIMONIN_2021` (default) …
+   `RW_MODEL_NORMAL_PERTURBATION`.
+   */
+  int32_t model;
+  /*
+   The isotropic models' roughness angle Δγ (degrees, 0 … 20); NaN: `(Δξ + Δζ)/2`.
+   */
+  double delta_gamma_deg;
 } rw_wall_params;
 
 /*

@@ -38,6 +38,17 @@ pub const RW_PRESET_NONE: i32 = 0;
 /// Glass beads on stainless steel (Laín & Sommerfeld 2008 fit; parameters left NaN take it).
 pub const RW_PRESET_GLASS_STEEL: i32 = 1;
 
+/// Radenkovic & Simonin 2021 (the default rough-wall model).
+pub const RW_MODEL_RADENKOVIC_SIMONIN_2021: i32 = 0;
+/// Sommerfeld & Huber 1999: isotropic, shadow effect, repeated hits.
+pub const RW_MODEL_SOMMERFELD_HUBER_1999: i32 = 1;
+/// The impact angle perturbed in the incident plane (OpenFOAM forks).
+pub const RW_MODEL_GAUSSIAN_ANGLE: i32 = 2;
+/// A Gaussian tilt with a uniform azimuth (LIGGGHTS-PFM).
+pub const RW_MODEL_GAUSSIAN_TILT: i32 = 3;
+/// The normal rotated by two shadow-weighted Gaussian angles (ELEXI).
+pub const RW_MODEL_NORMAL_PERTURBATION: i32 = 4;
+
 /// What a wall handle is built from. Start from `rw_wall_params_default` and set fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
@@ -62,6 +73,11 @@ pub struct rw_wall_params {
     pub psi: f64,
     /// Seed of every hit's random stream, with (particle id, collision index).
     pub seed: u64,
+    /// The rough-wall model: `RW_MODEL_RADENKOVIC_SIMONIN_2021` (default) …
+    /// `RW_MODEL_NORMAL_PERTURBATION`.
+    pub model: i32,
+    /// The isotropic models' roughness angle Δγ (degrees, 0 … 20); NaN: `(Δξ + Δζ)/2`.
+    pub delta_gamma_deg: f64,
 }
 
 /// One particle–wall hit, global axes, SI units.
@@ -197,6 +213,8 @@ pub unsafe extern "C" fn rw_wall_params_default(params: *mut rw_wall_params) -> 
             alpha_mu_deg: f64::NAN,
             psi: 2.0,
             seed: 0,
+            model: RW_MODEL_RADENKOVIC_SIMONIN_2021,
+            delta_gamma_deg: f64::NAN,
         });
         RW_OK
     })
@@ -204,6 +222,15 @@ pub unsafe extern "C" fn rw_wall_params_default(params: *mut rw_wall_params) -> 
 
 fn wall_params(p: &rw_wall_params) -> Result<WallParams, String> {
     let given = |x: f64| (!x.is_nan()).then_some(x);
+    let variant = usize::try_from(p.model)
+        .ok()
+        .and_then(|i| crate::stochastic::VariantKind::ALL.get(i).copied())
+        .ok_or_else(|| {
+            format!(
+                "invalid `model` = {}: allowed RW_MODEL_RADENKOVIC_SIMONIN_2021 (0) to RW_MODEL_NORMAL_PERTURBATION (4)",
+                p.model
+            )
+        })?;
     let model = match p.law {
         RW_LAW_ELASTIC => "elastic",
         RW_LAW_SOMMERFELD_HUBER => "sommerfeld-huber",
@@ -236,6 +263,8 @@ fn wall_params(p: &rw_wall_params) -> Result<WallParams, String> {
         },
         psi: Some(p.psi),
         seed: p.seed,
+        model: Some(variant.name().into()),
+        delta_gamma_deg: given(p.delta_gamma_deg),
     })
 }
 
@@ -532,6 +561,43 @@ mod tests {
             assert_eq!((r.gamma, r.candidate_walls), (o.gamma, o.candidate_walls));
         }
         unsafe { rw_wall_free(w) };
+    }
+
+    #[test]
+    fn every_rough_wall_model_is_part_of_the_handle() {
+        let mut first = Vec::new();
+        for (i, kind) in crate::stochastic::VariantKind::ALL.iter().enumerate() {
+            let mut p = params();
+            p.model = i as i32;
+            if i > 0 {
+                p.delta_gamma_deg = 4.0;
+            }
+            let (s, w, msg) = wall(&p);
+            assert_eq!((s, msg.as_str()), (RW_OK, ""), "{}", kind.name());
+            let handle = unsafe { &*w }.model;
+            assert_eq!(handle.variant.kind, *kind);
+            let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
+            assert_eq!(unsafe { rw_rebound(w, &hit(1), r.as_mut_ptr()) }, RW_OK);
+            first.push(unsafe { r.assume_init() }.velocity.map(f64::to_bits));
+            unsafe { rw_wall_free(w) };
+        }
+        first.dedup();
+        assert_eq!(first.len(), 5, "the models gave the same rebound");
+        for (model, dg, key) in [
+            (9, f64::NAN, "model"),
+            (2, -1.0, "delta_gamma_deg"),
+            (0, 3.0, "delta_gamma_deg"),
+        ] {
+            let mut p = params();
+            p.model = model;
+            p.delta_gamma_deg = dg;
+            let (s, w, msg) = wall(&p);
+            assert_eq!(s, RW_INVALID_PARAMETER, "{msg}");
+            assert!(
+                w.is_null() && msg.contains(key) && !msg.contains('\n'),
+                "{msg}"
+            );
+        }
     }
 
     #[test]

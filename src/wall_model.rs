@@ -14,7 +14,7 @@ use crate::case::{capture_warnings, Case, CollisionSection, StochasticSection, W
 use crate::collision::CollisionLaw;
 use crate::error::{Error, Result};
 use crate::rng;
-use crate::stochastic::rebound;
+use crate::stochastic::{rebound_variant, Variant};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
 
@@ -32,6 +32,10 @@ pub struct WallParams {
     pub psi: Option<f64>,
     /// Seed of every hit's random stream.
     pub seed: u64,
+    /// The rough-wall model (`[stochastic] model`; the paper's when `None`) and the isotropic
+    /// variants' roughness angle (degrees; `(Δξ + Δζ)/2` when `None`).
+    pub model: Option<String>,
+    pub delta_gamma_deg: Option<f64>,
 }
 
 /// A wall: immutable once built, so one handle serves every thread.
@@ -41,6 +45,8 @@ pub struct WallModel {
     pub law: CollisionLaw,
     pub psi: f64,
     pub seed: u64,
+    /// The rough-wall model drawing the virtual walls.
+    pub variant: Variant,
 }
 
 impl WallModel {
@@ -56,7 +62,11 @@ impl WallModel {
                 ..Default::default()
             }),
             collision: Some(p.collision.clone()),
-            stochastic: Some(StochasticSection { psi: p.psi }),
+            stochastic: Some(StochasticSection {
+                psi: p.psi,
+                model: p.model.clone(),
+                delta_gamma_deg: p.delta_gamma_deg,
+            }),
             ..Default::default()
         };
         let (built, warnings) = capture_warnings(|| -> Result<WallModel> {
@@ -73,6 +83,7 @@ impl WallModel {
                 law: case.collision_law()?,
                 psi: case.psi()?,
                 seed: p.seed,
+                variant: case.variant()?,
             })
         });
         Ok((built?, warnings))
@@ -120,13 +131,14 @@ impl WallModel {
             self.seed,
             &[rng::domain::WALL_HITS, hit.particle_id, hit.collision_index],
         );
-        let out = rebound(
+        let out = rebound_variant(
             u,
             w,
             &self.wall,
             &self.law,
             self.psi,
             hit.diameter_m,
+            self.variant,
             &mut r,
         );
         let velocity = frame.to_global(&out.velocity) + Vector3::from(hit.wall_velocity);
@@ -246,6 +258,7 @@ impl Frame {
 mod tests {
     use super::*;
     use crate::collision::ShParams;
+    use crate::stochastic::rebound;
 
     fn glass_steel() -> WallModel {
         WallModel::new(&WallParams {
@@ -258,6 +271,7 @@ mod tests {
             },
             psi: None,
             seed: 5,
+            ..Default::default()
         })
         .unwrap()
         .0

@@ -26,6 +26,7 @@ fn glass_steel() -> WallModel {
         },
         psi: Some(2.0),
         seed: 2021,
+        ..Default::default()
     })
     .unwrap()
     .0

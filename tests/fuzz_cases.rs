@@ -1144,10 +1144,7 @@ const STOCHASTIC_NA: [&str; 7] = [
 
 /// Columns of `summary.csv` that the deterministic model leaves empty (docs/outputs.md):
 /// the rejected candidates' erosion, which only the stochastic model has.
-const DETERMINISTIC_NA: [&str; 2] = [
-    "erosion_per_mass_rejected",
-    "se_erosion_per_mass_rejected",
-];
+const DETERMINISTIC_NA: [&str; 2] = ["erosion_per_mass_rejected", "se_erosion_per_mass_rejected"];
 
 /// Text columns; every other column holds numbers.
 const TEXT_COLUMNS: [&str; 2] = ["model", "quantity"];

@@ -12,6 +12,9 @@ module roughwall
        RW_INTERNAL_ERROR = 5
   integer(c_int32_t), parameter, public :: RW_LAW_ELASTIC = 0, RW_LAW_SOMMERFELD_HUBER = 1
   integer(c_int32_t), parameter, public :: RW_PRESET_NONE = 0, RW_PRESET_GLASS_STEEL = 1
+  integer(c_int32_t), parameter, public :: RW_MODEL_RADENKOVIC_SIMONIN_2021 = 0, &
+       RW_MODEL_SOMMERFELD_HUBER_1999 = 1, RW_MODEL_GAUSSIAN_ANGLE = 2, &
+       RW_MODEL_GAUSSIAN_TILT = 3, RW_MODEL_NORMAL_PERTURBATION = 4
 
   !> What a wall is built from (rw_wall_params): start from rw_wall_params_default.
   type, bind(c), public :: rw_wall_params
@@ -20,6 +23,8 @@ module roughwall
      real(c_double) :: e_h, alpha_e_deg, mu_0, mu_h, alpha_mu_deg
      real(c_double) :: psi
      integer(c_int64_t) :: seed
+     integer(c_int32_t) :: model
+     real(c_double) :: delta_gamma_deg
   end type rw_wall_params
 
   !> One particle-wall hit in global axes, SI units (rw_hit).

@@ -80,6 +80,8 @@ pub struct Scene {
     pub erosion: Option<crate::erosion::ErosionModel>,
     /// Particle density (kg/m³): with the diameter, the particle mass.
     pub density_kg_m3: f64,
+    /// The stochastic model's rough-wall variant (`[stochastic] model`).
+    pub variant: crate::stochastic::Variant,
 }
 
 impl Scene {
@@ -612,6 +614,7 @@ impl Case {
             bin_width_deg: bin,
             psi,
             erosion: self.erosion_model()?,
+            variant: self.variant()?,
             density_kg_m3: within(
                 "particles.density_kg_m3",
                 p.density_kg_m3.unwrap_or(2500.0),
@@ -635,6 +638,47 @@ impl Case {
             "",
             "below, almost every candidate rebound is redrawn; above, none is; the paper uses 2",
         )
+    }
+
+    /// The rough-wall model of `[stochastic] model` and `delta_gamma_deg` (default: the
+    /// paper's).
+    pub fn variant(&self) -> Result<crate::stochastic::Variant> {
+        use crate::stochastic::{Variant, VariantKind};
+        let st = self.stochastic.clone().unwrap_or_default();
+        let kind = match st.model.as_deref() {
+            None => VariantKind::RadenkovicSimonin2021,
+            Some(name) => VariantKind::from_name(name).ok_or_else(|| {
+                let names: Vec<String> = VariantKind::ALL
+                    .iter()
+                    .map(|v| format!("\"{}\"", v.name()))
+                    .collect();
+                Error::invalid(
+                    "stochastic.model",
+                    format!("\"{name}\""),
+                    &format!("one of {}", names.join(", ")),
+                )
+            })?,
+        };
+        let delta_gamma = match st.delta_gamma_deg {
+            None => None,
+            Some(_) if kind == VariantKind::RadenkovicSimonin2021 => {
+                return Err(Error::Input(
+                    "`stochastic.delta_gamma_deg` applies to the isotropic variants only; model = \"radenkovic-simonin-2021\" takes its Δγ from the wall (Eq. 26)".into(),
+                ))
+            }
+            Some(d) => Some(
+                within(
+                    "stochastic.delta_gamma_deg",
+                    d,
+                    0.0,
+                    MAX_DEVIATION_DEG,
+                    " degrees",
+                    "a roughness angle within the wall models' range",
+                )?
+                .to_radians(),
+            ),
+        };
+        Ok(Variant { kind, delta_gamma })
     }
 
     /// The collision law of `[collision]` (default: ideally elastic).

@@ -134,12 +134,19 @@ pub struct OutputSection {
     pub bin_width_deg: Option<f64>,
 }
 
-/// `[stochastic]`: the multiple-collision parameter ψ of Eq. (34).
+/// `[stochastic]`: the multiple-collision parameter ψ of Eq. (34) and the rough-wall model.
 #[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct StochasticSection {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub psi: Option<f64>,
+    /// The rough-wall model: `"radenkovic-simonin-2021"` (default), `"sommerfeld-huber-1999"`,
+    /// `"gaussian-angle"`, `"gaussian-tilt"` or `"normal-perturbation"`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub model: Option<String>,
+    /// The isotropic variants' roughness angle Δγ (degrees); default `(Δξ + Δζ)/2`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub delta_gamma_deg: Option<f64>,
 }
 
 /// `[deterministic]`: tracker limits and the automatic surface choice.

@@ -99,6 +99,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides) -> Result<Prepared> {
         psi: scene.psi,
         diameter_m: scene.diameter_m,
         speed: scene.speed,
+        variant: scene.variant,
         erosion: scene.erosion.map(|model| ErosionSetup {
             model,
             particle_mass_kg: scene.particle_mass_kg(),
@@ -259,6 +260,16 @@ pub fn finish(
         toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
     );
     manifest.set_run("psi", f(p.scene.psi));
+    if !p.setup.variant.is_paper() {
+        manifest.set_run(
+            "model",
+            toml::Value::String(p.setup.variant.kind.name().into()),
+        );
+        manifest.set_run(
+            "delta_gamma_deg",
+            f(p.setup.variant.delta_gamma_on(&p.setup.wall).to_degrees()),
+        );
+    }
     manifest.set_run(
         "particles_per_condition",
         toml::Value::Integer(p.scene.count as i64),

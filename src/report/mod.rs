@@ -7,6 +7,7 @@
 pub mod erosion;
 pub mod paper;
 pub mod sections;
+pub mod wall_models;
 
 use crate::error::Result;
 use crate::output::write_atomic;
@@ -28,6 +29,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     sections::ds_vs_sm(results, &mut md)?;
     sections::sec4(results, &mut md)?;
     sections::hu(results, &mut md)?;
+    wall_models::wall_models(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
     sections::speed_vs_error(results, &mut md)?;
     write_atomic(&results.join("REPORT.md"), md.as_bytes())

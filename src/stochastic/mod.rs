@@ -5,13 +5,17 @@
 //! * [`rebound_model`]: [`rebound`], one rebound — the entry point a CFD code calls
 //!   once per wall collision.
 //! * [`simulate`]: many rebounds of one incident condition, parallel and reproducible.
+//! * [`variants`]: the simpler rough-wall models CFD codes ship, for the benchmark.
 //! * [`plots`]: the figures of `rebound stochastic`.
 pub mod plots;
 pub mod rebound_model;
 pub mod shadow_effect;
 pub mod simulate;
+pub mod variants;
 
 pub use rebound_model::{
-    rebound, rebound_from, single_collision_probability, Incidence, Rebound, SeenWall, MAX_TRIES,
+    rebound, rebound_from, rebound_from_observed, rebound_variant, single_collision_probability,
+    Incidence, Rebound, SeenWall, MAX_TRIES,
 };
 pub use shadow_effect::ShadowSampler;
+pub use variants::{Variant, VariantKind};

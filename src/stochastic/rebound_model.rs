@@ -6,7 +6,10 @@
 //! collision law and a random generator — no surface, no tables.
 
 use super::shadow_effect::ShadowSampler;
-use crate::angles::{incident_angles, normal_from_xi_zeta, xi_zeta_rotated};
+use super::variants::{Variant, VariantKind};
+use crate::angles::{
+    gamma_from_normal, incident_angles, normal_from_xi_zeta, xi_zeta_of_normal, xi_zeta_rotated,
+};
 use crate::collision::CollisionLaw;
 use crate::wall::{conditional_gamma_star, rotated_moments, Deviations, Moments};
 use nalgebra::Vector3;
@@ -56,19 +59,44 @@ pub struct Incidence {
     moments: Moments,
     /// `P_eff(γ | α⁻)` with `Δγ(β⁻)` (Eqs. 31–33).
     sampler: ShadowSampler,
+    /// The rough-wall model drawing the walls ([`super::variants`]).
+    variant: Variant,
+    /// The isotropic variants' roughness angle `Δγ` (rad) and their shadow-effect law.
+    delta_gamma_iso: f64,
+    iso_sampler: ShadowSampler,
 }
 
 impl Incidence {
     /// The direction `(α⁻, β⁻)` (rad) on `wall`.
     pub fn new(alpha: f64, beta: f64, wall: &Deviations) -> Incidence {
+        Incidence::with_variant(alpha, beta, wall, Variant::PAPER)
+    }
+
+    /// The direction `(α⁻, β⁻)` (rad) on `wall`, walls drawn by `variant`.
+    pub fn with_variant(alpha: f64, beta: f64, wall: &Deviations, variant: Variant) -> Incidence {
         let moments = rotated_moments(wall, beta);
+        let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
+        let delta_gamma_iso = variant.delta_gamma_on(wall);
+        let iso_sampler = if variant.is_paper() {
+            sampler
+        } else {
+            ShadowSampler::new(alpha, delta_gamma_iso)
+        };
         Incidence {
             alpha,
             beta,
             sin_cos_beta: beta.sin_cos(),
             moments,
-            sampler: ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt()),
+            sampler,
+            variant,
+            delta_gamma_iso,
+            iso_sampler,
         }
+    }
+
+    /// The variant drawing the walls.
+    pub fn variant(&self) -> Variant {
+        self.variant
     }
 
     /// The direction of the velocity `u_in` (physics notes §1) on `wall`.
@@ -96,6 +124,84 @@ impl Incidence {
             xi,
             zeta,
             normal: normal_from_xi_zeta(xi, zeta),
+        }
+    }
+
+    /// A wall element of inclinations `(γ, γ*)` in the incident frame (Eq. 23).
+    #[inline]
+    fn wall_of_gammas(&self, gamma: f64, gamma_star: f64) -> SeenWall {
+        let (xi, zeta) = xi_zeta_rotated(gamma, gamma_star, self.sin_cos_beta);
+        SeenWall {
+            gamma,
+            gamma_star,
+            xi,
+            zeta,
+            normal: normal_from_xi_zeta(xi, zeta),
+        }
+    }
+
+    /// A wall element of unit normal `n`, with its angles.
+    #[inline]
+    fn wall_of_normal(&self, normal: Vector3<f64>) -> SeenWall {
+        let (xi, zeta) = xi_zeta_of_normal(&normal);
+        let (gamma, gamma_star) = gamma_from_normal(&normal, self.beta);
+        SeenWall {
+            gamma,
+            gamma_star,
+            xi,
+            zeta,
+            normal,
+        }
+    }
+
+    /// A wall element drawn by one of the simpler variants ([`super::variants`]).
+    /// `t` is the horizontal incident direction `(cos β⁻, 0, −sin β⁻)` and `γ > 0` tilts
+    /// the element towards the particle (local impact angle `|α⁻| + γ`).
+    fn draw_variant<R: Rng + ?Sized>(&self, rng: &mut R) -> SeenWall {
+        let dg = self.delta_gamma_iso;
+        let (sb, cb) = self.sin_cos_beta;
+        let t = Vector3::new(cb, 0.0, -sb);
+        let j = Vector3::new(0.0, 1.0, 0.0);
+        match self.variant.kind {
+            VariantKind::RadenkovicSimonin2021 => self.draw_wall(rng),
+            // Sommerfeld & Huber 1999: the shadow law in the incident plane, an independent
+            // normal law across it, one Δγ for both (isotropic).
+            VariantKind::SommerfeldHuber1999 => {
+                let gamma = self.iso_sampler.sample(rng);
+                let z: f64 = rng.sample(StandardNormal);
+                self.wall_of_gammas(gamma, dg * z)
+            }
+            // `α₁ = max(α + Δγ N(0,1), 0)`: the element tilted in the incident plane by
+            // `α₁ − α`, never beyond the incident direction.
+            VariantKind::GaussianAngle => {
+                let z: f64 = rng.sample(StandardNormal);
+                self.wall_of_gammas((dg * z).max(self.alpha), 0.0)
+            }
+            // LIGGGHTS-PFM: a half-normal tilt δ about an azimuth ψ ∈ [0, π) measured from
+            // n₂ = n × n₁, n₁ opposite the tangential velocity: the element always leans
+            // towards the particle.
+            VariantKind::GaussianTilt => {
+                let z: f64 = rng.sample(StandardNormal);
+                let delta = (dg * z).abs().min(std::f64::consts::FRAC_PI_2);
+                let psi = std::f64::consts::PI * rng.gen::<f64>();
+                let n1 = -t;
+                let n2 = j.cross(&n1);
+                let (sd, cd) = delta.sin_cos();
+                let (sp, cp) = psi.sin_cos();
+                self.wall_of_normal((j * cd + (n1 * sp + n2 * cp) * sd).normalize())
+            }
+            // ELEXI: rotate n by θ₁ about n × t (towards the particle), then by θ₂ about the
+            // original n, both angles from the shadow-weighted Gaussian.
+            VariantKind::NormalPerturbation => {
+                let th1 = self.iso_sampler.sample(rng);
+                let th2 = self.iso_sampler.sample(rng);
+                let (s1, c1) = th1.sin_cos();
+                let (s2, c2) = th2.sin_cos();
+                // The horizontal part −sin θ₁ t, turned by θ₂ about y.
+                let h = -t * s1;
+                let h = Vector3::new(h.x * c2 + h.z * s2, 0.0, -h.x * s2 + h.z * c2);
+                self.wall_of_normal((j * c1 + h).normalize())
+            }
         }
     }
 }
@@ -259,6 +365,27 @@ pub fn rebound<R: Rng + ?Sized>(
     rebound_from(&inc, u_in, omega_in, wall, law, psi, diameter_m, rng)
 }
 
+/// [`rebound`] with the virtual walls drawn by `variant` ([`super::variants`]); the
+/// paper's variant is [`rebound`] exactly.
+#[allow(clippy::too_many_arguments)]
+pub fn rebound_variant<R: Rng + ?Sized>(
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    variant: Variant,
+    rng: &mut R,
+) -> Rebound {
+    if let Some(done) = trivial(u_in, omega_in, wall, law, psi, diameter_m) {
+        return done;
+    }
+    let (alpha, beta) = incident_angles(&u_in);
+    let inc = Incidence::with_variant(alpha, beta, wall, variant);
+    rebound_from(&inc, u_in, omega_in, wall, law, psi, diameter_m, rng)
+}
+
 /// The rebounds that need no random draw: a particle not moving towards the wall (or a
 /// non-finite input) is returned unchanged with `tries = 0`; a smooth wall (or a `psi` that
 /// can accept nothing) gives the collision with the mean wall.
@@ -327,8 +454,72 @@ pub fn rebound_from<R: Rng + ?Sized>(
         psi,
         diameter_m,
         rng,
-        |_, _| {},
+        |_, _, _| {},
     )
+}
+
+/// The simpler variants ([`super::variants`]): a wall element is drawn for the incident
+/// velocity (redrawn while the particle cannot reach it, `U·n ≥ 0`), the collision law is
+/// applied, and a rebound that does not leave the mean wall (`v⁺ ≤ 0`) hits the wall again:
+/// a new element is drawn for the new velocity. `candidates` counts the collisions. Every
+/// collision is reported to `observe` as accepted (each is a real impact).
+#[allow(clippy::too_many_arguments)]
+fn rebound_repeated<R: Rng + ?Sized>(
+    inc: &Incidence,
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    diameter_m: f64,
+    rng: &mut R,
+    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+) -> Rebound {
+    let (mut u, mut w) = (u_in, omega_in);
+    let mut cur = *inc;
+    let mut candidates = 0u32;
+    let mut first = SeenWall::FLAT;
+    for tries in 1..=MAX_TRIES {
+        let seen = cur.draw_variant(rng);
+        if u.dot(&seen.normal) >= 0.0 {
+            continue;
+        }
+        candidates += 1;
+        if candidates == 1 {
+            first = seen;
+        }
+        observe(&u, &seen.normal, true);
+        let (u_out, w_out) = law.collide(u, w, seen.normal, diameter_m);
+        if u_out.y > 0.0 {
+            return Rebound {
+                velocity: u_out,
+                spin: w_out,
+                gamma: seen.gamma,
+                gamma_star: seen.gamma_star,
+                normal: seen.normal,
+                tries,
+                candidates,
+                first,
+            };
+        }
+        // Into (or along) the mean wall: the particle meets the wall again. An exactly
+        // tangential velocity is taken as grazing by a hair so the incidence is defined.
+        (u, w) = (u_out, w_out);
+        let (alpha, beta) = incident_angles(&u);
+        cur = Incidence::with_variant(alpha.min(-1e-12), beta, wall, inc.variant);
+    }
+    let j = Vector3::new(0.0, 1.0, 0.0);
+    let (u_out, w_out) = law.collide(u, w, j, diameter_m);
+    observe(&u, &j, true);
+    Rebound {
+        velocity: u_out,
+        spin: w_out,
+        gamma: 0.0,
+        gamma_star: 0.0,
+        normal: j,
+        tries: MAX_TRIES,
+        candidates,
+        first,
+    }
 }
 
 /// [`rebound_from`] reporting every candidate rebound to `observe`: the normal of the
@@ -346,13 +537,16 @@ pub fn rebound_from_observed<R: Rng + ?Sized>(
     psi: f64,
     diameter_m: f64,
     rng: &mut R,
-    mut observe: impl FnMut(&Vector3<f64>, bool),
+    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
 ) -> Rebound {
     if let Some(done) = trivial(u_in, omega_in, wall, law, psi, diameter_m) {
         if done.candidates > 0 {
-            observe(&done.normal, true);
+            observe(&u_in, &done.normal, true);
         }
         return done;
+    }
+    if !inc.variant.is_paper() {
+        return rebound_repeated(inc, u_in, omega_in, wall, law, diameter_m, rng, observe);
     }
     let mut candidates = 0u32;
     let mut first = SeenWall::FLAT;
@@ -370,10 +564,10 @@ pub fn rebound_from_observed<R: Rng + ?Sized>(
         let (u, w) = law.collide(u_in, omega_in, seen.normal, diameter_m);
         // Step 6.
         if !accept_single_collision(&u, wall, psi, rng) {
-            observe(&seen.normal, false);
+            observe(&u_in, &seen.normal, false);
             continue;
         }
-        observe(&seen.normal, true);
+        observe(&u_in, &seen.normal, true);
         // Step 7.
         return Rebound {
             velocity: u,
@@ -388,7 +582,7 @@ pub fn rebound_from_observed<R: Rng + ?Sized>(
     }
     let j = Vector3::new(0.0, 1.0, 0.0);
     let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
-    observe(&j, true);
+    observe(&u_in, &j, true);
     Rebound {
         velocity: u,
         spin: w,

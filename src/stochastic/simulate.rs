@@ -3,6 +3,7 @@
 
 use super::rebound_model::{rebound_from_observed, Incidence, Rebound, MAX_TRIES};
 use super::shadow_effect;
+use super::variants::Variant;
 use crate::angles::{alpha_xy_of_velocity, incident_angles, wrap_pi};
 use crate::collision::CollisionLaw;
 use crate::erosion::ErosionSetup;
@@ -22,6 +23,8 @@ pub struct ModelSetup {
     pub speed: SpeedLaw,
     /// The erosion law, when the case tallies erosion.
     pub erosion: Option<ErosionSetup>,
+    /// The rough-wall model (`[stochastic] model`; default Radenkovic & Simonin 2021).
+    pub variant: Variant,
 }
 
 /// The tallied record of one stochastic rebound (radians; `β⁻ = beta_in`).
@@ -59,7 +62,7 @@ pub fn rebound_of(
     seed: u64,
 ) -> (Vector3<f64>, Rebound) {
     let per_unit = setup.speed.velocity(cond.alpha_in, cond.beta_in, 1.0);
-    let inc = Incidence::new(cond.alpha_in, cond.beta_in, &setup.wall);
+    let inc = Incidence::with_variant(cond.alpha_in, cond.beta_in, &setup.wall, setup.variant);
     rebound_at(setup, &inc, &per_unit, &stream_prefix(seed, cond_index), i)
 }
 
@@ -104,7 +107,7 @@ fn rebound_observed(
         setup.psi,
         setup.diameter_m,
         &mut r,
-        |n, accepted| observe(&u, n, accepted),
+        |u_hit, n, accepted| observe(u_hit, n, accepted),
     );
     (u, reb)
 }
@@ -119,20 +122,20 @@ pub fn fill_block(
     block: &mut BlockTally,
 ) {
     let per_unit = setup.speed.velocity(cond.alpha_in, cond.beta_in, 1.0);
-    let inc = Incidence::new(cond.alpha_in, cond.beta_in, &setup.wall);
+    let inc = Incidence::with_variant(cond.alpha_in, cond.beta_in, &setup.wall, setup.variant);
     let prefix = stream_prefix(seed, cond_index);
     if let Some(erosion) = &setup.erosion {
         for i in start..end {
             // The accepted virtual wall's impact erodes; the rejected candidates stand for
             // the repeated hits of a multiple collision, tallied apart.
             let (mut accepted, mut rejected) = (0.0, 0.0);
-            let mut speed = f64::NAN;
+            // The paper's model hits with the incident velocity every time: its norm once.
+            let mut last = (Vector3::zeros(), 0.0);
             let (u, reb) = rebound_observed(setup, &inc, &per_unit, &prefix, i, |u, n, ok| {
-                // One incident velocity for every candidate: its norm once.
-                if speed.is_nan() {
-                    speed = u.norm();
+                if *u != last.0 {
+                    last = (*u, u.norm());
                 }
-                let (a, v) = erosion.impact(u, speed, n);
+                let (a, v) = erosion.impact(u, last.1, n);
                 if ok {
                     accepted += v;
                 } else {

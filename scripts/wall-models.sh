@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Which rough-wall model to trust: every stochastic variant (`[stochastic] model`) against
+# `deterministic` on every Sec. 3 and Sec. 4 scene of Radenkovic & Simonin 2021. Reuses the
+# deterministic runs of scripts/radenkovic2021.sh when they are there (runs them otherwise),
+# runs each variant with the same particles per condition and compares. Writes
+# $REBOUND_RESULTS/wall-models/<scene>/<variant>/{stochastic,compare}/; `rebound report`
+# aggregates them into wall_models.csv and a REPORT.md table.
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+[ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
+W=$OUT/wall-models
+R=$OUT/radenkovic2021
+mkdir -p "$W/cases"
+N=$(particles 100000 2000)
+VARIANTS="radenkovic-simonin-2021 sommerfeld-huber-1999 gaussian-angle gaussian-tilt normal-perturbation"
+SCENES="sec3:aniso sec3:aniso-rev sec4:glass-steel-2d sec4:glass-steel-iso sec4:glass-steel sec4:glass-steel-fig16 sec4:glass-steel-fig16-2d sec4:glass-steel-fig17 sec4:glass-steel-fig17-2d"
+for s in $SCENES; do
+  IFS=: read -r sec scene <<< "$s"
+  det="$R/$sec-$scene/deterministic"
+  stage_start "Wall models $scene"
+  if [ ! -f "$det/summary.csv" ] || [ "$(awk -F, 'NR==2{print $5}' "$det/summary.csv")" -lt "$((N / 2))" ]; then
+    run deterministic --case "cases/$scene.toml" --particles "$N" --out "$det"
+  fi
+  for v in $VARIANTS; do
+    case_file="$W/cases/$scene-$v.toml"
+    if grep -q '^\[stochastic\]' "configs/cases/$scene.toml"; then
+      sed -e "s/^\[stochastic\]$/[stochastic]\nmodel = \"$v\"/" "configs/cases/$scene.toml" > "$case_file"
+    else
+      { cat "configs/cases/$scene.toml"; printf '\n[stochastic]\nmodel = "%s"\n' "$v"; } > "$case_file"
+    fi
+    grep -q "model = \"$v\"" "$case_file" || { echo "wall-models.sh: could not write $case_file" >&2; exit 1; }
+    run stochastic --case "$case_file" --particles "$N" --out "$W/$scene/$v/stochastic"
+    run compare --a "$det" --b "$W/$scene/$v/stochastic" --out "$W/$scene/$v/compare"
+  done
+  stage_end
+done
+[ -n "${REBOUND_NESTED:-}" ] || print_stages "wall models"

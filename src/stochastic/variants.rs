@@ -1,0 +1,129 @@
+//! The rough-wall models CFD codes ship, beside Radenkovic & Simonin 2021, so that each can
+//! be measured against the deterministic simulation on the same wall (issue "which
+//! rough-wall model to trust"). Every variant draws a virtual wall normal from the
+//! incident state and hands it to the same collision law; they differ in how the normal is
+//! drawn and in what happens when the rebound does not leave the wall.
+//!
+//! | variant | virtual wall | shadow effect | a rebound into the wall |
+//! | --- | --- | --- | --- |
+//! | `radenkovic-simonin-2021` | `γ`, `γ*` of the anisotropic wall (Eqs. 26, 29–33) | yes (Eq. 31) | rejected with prob. `1 − tanh(ψα⁺/Δγ)` or when `α⁺ ≤ 0`, redrawn for the same incident particle (Eq. 34) |
+//! | `sommerfeld-huber-1999` | isotropic: `γ` from the shadow law with `Δγ`, `γ* ~ N(0, Δγ)` | yes | hits the wall again (a new virtual wall for the new velocity) |
+//! | `gaussian-angle` | `α₁ = max(α + Δγ N(0,1), 0)`: a tilt in the incident plane only | no | hits again |
+//! | `gaussian-tilt` | tilt `δ = \|Δγ N(0,1)\|`, azimuth uniform in `[0, π)` towards the particle | no | hits again |
+//! | `normal-perturbation` | rotation by `θ₁` about `n × t`, then by `θ₂` about `n`, both from the shadow-weighted Gaussian | yes | hits again |
+//!
+//! Sources:
+//! * Sommerfeld & Huber, Int. J. Multiphase Flow 25 (1999) 1457–1489: the shadow-effect
+//!   law of the roughness angle seen by a particle (as Radenkovic & Simonin 2021, Eq. 31,
+//!   write it) for an isotropic wall; a particle that does not return to the flow meets
+//!   a new virtual wall (Sommerfeld & Zivkovic 1992, as Radenkovic & Simonin 2021, Sec. 1,
+//!   describe it).
+//! * OpenFOAM forks' rough-wall patch interaction: the impact angle perturbed as
+//!   `alpha1 = max(alpha + gamma*N(0,1), 0)` (as the issue quotes it; no public source was
+//!   found to read, so the formula is implemented as quoted: a tilt of the wall in the
+//!   incident plane, no transverse roughness, no shadow effect).
+//! * LIGGGHTS-PFM (`ParticulateFlow/LIGGGHTS-PFM`, `src/fix_roughness.cpp` l. 193–211,
+//!   `src/surface_model_roughness.h` l. 144–213): `deltaGamma = σ N(0,1)` redrawn while
+//!   `γ/2 + deltaGamma < 0` with `γ` clamped to `≤ 0` (so a half-normal tilt for an
+//!   approaching particle), azimuth `ψ = π U[0,1)`, tilted normal
+//!   `n' = cos δ n + sin δ (sin ψ n₁ + cos ψ n₂)`, `n₁` opposite the tangential velocity,
+//!   `n₂ = n × n₁`.
+//! * ELEXI (`flexi-framework/elexi`, `src/particles/boundary/particle_boundary_condition.f90`
+//!   l. 855–937, `Part-Boundary[$]-RoughWall`): the normal rotated by `θ₁` about
+//!   `n × t` and then by `θ₂` about the original normal, each angle drawn by rejection from
+//!   `sin(α + θ)/sin α · N(θ; 0, σ)` (the shadow-weighted Gaussian). ELEXI's code uses `σ`
+//!   as the standard deviation in the exponent and as the variance in the prefactor, and
+//!   accepts against an unscaled uniform; here the intended law is sampled exactly.
+//!
+//! The isotropic variants take one roughness angle `Δγ`: `[stochastic] delta_gamma_deg`, or
+//! by default the mean of the wall's two deviations `(Δξ + Δζ)/2`.
+
+use crate::wall::Deviations;
+
+/// Which rough-wall model draws the virtual walls.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum VariantKind {
+    /// Radenkovic & Simonin 2021 (the default).
+    #[default]
+    RadenkovicSimonin2021,
+    /// Sommerfeld & Huber 1999: isotropic, shadow effect, repeated hits.
+    SommerfeldHuber1999,
+    /// OpenFOAM forks: the impact angle perturbed in the incident plane.
+    GaussianAngle,
+    /// LIGGGHTS-PFM: a Gaussian tilt with a uniform azimuth.
+    GaussianTilt,
+    /// ELEXI: the normal rotated by two shadow-weighted Gaussian angles.
+    NormalPerturbation,
+}
+
+impl VariantKind {
+    /// Every variant, in the benchmark's order.
+    pub const ALL: [VariantKind; 5] = [
+        VariantKind::RadenkovicSimonin2021,
+        VariantKind::SommerfeldHuber1999,
+        VariantKind::GaussianAngle,
+        VariantKind::GaussianTilt,
+        VariantKind::NormalPerturbation,
+    ];
+
+    /// The name in case files (`[stochastic] model`).
+    pub fn name(self) -> &'static str {
+        match self {
+            VariantKind::RadenkovicSimonin2021 => "radenkovic-simonin-2021",
+            VariantKind::SommerfeldHuber1999 => "sommerfeld-huber-1999",
+            VariantKind::GaussianAngle => "gaussian-angle",
+            VariantKind::GaussianTilt => "gaussian-tilt",
+            VariantKind::NormalPerturbation => "normal-perturbation",
+        }
+    }
+
+    /// The variant of a case-file name.
+    pub fn from_name(name: &str) -> Option<VariantKind> {
+        VariantKind::ALL.into_iter().find(|v| v.name() == name)
+    }
+}
+
+/// A variant with its one roughness angle (the isotropic ones).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Variant {
+    pub kind: VariantKind,
+    /// `Δγ` (rad) of the isotropic variants; `None`: `(Δξ + Δζ)/2` of the wall.
+    pub delta_gamma: Option<f64>,
+}
+
+impl Variant {
+    /// Radenkovic & Simonin 2021.
+    pub const PAPER: Variant = Variant {
+        kind: VariantKind::RadenkovicSimonin2021,
+        delta_gamma: None,
+    };
+
+    /// The roughness angle an isotropic variant uses on `wall` (rad).
+    pub fn delta_gamma_on(&self, wall: &Deviations) -> f64 {
+        self.delta_gamma
+            .unwrap_or(0.5 * (wall.delta_xi + wall.delta_zeta))
+    }
+
+    /// Whether the variant is the paper's model.
+    pub fn is_paper(&self) -> bool {
+        self.kind == VariantKind::RadenkovicSimonin2021
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for v in VariantKind::ALL {
+            assert_eq!(VariantKind::from_name(v.name()), Some(v));
+        }
+        assert_eq!(VariantKind::from_name("konan"), None);
+        let w = Deviations {
+            delta_xi: 0.02,
+            delta_zeta: 0.06,
+        };
+        assert!((Variant::default().delta_gamma_on(&w) - 0.04).abs() < 1e-15);
+    }
+}

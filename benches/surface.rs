@@ -2,6 +2,7 @@
 //! (`cargo bench --bench surface`). The N = 5001 cases are the Table 1 surface.
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use roughwall::case::SurfaceSpec;
+use roughwall::surface::dilation::dilate_paraboloid;
 use roughwall::surface::generate;
 use roughwall::surface::stats::surface_stats;
 
@@ -32,6 +33,13 @@ fn bench(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("table1_stats", n), &f, |b, f| {
             b.iter(|| surface_stats(f, &betas, None))
         });
+        // The centre surface of a 500 µm sphere (issue "the particle as a sphere": < 2 s
+        // for N = 5001 on 2 cores).
+        g.bench_with_input(
+            BenchmarkId::new("dilate_paraboloid_d500um", n),
+            &f,
+            |b, f| b.iter(|| dilate_paraboloid(f, 250e-6)),
+        );
     }
     g.finish();
 }

@@ -143,6 +143,8 @@ pub const LENGTH_RANGE_UM: (f64, f64) = (1e-6, 1e9);
 /// Longest list of incident angles (each of `alpha_deg`, `beta_deg`), and most conditions.
 pub const MAX_ANGLES: usize = 1000;
 pub const MAX_CONDITIONS: usize = 10_000;
+/// Longest `[stats] diameter_um` list.
+pub const MAX_DIAMETERS: usize = 64;
 /// Longest `[stats] beta_star_deg` list.
 pub const MAX_BETA_STAR: usize = 1000;
 
@@ -406,11 +408,46 @@ impl Case {
     }
 
     /// Directions `β*` (radians) of Table 1's rotated frames; default 0°, 30°, 60°, 90°.
+    /// Sphere diameters (m) of `[stats] diameter_um` whose effective roughness `surface`
+    /// measures: each in the diameter range and at most the surface side `length_m` (a
+    /// sphere wider than the period would rest on its own images).
+    pub fn effective_diameters(&self, length_m: f64) -> Result<Vec<f64>> {
+        let list = self
+            .stats
+            .as_ref()
+            .map(|s| s.diameter_um.clone())
+            .unwrap_or_default();
+        if list.len() > MAX_DIAMETERS {
+            return Err(Error::invalid(
+                "stats.diameter_um",
+                format!("a list of {} diameters", list.len()),
+                &format!("at most {MAX_DIAMETERS} diameters"),
+            ));
+        }
+        let (lo, hi) = DIAMETER_RANGE_UM;
+        list.iter()
+            .map(|&d| {
+                let d = within("stats.diameter_um", d, lo, hi, " µm", "a nanometre to a metre")?;
+                if d * 1e-6 > length_m {
+                    return Err(Error::invalid(
+                        "stats.diameter_um",
+                        d,
+                        &format!(
+                            "at most the surface side, {} µm (a wider sphere rests on its own periodic images)",
+                            crate::output::fmt_num(length_m * 1e6)
+                        ),
+                    ));
+                }
+                Ok(d * 1e-6)
+            })
+            .collect()
+    }
+
     pub fn beta_star(&self) -> Result<Vec<f64>> {
         let list = self
             .stats
             .as_ref()
-            .map(|s| s.beta_star_deg.clone())
+            .and_then(|s| s.beta_star_deg.clone())
             .unwrap_or_else(|| vec![0.0, 30.0, 60.0, 90.0]);
         if list.len() > MAX_BETA_STAR {
             return Err(Error::invalid(

@@ -68,7 +68,12 @@ pub struct WallSpec {
 #[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct StatsSection {
-    pub beta_star_deg: Vec<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub beta_star_deg: Option<Vec<f64>>,
+    /// Sphere diameters (µm) whose effective roughness `surface` measures (the centre
+    /// surface of each sphere; `effective_roughness.csv`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub diameter_um: Vec<f64>,
 }
 
 /// `[incidence]`: incident angles and the horizontal-speed law.

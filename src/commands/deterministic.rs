@@ -20,7 +20,6 @@ use crate::surface::heights_io::read_heights;
 use crate::surface::HeightField;
 use crate::tally::engine::ConditionStats;
 use crate::tally::{ConditionResult, ConditionTally, TallySpec, BLOCK_SIZE};
-use crate::wall::Deviations;
 use std::path::Path;
 
 /// The built-in case: the first wall of Sec. 3, (Δξ, Δζ) = (2.5°, 7.5°).
@@ -160,34 +159,7 @@ pub fn read_surface(path: &Path) -> Result<HeightField> {
     })
 }
 
-/// RMS of the triangle normals' angle fluctuations `(ξ − 90°, ζ − 90°)` (rad): the
-/// deviations the surface really has (Radenkovic & Simonin 2021, Sec. 2.2). Rows in
-/// parallel, summed in row order (the same bits for any thread count).
-pub fn measured_deviations(f: &HeightField) -> Deviations {
-    use rayon::prelude::*;
-    let rows: Vec<(f64, f64)> = (0..f.nz)
-        .into_par_iter()
-        .map(|iz| {
-            let (mut sx, mut sz) = (0.0, 0.0);
-            for ix in 0..f.nx {
-                for t in f.cell_normals(ix, iz) {
-                    let norm = (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]).sqrt();
-                    let xi = (t[0] / norm).clamp(-1.0, 1.0).asin();
-                    let ze = (t[2] / norm).clamp(-1.0, 1.0).asin();
-                    sx += xi * xi;
-                    sz += ze * ze;
-                }
-            }
-            (sx, sz)
-        })
-        .collect();
-    let (sx, sz) = rows.iter().fold((0.0, 0.0), |a, r| (a.0 + r.0, a.1 + r.1));
-    let n = (2 * f.nx * f.nz) as f64;
-    Deviations {
-        delta_xi: (sx / n).sqrt(),
-        delta_zeta: (sz / n).sqrt(),
-    }
-}
+pub use crate::surface::stats::measured_deviations;
 
 fn f(x: f64) -> toml::Value {
     toml::Value::Float(x)

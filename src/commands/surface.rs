@@ -13,6 +13,7 @@ use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::out_dir::{place_file, OutputDir};
 use crate::output::{fmt_num, CsvTable};
+use crate::surface::dilation::{effective_roughness, EffectiveRoughness};
 use crate::surface::figure::height_map_svg;
 use crate::surface::heights_io::write_heights;
 use crate::surface::stats::{surface_stats, HistogramSpec, RotatedStats, SurfaceStats};
@@ -57,12 +58,26 @@ pub const ANGLES_HEADER: [&str; 9] = [
 ];
 
 /// The files the command writes into `--out`.
-pub const OUTPUT_FILES: [&str; 5] = [
+pub const OUTPUT_FILES: [&str; 7] = [
     "surface_summary.csv",
     "normal_angles.csv",
     "height_map.svg",
     "normal_angle_pdfs.svg",
     "run.toml",
+    "effective_roughness.csv",
+    "effective_roughness.svg",
+];
+
+/// Columns of `effective_roughness.csv`.
+pub const EFFECTIVE_HEADER: [&str; 8] = [
+    "diameter_um",
+    "d_over_cl_x",
+    "d_over_cl_z",
+    "delta_xi_eff_deg",
+    "delta_zeta_eff_deg",
+    "delta_xi_ratio",
+    "delta_zeta_ratio",
+    "contact_fraction",
 ];
 
 /// Bins of the `ξ*`, `ζ*` histograms.
@@ -74,6 +89,16 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     let mut ctx = Context::new(&args.common, "surface", TABLE1_TOML)?;
     let spec = ctx.case.surface_spec()?;
     let betas = ctx.case.beta_star()?;
+    let diameters = ctx.case.effective_diameters(spec.length_m)?;
+    if !diameters.is_empty() {
+        let nodes = (spec.nodes as u64).saturating_mul(spec.nodes as u64);
+        crate::memory::require(
+            "stats.diameter_um",
+            format!("{} diameters", diameters.len()),
+            nodes.saturating_mul(crate::surface::dilation::BYTES_PER_NODE),
+            "the centre surface of a sphere",
+        )?;
+    }
     let target = spec.deviations();
     let heights = args
         .heights
@@ -107,6 +132,16 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
         ),
     )?;
     pdf_figure(&dir.join("normal_angle_pdfs.svg"), &target, &stats)?;
+    if !diameters.is_empty() {
+        let t1 = Instant::now();
+        let eff = effective_roughness(&field, &diameters);
+        effective_table(&spec, &stats, &eff).write(&dir.join("effective_roughness.csv"))?;
+        effective_figure(&dir.join("effective_roughness.svg"), &spec, &stats, &eff)?;
+        ctx.manifest.set_run(
+            "effective_roughness_s",
+            toml::Value::Float(round_ms(t1.elapsed().as_secs_f64())),
+        );
+    }
     if let (Some(path), Some(place)) = (&args.heights, &heights) {
         write_heights(&place.path_in(&out), &field)?;
         ctx.manifest
@@ -120,6 +155,102 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     ctx.manifest.write(&dir)?;
     out.commit()?;
     Ok(())
+}
+
+/// `D/c_L` along an axis (empty for `c_L = ∞`, 2-D roughness).
+fn d_over_cl(d: f64, c: Option<f64>) -> Option<f64> {
+    c.map(|c| d / c)
+}
+
+fn effective_table(
+    spec: &crate::case::SurfaceSpec,
+    s: &SurfaceStats,
+    eff: &[EffectiveRoughness],
+) -> CsvTable {
+    let ratio = |x: f64, base: f64| {
+        if base > 0.0 {
+            fmt_num(x / base)
+        } else {
+            String::new()
+        }
+    };
+    let mut t = CsvTable::new(&EFFECTIVE_HEADER);
+    for e in eff {
+        t.push(vec![
+            fmt_num(e.diameter_m * 1e6),
+            d_over_cl(e.diameter_m, spec.corr_length_x_m)
+                .map(fmt_num)
+                .unwrap_or_default(),
+            d_over_cl(e.diameter_m, spec.corr_length_z_m)
+                .map(fmt_num)
+                .unwrap_or_default(),
+            fmt_num(e.delta_xi.to_degrees()),
+            fmt_num(e.delta_zeta.to_degrees()),
+            ratio(e.delta_xi, s.delta_xi),
+            ratio(e.delta_zeta, s.delta_zeta),
+            fmt_num(e.contact_fraction),
+        ]);
+    }
+    t
+}
+
+/// `Δ_eff/Δ` against `D/c_L` for both axes, and the contact fraction.
+fn effective_figure(
+    path: &Path,
+    spec: &crate::case::SurfaceSpec,
+    s: &SurfaceStats,
+    eff: &[EffectiveRoughness],
+) -> Result<()> {
+    let mut series = Vec::new();
+    for (label, c, base, pick) in [
+        (
+            "Δξ_eff/Δξ against D/c_Lx",
+            spec.corr_length_x_m,
+            s.delta_xi,
+            (|e: &EffectiveRoughness| e.delta_xi) as fn(&EffectiveRoughness) -> f64,
+        ),
+        (
+            "Δζ_eff/Δζ against D/c_Lz",
+            spec.corr_length_z_m,
+            s.delta_zeta,
+            |e: &EffectiveRoughness| e.delta_zeta,
+        ),
+    ] {
+        let (Some(c), true) = (c, base > 0.0) else {
+            continue;
+        };
+        let pts: Vec<(f64, f64)> = eff
+            .iter()
+            .filter(|e| e.diameter_m > 0.0)
+            .map(|e| (e.diameter_m / c, pick(e) / base))
+            .collect();
+        series.push(Series::new(label, pts, Kind::Line));
+    }
+    let contact = Plot {
+        title: "nodes a resting sphere touches".into(),
+        x_label: "D (µm)".into(),
+        y_label: "fraction of nodes".into(),
+        series: vec![Series::new(
+            "",
+            eff.iter()
+                .filter(|e| e.diameter_m > 0.0)
+                .map(|e| (e.diameter_m * 1e6, e.contact_fraction))
+                .collect(),
+            Kind::Line,
+        )],
+        log_x: true,
+        log_y: true,
+        ..Plot::default()
+    };
+    let ratio = Plot {
+        title: "effective roughness of a sphere's centre surface".into(),
+        x_label: "D / c_L".into(),
+        y_label: "Δ_eff / Δ".into(),
+        series,
+        log_x: true,
+        ..Plot::default()
+    };
+    plot_grid_svg(path, &[ratio, contact], 2)
 }
 
 /// Refuses a grid whose generation would not fit in the available memory (Linux:

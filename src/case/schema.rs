@@ -166,9 +166,15 @@ pub struct DeterministicSection {
     /// Surface side in largest correlation lengths (`L / c_L,max`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub side_per_corr_length: Option<f64>,
-    /// RMS height of the automatically chosen surface (only ratios matter).
+    /// RMS height of the automatically chosen surface (only ratios matter, but for
+    /// `contact = "sphere"`, which needs the absolute scale).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rms_height_um: Option<f64>,
+    /// What bounces on the surface: `"centre"` (the particle centre, the paper's, default)
+    /// or `"sphere"` (a sphere of `[particles] diameter_um`: its centre on the dilated
+    /// surface).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact: Option<String>,
 }
 
 /// `[particle]` for `force-sweep`: a material preset or explicit properties.

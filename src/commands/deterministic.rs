@@ -38,6 +38,9 @@ const MAX_COLLISIONS_LIMIT: i64 = 1_000_000;
 pub struct DeterministicOptions {
     pub max_collisions: u32,
     pub scene: SceneOptions,
+    /// A sphere of this diameter (m) bounces (its centre on the dilated surface);
+    /// `None`: the particle centre bounces on the surface (the paper's).
+    pub sphere_diameter_m: Option<f64>,
 }
 
 /// Validates `[deterministic]` (keys named in one-line errors).
@@ -78,6 +81,45 @@ pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
             "a positive number",
         ));
     }
+    let sphere = match d.contact.as_deref() {
+        None | Some("centre") => false,
+        Some("sphere") => true,
+        Some(other) => {
+            return Err(Error::invalid(
+                "deterministic.contact",
+                format!("\"{other}\""),
+                "\"centre\" (the particle centre bounces) or \"sphere\" (a sphere of [particles] diameter_um)",
+            ))
+        }
+    };
+    // A sphere needs the roughness's absolute scale: the automatic surface's height from
+    // `[deterministic] rms_height_um` or the wall's `rms_height_um` (or a [surface], or a
+    // height file: then the grid is given).
+    let wall_h = case.wall.as_ref().and_then(|w| w.rms_height_um);
+    let h_um = if sphere && d.rms_height_um.is_none() {
+        match wall_h {
+            Some(h) => h,
+            None if case.surface.is_some() => h_um,
+            None => {
+                return Err(Error::Input(
+                    "[deterministic] contact = \"sphere\" needs the roughness's absolute scale: set `deterministic.rms_height_um` (or `wall.rms_height_um` with correlation lengths, or give a [surface] or --surface)".into(),
+                ))
+            }
+        }
+    } else {
+        h_um
+    };
+    let sphere_diameter_m = if sphere {
+        let p = case.particles.clone().unwrap_or_default();
+        let d_um = p.diameter_um.ok_or_else(|| {
+            Error::Input(
+                "[deterministic] contact = \"sphere\" needs `particles.diameter_um`, the sphere's diameter".into(),
+            )
+        })?;
+        Some(d_um * 1e-6)
+    } else {
+        None
+    };
     Ok(DeterministicOptions {
         max_collisions: mc as u32,
         scene: SceneOptions {
@@ -85,6 +127,7 @@ pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
             side_per_corr_length: side,
             rms_height_m: h_um * 1e-6,
         },
+        sphere_diameter_m,
     })
 }
 
@@ -346,6 +389,47 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
         (None, None) => return Err(Error::Internal("no surface plan".into())),
     };
     let gen_s = t0.elapsed().as_secs_f64();
+    // A sphere: its centre rides on the dilated surface (paraboloid, surface::dilation).
+    let mut sphere_entries = toml::Table::new();
+    let field = match p.options.sphere_diameter_m {
+        None => field,
+        Some(d) => {
+            // A 2-D surface is stored as one row (or column): that axis has no period.
+            let side = match (field.nx > 1, field.nz > 1) {
+                (true, true) => field.length_x().min(field.length_z()),
+                (true, false) => field.length_x(),
+                (false, _) => field.length_z(),
+            };
+            if d > side {
+                return Err(Error::invalid(
+                    "particles.diameter_um",
+                    crate::output::fmt_num(d * 1e6),
+                    &format!(
+                        "at most the surface side, {} µm, for contact = \"sphere\" (a wider sphere rests on its own periodic images; enlarge deterministic.side_per_corr_length)",
+                        crate::output::fmt_num(side * 1e6)
+                    ),
+                ));
+            }
+            crate::memory::require(
+                "particles.diameter_um",
+                d * 1e6,
+                (field.heights.len() as u64)
+                    .saturating_mul(crate::surface::dilation::BYTES_PER_NODE),
+                "the centre surface of the sphere",
+            )?;
+            let t = std::time::Instant::now();
+            let dil = crate::surface::dilation::dilate_paraboloid(&field, 0.5 * d);
+            sphere_entries.insert("contact".into(), "sphere".into());
+            sphere_entries.insert("diameter_um".into(), f(d * 1e6));
+            sphere_entries.insert(
+                "approximation".into(),
+                "paraboloid cap (sqrt(R^2 - r^2) - R ~ -r^2/2R), Felzenszwalb-Huttenlocher lower envelopes".into(),
+            );
+            sphere_entries.insert("contact_fraction".into(), f(round(dil.contact_fraction, 6)));
+            sphere_entries.insert("dilation_s".into(), f(round(t.elapsed().as_secs_f64(), 3)));
+            dil.field
+        }
+    };
     let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| {
         Error::Input(match &args.surface {
             Some(path) => format!("--surface `{}`: {e}", path.display()),
@@ -364,6 +448,11 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
             plan.shard.is_none_or(|s| s.index == 1),
         ),
     );
+    if !sphere_entries.is_empty() {
+        // `surface_choice` measured the surface the centre rides on: the dilated one.
+        p.notes
+            .insert("sphere_contact".into(), toml::Value::Table(sphere_entries));
+    }
     // The surface is valid: lock and stage the output directory (a shard's own directory for
     // a shard run), then compute.
     let out = OutputDir::begin(&target, "--out")?;

@@ -1,7 +1,8 @@
 //! The rough-wall model benchmark's section of `REPORT.md`: every stochastic variant
 //! against `deterministic` on every Sec. 3 and Sec. 4 scene (`scripts/wall-models.sh`).
-//! Writes `wall-models/wall_models.csv`; every number is read from the runs' `compare`
-//! outputs and manifests.
+//! Writes `wall-models/wall_models.csv` (byte-identical between runs: the cost per rebound,
+//! a timing, is only in `REPORT.md`); every number is read from the runs' `compare` outputs
+//! and manifests.
 
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
@@ -100,7 +101,6 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
         "max_abs_z_dbeta",
         "max_ks_alpha_out_steep",
         "max_abs_bias_mean_alpha_out_steep_deg",
-        "ns_per_rebound",
     ]);
     let mut all: Vec<(&str, VariantKind, Score)> = Vec::new();
     for scene in SCENES {
@@ -117,9 +117,6 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
                     fmt_num(s.z_dbeta),
                     fmt_num(s.ks_alpha_25),
                     fmt_num(s.bias_alpha_25),
-                    s.ns_per_rebound
-                        .map(|x| fmt_num(x.round()))
-                        .unwrap_or_default(),
                 ]);
                 all.push((scene, v, s));
             }

@@ -409,6 +409,48 @@ mod tests {
         assert!(errs[2] < 1e-9, "{errs:?}");
     }
 
+    /// The paraboloid against the exact sphere on a Table 1-like surface (h = 0.37 µm,
+    /// c_L = 12 × 4 µm, δ = 1 µm): the largest height error over the grid relative to the
+    /// rms height, and the effective deviations of both.
+    #[test]
+    fn paraboloid_error_on_a_generated_surface() {
+        let spec = crate::case::SurfaceSpec {
+            length_m: 128e-6,
+            nodes: 128,
+            rms_height_m: 0.37e-6,
+            corr_length_x_m: Some(12e-6),
+            corr_length_z_m: Some(4e-6),
+        };
+        let f = crate::surface::generate(&spec, 1);
+        for (d, bound, dev_bound) in [
+            (5e-6, 0.05, 0.002),
+            (50e-6, 0.15, 0.01),
+            (500e-6, 0.02, 0.002),
+        ] {
+            let t = std::time::Instant::now();
+            let p = dilate_paraboloid(&f, 0.5 * d);
+            let tp = t.elapsed().as_secs_f64();
+            let e = dilate_sphere_exact(&f, 0.5 * d);
+            let te = t.elapsed().as_secs_f64() - tp;
+            let err = p
+                .field
+                .heights
+                .iter()
+                .zip(&e.field.heights)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max)
+                / spec.rms_height_m;
+            let mp = super::super::stats::measured_deviations(&p.field);
+            let me = super::super::stats::measured_deviations(&e.field);
+            let dev = (mp.delta_zeta / me.delta_zeta - 1.0).abs();
+            eprintln!(
+                "D = {d}: max error {err} h, Δζ_eff relative {dev}, {tp:.4} s vs exact {te:.4} s"
+            );
+            assert!(err < bound, "D = {d}: max error {err} h");
+            assert!(dev < dev_bound, "D = {d}: Δζ_eff differs by {dev}");
+        }
+    }
+
     #[test]
     fn a_flat_wall_stays_flat_and_a_ridge_keeps_its_height() {
         let mut f = field(16, 16, 0);

@@ -1,0 +1,141 @@
+//! A finite sphere bouncing in `deterministic` (issue "the particle as a sphere", item 1):
+//! `[deterministic] contact = "sphere"` puts the centre on the dilated surface. The hard
+//! cases: D → 0 is the centre contact byte for byte, a sphere needs the absolute scale and
+//! its diameter, D beyond the surface side is refused, 2-D roughness stays 2-D, grazing
+//! incidence runs, and larger spheres see a smoother wall.
+
+mod common;
+use common::*;
+use std::path::Path;
+
+fn case(d_um: &str, extra: &str) -> String {
+    format!(
+        r#"name = "sphere"
+seed = 5
+[wall]
+delta_xi_deg = 3.8
+delta_zeta_deg = 7.5
+[incidence]
+alpha_deg = [-5.0, -25.0]
+beta_deg = [0.0, 60.0]
+speed_mean_m_s = 5.91
+[particles]
+count = 4000
+diameter_um = {d_um}
+[collision]
+model = "sommerfeld-huber"
+preset = "glass-steel"
+[deterministic]
+rms_height_um = 0.37
+side_per_corr_length = 40.0
+{extra}
+"#
+    )
+}
+
+fn run(dir: &Path, name: &str, body: &str) -> std::path::PathBuf {
+    let c = write_case(dir, &format!("{name}.toml"), body);
+    let out = dir.join(name);
+    rebound(&[
+        "deterministic",
+        "--case",
+        c.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .ok();
+    out
+}
+
+#[test]
+fn a_vanishing_sphere_is_the_centre_contact_byte_for_byte() {
+    let tmp = tempfile::tempdir().unwrap();
+    let centre = run(tmp.path(), "centre", &case("0.001", ""));
+    let sphere = run(tmp.path(), "tiny", &case("0.001", "contact = \"sphere\""));
+    assert_eq!(csv_files(&centre), csv_files(&sphere));
+    let m = std::fs::read_to_string(sphere.join("run.toml")).unwrap();
+    assert!(
+        m.contains("[sphere_contact]") && m.contains("contact_fraction = 1.0"),
+        "{m}"
+    );
+}
+
+#[test]
+fn larger_spheres_see_a_smoother_wall() {
+    let tmp = tempfile::tempdir().unwrap();
+    let mut last_std = f64::INFINITY;
+    let mut last_dev = f64::INFINITY;
+    for d in ["0.001", "50", "250"] {
+        let out = run(
+            tmp.path(),
+            &format!("d{d}"),
+            &case(d, "contact = \"sphere\""),
+        );
+        let s = Csv::read(&out.join("summary.csv"));
+        let row = s
+            .rows
+            .iter()
+            .find(|r| s.num(r, "alpha_in_deg") == -25.0 && s.num(r, "beta_in_deg") == 0.0)
+            .unwrap();
+        let std = s.num(row, "std_alpha_out_deg");
+        assert!(std < last_std, "D = {d}: std α⁺ {std} after {last_std}");
+        last_std = std;
+        let m: toml::Table =
+            toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
+        let dz = m["surface_choice"]["measured_delta_zeta_deg"]
+            .as_float()
+            .unwrap();
+        assert!(dz < last_dev, "D = {d}: Δζ of the centre surface {dz}");
+        last_dev = dz;
+        assert_eq!(s.num(row, "lost"), 0.0);
+    }
+}
+
+#[test]
+fn two_dimensional_roughness_stays_two_dimensional_and_grazing_runs() {
+    let tmp = tempfile::tempdir().unwrap();
+    let body = case("100", "contact = \"sphere\"")
+        .replace("delta_zeta_deg = 7.5", "delta_zeta_deg = 0.0")
+        .replace("alpha_deg = [-5.0, -25.0]", "alpha_deg = [-0.5, -25.0]")
+        .replace("beta_deg = [0.0, 60.0]", "beta_deg = [0.0]");
+    let out = run(tmp.path(), "twod", &body);
+    let s = Csv::read(&out.join("summary.csv"));
+    for row in &s.rows {
+        // In the plane of the 2-D roughness nothing deviates sideways.
+        assert!(s.num(row, "std_dbeta_deg") < 1e-6, "{row:?}");
+        assert_eq!(s.num(row, "lost"), 0.0);
+        assert!(s.num(row, "particles") > 0.0);
+    }
+}
+
+#[test]
+fn a_sphere_needs_its_scale_and_size_and_must_fit() {
+    let tmp = tempfile::tempdir().unwrap();
+    for (body, needle) in [
+        (
+            case("100", "contact = \"sphere\"").replace("rms_height_um = 0.37", ""),
+            "deterministic.rms_height_um",
+        ),
+        (
+            case("100", "contact = \"sphere\"").replace("diameter_um = 100\n", ""),
+            "particles.diameter_um",
+        ),
+        (
+            case("5000", "contact = \"sphere\""),
+            "at most the surface side",
+        ),
+        (case("100", "contact = \"ball\""), "deterministic.contact"),
+    ] {
+        let c = write_case(tmp.path(), "bad.toml", &body);
+        let out = tmp.path().join("never");
+        rebound(&[
+            "deterministic",
+            "--case",
+            c.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .refused(needle);
+        assert!(!out.exists());
+    }
+}

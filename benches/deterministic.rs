@@ -42,6 +42,7 @@ fn one_block_eroding(t: &Tracker<'_>, n: u64, erosion: Option<ErosionSetup>) -> 
         wall,
         psi: 2.0,
         erosion,
+        spin: Default::default(),
     };
     let cond = IncidentCondition::from_degrees(-12.5, 0.0);
     let mut block = BlockTally::new(&tally_spec(&wall, cond, 1.0, erosion.as_ref()), 0);

@@ -247,6 +247,7 @@ fn tallied_block_with(
         speed: s.speed,
         erosion,
         variant,
+        spin: Default::default(),
     };
     let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
     let mut block = BlockTally::new(&tally_spec(&s.wall, cond, 1.0, erosion.as_ref()), 0);

@@ -194,6 +194,7 @@ fn documented(kind: Kind) -> Vec<(&'static str, &'static str, Value)> {
             ("particles", "diameter_um", f(500.0)),
             ("particles", "density_kg_m3", f(2500.0)),
             ("incidence", "speed_reference", s("magnitude")),
+            ("incidence", "spin_rad_s", l(&[0.0, 0.0, 100.0])),
             ("erosion", "model", s("finnie")),
             ("erosion", "flow_stress_pa", f(1e9)),
             ("erosion", "psi", f(2.0)),

@@ -82,6 +82,8 @@ pub struct Scene {
     pub density_kg_m3: f64,
     /// The stochastic model's rough-wall variant (`[stochastic] model`).
     pub variant: crate::stochastic::Variant,
+    /// Incident spin (`[incidence] spin_rad_s`, `spin_std_rad_s`).
+    pub spin: crate::incidence::SpinLaw,
 }
 
 impl Scene {
@@ -652,6 +654,7 @@ impl Case {
             psi,
             erosion: self.erosion_model()?,
             variant: self.variant()?,
+            spin: spin_law(inc)?,
             density_kg_m3: within(
                 "particles.density_kg_m3",
                 p.density_kg_m3.unwrap_or(2500.0),
@@ -806,6 +809,37 @@ impl Case {
             )),
         }
     }
+}
+
+/// Largest incident spin component (rad/s): beyond, the contact point would move faster than
+/// the hypervelocity bound of the speeds for any particle above a micrometre.
+pub const MAX_SPIN_RAD_S: f64 = 1e7;
+
+/// `[incidence] spin_rad_s`, `spin_std_rad_s`: three components each, finite, within
+/// `±MAX_SPIN_RAD_S` (standard deviations `≥ 0`).
+fn spin_law(inc: &IncidenceSection) -> Result<crate::incidence::SpinLaw> {
+    let three = |key: &str, v: &Option<Vec<f64>>, std: bool| -> Result<[f64; 3]> {
+        let Some(v) = v else {
+            return Ok([0.0; 3]);
+        };
+        if v.len() != 3 {
+            return Err(Error::invalid(
+                key,
+                format!("a list of {} values", v.len()),
+                "three components [x, y, z] in rad/s (wall frame, y the wall normal)",
+            ));
+        }
+        let lo = if std { 0.0 } else { -MAX_SPIN_RAD_S };
+        let mut out = [0.0; 3];
+        for (o, &x) in out.iter_mut().zip(v) {
+            *o = within(key, x, lo, MAX_SPIN_RAD_S, " rad/s", "an angular velocity")?;
+        }
+        Ok(out)
+    };
+    Ok(crate::incidence::SpinLaw {
+        mean_rad_s: three("incidence.spin_rad_s", &inc.spin_rad_s, false)?,
+        std_rad_s: three("incidence.spin_std_rad_s", &inc.spin_std_rad_s, true)?,
+    })
 }
 
 impl Values {

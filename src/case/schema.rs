@@ -91,6 +91,12 @@ pub struct IncidenceSection {
     /// convention) or `"magnitude"` (it is `|U|`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub speed_reference: Option<String>,
+    /// Incident angular velocity (rad/s, wall frame `[x, y, z]`): mean and standard
+    /// deviation of each component; zero by default.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spin_rad_s: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spin_std_rad_s: Option<Vec<f64>>,
 }
 
 /// `[particles]`: how many histories per condition (or a target standard error), and

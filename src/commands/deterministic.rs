@@ -318,6 +318,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
         law: scene.law,
         diameter_m: scene.diameter_m,
         speed: scene.speed,
+        spin: scene.spin,
         erosion: scene.erosion.map(|model| ErosionSetup {
             model,
             particle_mass_kg: scene.particle_mass_kg(),

@@ -99,6 +99,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides) -> Result<Prepared> {
         psi: scene.psi,
         diameter_m: scene.diameter_m,
         speed: scene.speed,
+        spin: scene.spin,
         variant: scene.variant,
         erosion: scene.erosion.map(|model| ErosionSetup {
             model,

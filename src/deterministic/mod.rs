@@ -11,14 +11,13 @@ use crate::angles::{
 };
 use crate::collision::CollisionLaw;
 use crate::erosion::ErosionSetup;
-use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw};
+use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw, SpinLaw};
 use crate::rng;
 use crate::tally::{
     Bin, BlockTally, ConditionResult, ConditionTally, ErosionOutcome, ModelKind, Outcome, Quantity,
     TallySpec, BLOCK_SIZE,
 };
 use crate::wall::Deviations;
-use nalgebra::Vector3;
 use rand::Rng;
 use rayon::prelude::*;
 
@@ -36,6 +35,8 @@ pub struct ModelSetup {
     pub psi: f64,
     /// The erosion law, when the case tallies erosion.
     pub erosion: Option<ErosionSetup>,
+    /// Incident spin (default zero).
+    pub spin: SpinLaw,
 }
 
 /// History `i` of condition `cond` (index `cond_index` in the case): its start `(x, z)`
@@ -85,8 +86,9 @@ fn history_observed(
     let z = r.gen::<f64>() * lz;
     let u_h = draw_speed(&setup.speed, &mut r);
     let u = setup.speed.velocity(cond.alpha_in, cond.beta_in, u_h);
+    let w = setup.spin.draw(&mut r);
     let collide = |u, w, n| setup.law.collide(u, w, n, setup.diameter_m);
-    tracker.trace_observed(x, z, u, Vector3::zeros(), collide, observe)
+    tracker.trace_observed(x, z, u, w, collide, observe)
 }
 
 /// The tallied record of a followed history (`None` for a lost one).

@@ -7,7 +7,7 @@ use super::variants::Variant;
 use crate::angles::{alpha_xy_of_velocity, incident_angles, wrap_pi};
 use crate::collision::CollisionLaw;
 use crate::erosion::ErosionSetup;
-use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw};
+use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw, SpinLaw};
 use crate::rng;
 use crate::tally::{Bin, BlockTally, ErosionOutcome, ModelKind, Outcome, Pdf, Quantity, TallySpec};
 use crate::wall::{rotated_moments, Deviations};
@@ -25,6 +25,8 @@ pub struct ModelSetup {
     pub erosion: Option<ErosionSetup>,
     /// The rough-wall model (`[stochastic] model`; default Radenkovic & Simonin 2021).
     pub variant: Variant,
+    /// Incident spin (default zero).
+    pub spin: SpinLaw,
 }
 
 /// The tallied record of one stochastic rebound (radians; `β⁻ = beta_in`).
@@ -98,10 +100,11 @@ fn rebound_observed(
 ) -> (Vector3<f64>, Rebound) {
     let mut r = prefix.stream(i);
     let u = per_unit * draw_speed(&setup.speed, &mut r);
+    let w = setup.spin.draw(&mut r);
     let reb = rebound_from_observed(
         inc,
         u,
-        Vector3::zeros(),
+        w,
         &setup.wall,
         &setup.law,
         setup.psi,

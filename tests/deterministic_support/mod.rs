@@ -162,6 +162,7 @@ pub fn run(
         wall: *dv,
         psi: 2.0,
         erosion: None,
+        spin: Default::default(),
     };
     run_condition(
         tracker,

@@ -66,6 +66,7 @@ impl WallModel {
                 psi: p.psi,
                 model: p.model.clone(),
                 delta_gamma_deg: p.delta_gamma_deg,
+                effective_for_diameter: None,
             }),
             ..Default::default()
         };

@@ -728,7 +728,7 @@ fn edges(path: &[String]) -> Vec<f64> {
         ("deterministic", "max_collisions") => &[1.0, 1000000.0, 1000001.0],
         ("deterministic", "spacing_per_corr_length") => &[1.0, 64.0, 64.000001],
         ("deterministic", "side_per_corr_length") => &[1.0, 10000.0, 10000.000001],
-        ("deterministic", "rms_height_um") => &[1e-300, 1e300],
+        ("deterministic", "rms_height_um") => &[1e-300, 1e300, 1e-6, 1e6, 1.000001e6],
         ("stats", "beta_star_deg") => &[180.0, -180.0, 180.000001],
         ("particle", "poisson") => &[0.5, 0.500001, -0.999999, -1.0],
         ("particle", "density_kg_m3" | "youngs_pa" | "diameter_um") => &[1e-9, 1e300],

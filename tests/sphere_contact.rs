@@ -139,3 +139,73 @@ fn a_sphere_needs_its_scale_and_size_and_must_fit() {
         assert!(!out.exists());
     }
 }
+
+#[test]
+fn the_stochastic_model_takes_the_deviations_a_sphere_sees() {
+    let tmp = tempfile::tempdir().unwrap();
+    let body = case(
+        "250",
+        "contact = \"sphere\"\n[stochastic]\neffective_for_diameter = true",
+    );
+    let c = write_case(tmp.path(), "eff.toml", &body);
+    let out = tmp.path().join("eff");
+    rebound(&[
+        "stochastic",
+        "--case",
+        c.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .ok();
+    let m: toml::Table =
+        toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
+    let e = m["effective_for_diameter"].as_table().unwrap();
+    let eff = e["effective_delta_zeta_deg"].as_float().unwrap();
+    let surf = e["surface_delta_zeta_deg"].as_float().unwrap();
+    assert!(eff < 0.5 * surf, "{eff} vs {surf}");
+    // The summary is labelled with the deviations used.
+    let s = Csv::read(&out.join("summary.csv"));
+    let used = s.num(&s.rows[0], "delta_zeta_deg");
+    assert!((used - eff).abs() < 1e-3, "{used} vs {eff}");
+    // ... and it matches the deterministic sphere on the same surface.
+    let det = run(tmp.path(), "det", &body);
+    let cmp = tmp.path().join("cmp");
+    rebound(&[
+        "compare",
+        "--a",
+        det.to_str().unwrap(),
+        "--b",
+        out.to_str().unwrap(),
+        "--out",
+        cmp.to_str().unwrap(),
+    ])
+    .ok();
+    let k = Csv::read(&cmp.join("comparison.csv"));
+    for r in k
+        .rows
+        .iter()
+        .filter(|r| k.cell(r, "quantity") == "alpha_out")
+    {
+        // 4000 particles each: KS noise ≈ 0.03 at 0.1 %.
+        assert!(k.num(r, "ks") < 0.06, "{r:?}");
+    }
+    for (extra, needle) in [
+        (
+            "[stochastic]\neffective_for_diameter = true".to_string(),
+            "deterministic.rms_height_um",
+        ),
+        (
+            "contact = \"sphere\"\n[stochastic]\neffective_for_diameter = true".to_string(),
+            "particles.diameter_um",
+        ),
+    ] {
+        let mut b = case("250", &extra);
+        if needle == "deterministic.rms_height_um" {
+            b = b.replace("rms_height_um = 0.37", "");
+        } else {
+            b = b.replace("diameter_um = 250\n", "");
+        }
+        let c = write_case(tmp.path(), "bad.toml", &b);
+        rebound(&["stochastic", "--case", c.to_str().unwrap()]).refused(needle);
+    }
+}

@@ -158,6 +158,10 @@ pub struct StochasticSection {
     /// The isotropic variants' roughness angle Δγ (degrees); default `(Δξ + Δζ)/2`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub delta_gamma_deg: Option<f64>,
+    /// Run with the deviations a sphere of `[particles] diameter_um` sees: those of its
+    /// centre surface on the surface `deterministic` would generate (same seed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub effective_for_diameter: Option<bool>,
 }
 
 /// `[deterministic]`: tracker limits and the automatic surface choice.

@@ -74,11 +74,13 @@ pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
         ));
     }
     let h_um = d.rms_height_um.unwrap_or(def.rms_height_m * 1e6);
-    if !(h_um > 0.0 && h_um.is_finite()) {
+    // A picometre to a metre: the scale of a sphere's contact (and far from overflow in
+    // the squared heights of the statistics).
+    if !(1e-6..=1e6).contains(&h_um) {
         return Err(Error::invalid(
             "deterministic.rms_height_um",
             h_um,
-            "a positive number",
+            "1e-6 to 1000000 µm (a picometre to a metre)",
         ));
     }
     let sphere = match d.contact.as_deref() {

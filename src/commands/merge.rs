@@ -39,7 +39,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         let (_, o) = overrides_of(id)?;
         match id.command.as_str() {
             "stochastic" => {
-                let p = stochastic::prepare(&ctx.case, &o)?;
+                let p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
                 Ok((p.specs, p.scene.count as u64))
             }
             "deterministic" => {
@@ -73,7 +73,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     let seconds: f64 = merged.seconds.iter().sum();
     match id.command.as_str() {
         "stochastic" => {
-            let mut p = stochastic::prepare(&ctx.case, &o)?;
+            let mut p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
             p.notes = merged.manifest;
             stochastic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
         }

@@ -6,7 +6,7 @@ use crate::case::{warn, Case, Scene, WallSource};
 use crate::cli::StochasticArgs;
 use crate::commands::Context;
 use crate::erosion::ErosionSetup;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::output::schema::write_tables;
 use crate::output::{prepare_out_dir, Manifest, OutputDir};
 use crate::runner::{self, TallyOverrides};
@@ -14,6 +14,7 @@ use crate::stochastic::plots::write_figures;
 use crate::stochastic::simulate::{fill_block, gamma_model_curve, tally_spec, ModelSetup};
 use crate::tally::engine::ConditionStats;
 use crate::tally::{ConditionTally, TallySpec, BLOCK_SIZE};
+use crate::wall::Deviations;
 use std::path::Path;
 
 /// The built-in case: the Sec. 4 scene (glass beads, D = 500 µm, on steel with the
@@ -67,14 +68,20 @@ pub struct Prepared {
 }
 
 /// Resolves the scene, the model and what to tally (warnings on stderr).
-pub fn prepare(case: &Case, o: &TallyOverrides) -> Result<Prepared> {
+pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
     let mut scene = case.scene()?;
     // One case file drives both models: its `[deterministic]` section is checked here too.
     crate::commands::deterministic::deterministic_options(case)?;
     scene.set_count(o.particles)?;
     scene.set_target_se(o.target_se)?;
-    let wall = scene.wall.deviations();
     let mut notes = toml::Table::new();
+    let wall = match effective_wall(case, seed)? {
+        Some((dev, table)) => {
+            notes.insert("effective_for_diameter".into(), toml::Value::Table(table));
+            dev
+        }
+        None => scene.wall.deviations(),
+    };
     if let WallSource::Surface(_) = scene.wall {
         let note = format!(
             "the case gives a surface; the stochastic model uses its deviations from Eq. (15): Δξ = {:.4}°, Δζ = {:.4}°",
@@ -120,11 +127,108 @@ pub fn prepare(case: &Case, o: &TallyOverrides) -> Result<Prepared> {
     })
 }
 
+/// `[stochastic] effective_for_diameter = true`: the deviations a sphere of the case's
+/// diameter sees — those of its centre surface (paraboloid dilation, `surface::dilation`) on
+/// the surface `deterministic` generates for the case and seed — with the manifest entries.
+/// `None` without the key.
+fn effective_wall(case: &Case, seed: u64) -> Result<Option<(Deviations, toml::Table)>> {
+    let on = case
+        .stochastic
+        .as_ref()
+        .and_then(|s| s.effective_for_diameter)
+        .unwrap_or(false);
+    if !on {
+        return Ok(None);
+    }
+    let key = "stochastic.effective_for_diameter";
+    if case
+        .particles
+        .as_ref()
+        .and_then(|p| p.diameter_um)
+        .is_none()
+    {
+        return Err(Error::Input(format!(
+            "`{key}` needs `particles.diameter_um`, the sphere's diameter"
+        )));
+    }
+    let scale = case.surface.is_some()
+        || case.wall.as_ref().and_then(|w| w.rms_height_um).is_some()
+        || case
+            .deterministic
+            .as_ref()
+            .and_then(|d| d.rms_height_um)
+            .is_some();
+    if !scale {
+        return Err(Error::Input(format!(
+            "`{key}` needs the roughness's absolute scale: set `deterministic.rms_height_um` (or `wall.rms_height_um` with correlation lengths, or give a [surface])"
+        )));
+    }
+    // The surface and the sphere of `deterministic` with `contact = "sphere"`.
+    let mut sphere_case = case.clone();
+    let mut d = sphere_case.deterministic.clone().unwrap_or_default();
+    d.contact = Some("sphere".into());
+    sphere_case.deterministic = Some(d);
+    let det =
+        crate::commands::deterministic::prepare(&sphere_case, &TallyOverrides::default(), None)?;
+    let (Some(plan), Some(diameter)) = (&det.surface, det.options.sphere_diameter_m) else {
+        return Err(Error::Internal("no surface plan for the sphere".into()));
+    };
+    let field = crate::commands::deterministic::generate_surface(plan, seed)?;
+    let side = match (field.nx > 1, field.nz > 1) {
+        (true, true) => field.length_x().min(field.length_z()),
+        (true, false) => field.length_x(),
+        (false, _) => field.length_z(),
+    };
+    if diameter > side {
+        return Err(Error::invalid(
+            "particles.diameter_um",
+            crate::output::fmt_num(diameter * 1e6),
+            &format!(
+                "at most the surface side, {} µm, for `{key}` (enlarge deterministic.side_per_corr_length)",
+                crate::output::fmt_num(side * 1e6)
+            ),
+        ));
+    }
+    crate::memory::require(
+        "particles.diameter_um",
+        diameter * 1e6,
+        (field.heights.len() as u64).saturating_mul(crate::surface::dilation::BYTES_PER_NODE),
+        "the centre surface of the sphere",
+    )?;
+    let nominal = crate::surface::stats::measured_deviations(&field);
+    let dil = crate::surface::dilation::dilate_paraboloid(&field, 0.5 * diameter);
+    let eff = crate::surface::stats::measured_deviations(&dil.field);
+    if !(eff.delta_xi.is_finite() && eff.delta_zeta.is_finite()) {
+        return Err(Error::Model(format!(
+            "`{key}`: the deviations of the sphere's centre surface are not finite numbers"
+        )));
+    }
+    let mut t = toml::Table::new();
+    let deg = |r: f64| toml::Value::Float((r.to_degrees() * 1e4).round() / 1e4);
+    t.insert(
+        "diameter_um".into(),
+        toml::Value::Float((diameter * 1e15).round() / 1e9),
+    );
+    t.insert("surface_delta_xi_deg".into(), deg(nominal.delta_xi));
+    t.insert("surface_delta_zeta_deg".into(), deg(nominal.delta_zeta));
+    t.insert("effective_delta_xi_deg".into(), deg(eff.delta_xi));
+    t.insert("effective_delta_zeta_deg".into(), deg(eff.delta_zeta));
+    t.insert(
+        "contact_fraction".into(),
+        toml::Value::Float((dil.contact_fraction * 1e6).round() / 1e6),
+    );
+    t.insert(
+        "how".into(),
+        "deviations of the sphere's centre surface (paraboloid dilation) on the surface deterministic generates for this case and seed".into(),
+    );
+    Ok(Some((eff, t)))
+}
+
 /// Runs the subcommand.
 pub fn run(args: &StochasticArgs) -> Result<()> {
     let ctx = Context::new(&args.common, "stochastic", DEFAULT_CASE)?;
     let o = args.tally.overrides();
-    let p = prepare(&ctx.case, &o)?;
+    let p = prepare(&ctx.case, &o, ctx.seed)?;
     let plan = runner::plan(
         p.specs.clone(),
         p.scene.count as u64,

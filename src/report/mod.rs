@@ -5,6 +5,7 @@
 //! Every number in the report is read from a file in `results/`; a missing run is said so.
 
 pub mod erosion;
+pub mod finite_size;
 pub mod paper;
 pub mod sections;
 pub mod wall_models;
@@ -31,6 +32,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     sections::hu(results, &mut md)?;
     wall_models::wall_models(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
+    finite_size::finite_size(results, &mut md)?;
     sections::speed_vs_error(results, &mut md)?;
     write_atomic(&results.join("REPORT.md"), md.as_bytes())
 }

@@ -1,0 +1,147 @@
+//! The finite-size section of `REPORT.md` (issue "the particle as a sphere"): for each
+//! diameter of `scripts/finite-size.sh`, the roughness the sphere sees and how well the
+//! stochastic model with those deviations (and with the nominal ones) matches the
+//! deterministic sphere. Writes `finite-size/finite_size.csv`.
+
+use crate::error::Result;
+use crate::output::csv::{num, run_toml, Rows};
+use crate::output::{fmt_num, CsvTable};
+use std::fmt::Write;
+use std::path::Path;
+
+const DIAMETERS: [u32; 4] = [50, 100, 250, 500];
+
+/// Largest KS of `alpha_out` and `dbeta` and largest |bias| of mean α⁺ in a comparison.
+fn worst(dir: &Path) -> Result<Option<(f64, f64, f64)>> {
+    let Some(c) = Rows::read(&dir.join("comparison.csv"))? else {
+        return Ok(None);
+    };
+    let (mut ka, mut kd, mut ba) = (0.0f64, 0.0f64, 0.0f64);
+    for r in &c.rows {
+        let Some(ks) = num(r, "ks") else { continue };
+        match r.get("quantity").map(String::as_str) {
+            Some("alpha_out") => {
+                ka = ka.max(ks);
+                if let (Some(a), Some(b)) = (num(r, "mean_a"), num(r, "mean_b")) {
+                    ba = ba.max((b - a).abs());
+                }
+            }
+            Some("dbeta") => kd = kd.max(ks),
+            _ => {}
+        }
+    }
+    Ok(Some((ka, kd, ba)))
+}
+
+pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
+    md.push_str("## Finite spheres: the roughness a particle sees (beyond the papers)\n\n");
+    let dir = results.join("finite-size");
+    let mut table = CsvTable::new(&[
+        "diameter_um",
+        "surface_delta_xi_deg",
+        "surface_delta_zeta_deg",
+        "effective_delta_xi_deg",
+        "effective_delta_zeta_deg",
+        "contact_fraction",
+        "max_ks_alpha_out_effective",
+        "max_ks_dbeta_effective",
+        "max_abs_bias_alpha_out_effective_deg",
+        "max_ks_alpha_out_nominal",
+        "max_ks_dbeta_nominal",
+        "max_abs_bias_alpha_out_nominal_deg",
+    ]);
+    let mut rows = Vec::new();
+    for d in DIAMETERS {
+        let run = dir.join(format!("d{d}"));
+        let Some(t) = run_toml(&run.join("stochastic-effective")) else {
+            continue;
+        };
+        let Some(e) = t.get("effective_for_diameter").and_then(|e| e.as_table()) else {
+            continue;
+        };
+        let g = |k: &str| e.get(k).and_then(|v| v.as_float()).unwrap_or(f64::NAN);
+        let v = [
+            g("surface_delta_xi_deg"),
+            g("surface_delta_zeta_deg"),
+            g("effective_delta_xi_deg"),
+            g("effective_delta_zeta_deg"),
+            g("contact_fraction"),
+        ];
+        let eff = worst(&run.join("compare-effective"))?;
+        let nom = worst(&run.join("compare-nominal"))?;
+        let (Some(eff), Some(nom)) = (eff, nom) else {
+            continue;
+        };
+        table.push(vec![
+            d.to_string(),
+            fmt_num(v[0]),
+            fmt_num(v[1]),
+            fmt_num(v[2]),
+            fmt_num(v[3]),
+            fmt_num(v[4]),
+            fmt_num(eff.0),
+            fmt_num(eff.1),
+            fmt_num(eff.2),
+            fmt_num(nom.0),
+            fmt_num(nom.1),
+            fmt_num(nom.2),
+        ]);
+        rows.push((d, v, eff, nom));
+    }
+    if rows.is_empty() {
+        let _ = writeln!(
+            md,
+            "*Not run: `{}` is missing (`scripts/finite-size.sh`).*\n",
+            dir.display()
+        );
+        return Ok(());
+    }
+    table.write(&dir.join("finite_size.csv"))?;
+    md.push_str(
+        "Radenkovic & Simonin 2021 bounce the particle centre on the surface; their Sec. 5 asks how \
+         particle size and roughness combine. Here glass spheres of diameter D hit the Sec. 4 steel \
+         wall (Δξ = 3.8°, Δζ = 7.5°, h = 0.37 µm, Sommerfeld–Huber) with their centre on the \
+         surface dilated by the sphere (`deterministic`, `contact = \"sphere\"`), and the stochastic \
+         model runs with the deviations of that centre surface (`effective_for_diameter`) or with \
+         the wall's nominal ones. Per D: the measured deviations of the surface and of the centre \
+         surface, the fraction of nodes a resting sphere touches, and the largest KS over the 8 \
+         conditions of α⁺ and β⁺ − β⁻ and the largest |bias| of mean α⁺, stochastic against the \
+         deterministic sphere (`scripts/finite-size.sh`, table `finite-size/finite_size.csv`).\n\n\
+         | D (µm) | surface Δξ, Δζ (°) | centre surface Δξ, Δζ (°) | contact fraction | SM effective: max KS α⁺ / β⁺−β⁻, max \\|bias\\| α⁺ (°) | SM nominal: max KS α⁺ / β⁺−β⁻, max \\|bias\\| α⁺ (°) |\n\
+         |---|---|---|---|---|---|\n",
+    );
+    for (d, v, eff, nom) in &rows {
+        let _ = writeln!(
+            md,
+            "| {d} | {:.2}, {:.2} | {:.2}, {:.2} | {:.4} | {:.4} / {:.4}, {:.3} | {:.4} / {:.4}, {:.3} |",
+            v[0],
+            v[1],
+            v[2],
+            v[3],
+            v[4],
+            eff.0,
+            eff.1,
+            eff.2,
+            nom.0,
+            nom.1,
+            nom.2,
+        );
+    }
+    let worst_eff = rows.iter().map(|r| r.2 .0.max(r.2 .1)).fold(0.0, f64::max);
+    let best_nom = rows
+        .iter()
+        .map(|r| r.3 .0.max(r.3 .1))
+        .fold(f64::INFINITY, f64::min);
+    let _ = writeln!(
+        md,
+        "\nIn words: the larger the sphere, the smoother and the less anisotropic the wall it sees \
+         (the centre surface's deviations above). The stochastic model given those deviations \
+         follows the deterministic sphere with a largest KS of {worst_eff:.3} over all diameters \
+         and conditions — the same agreement as for the particle centre; given the wall's nominal \
+         deviations it is off by a KS of at least {best_nom:.3}. Contacts of a large sphere are \
+         on asperity tops (a few per cent of the nodes), whose slopes are not the Gaussian of the \
+         whole surface; at these sizes the measured distances do not show it beyond the model's \
+         own error.\n"
+    );
+    Ok(())
+}

@@ -8,6 +8,7 @@ pub mod erosion;
 pub mod finite_size;
 pub mod paper;
 pub mod sections;
+pub mod spin;
 pub mod wall_models;
 
 use crate::error::Result;
@@ -33,6 +34,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     wall_models::wall_models(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
     finite_size::finite_size(results, &mut md)?;
+    spin::spin(results, &mut md)?;
     sections::speed_vs_error(results, &mut md)?;
     write_atomic(&results.join("REPORT.md"), md.as_bytes())
 }

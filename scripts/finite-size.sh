@@ -26,4 +26,21 @@ for d in 50 100 250 500; do
   run compare --a "$F/d$d/deterministic" --b "$F/d$d/stochastic-nominal" --out "$F/d$d/compare-nominal"
   stage_end
 done
+# The effective-roughness curve over three decades of D on a Table 1-like surface.
+stage_start "Effective roughness law"
+if [ "$QUICK" = 1 ]; then NODES=512; LEN=512.0; DS="5.0, 50.0, 500.0"; else NODES=2048; LEN=2048.0; DS="1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0"; fi
+cat > "$F/cases/law.toml" <<TOML
+name = "effective-roughness-law"
+seed = 1
+[surface]
+length_um = $LEN
+nodes = $NODES
+rms_height_um = 0.37
+corr_length_x_um = 12.0
+corr_length_z_um = 4.0
+[stats]
+diameter_um = [$DS]
+TOML
+run surface --case "$F/cases/law.toml" --out "$F/law"
+stage_end
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "finite size"

@@ -69,7 +69,9 @@ pub const OUTPUT_FILES: [&str; 7] = [
 ];
 
 /// Columns of `effective_roughness.csv`.
-pub const EFFECTIVE_HEADER: [&str; 8] = [
+/// The last three: the large-sphere asymptote `√(h/D)` (rad, shown in degrees; `h` the
+/// measured rms height) and each effective deviation over it.
+pub const EFFECTIVE_HEADER: [&str; 11] = [
     "diameter_um",
     "d_over_cl_x",
     "d_over_cl_z",
@@ -78,7 +80,22 @@ pub const EFFECTIVE_HEADER: [&str; 8] = [
     "delta_xi_ratio",
     "delta_zeta_ratio",
     "contact_fraction",
+    "sqrt_h_over_d_deg",
+    "delta_xi_eff_over_sqrt_h_over_d",
+    "delta_zeta_eff_over_sqrt_h_over_d",
 ];
+
+/// The large-sphere law `Δ_eff ≈ √(h/D)` (rad): a sphere much larger than `h/Δ²` rests on
+/// asperity tops, and its centre surface is made of caps whose slopes scale as `√(h/R)`,
+/// whatever the correlation lengths. Measured, not assumed: `effective_roughness.csv` gives
+/// the ratio of each effective deviation to it.
+pub fn large_sphere_deviation(rms_height_m: f64, diameter_m: f64) -> f64 {
+    if diameter_m > 0.0 {
+        (rms_height_m / diameter_m).sqrt()
+    } else {
+        f64::INFINITY
+    }
+}
 
 /// Bins of the `ξ*`, `ζ*` histograms.
 const HIST_BINS: usize = 100;
@@ -176,6 +193,7 @@ fn effective_table(
     };
     let mut t = CsvTable::new(&EFFECTIVE_HEADER);
     for e in eff {
+        let a = large_sphere_deviation(s.rms_height_m, e.diameter_m);
         t.push(vec![
             fmt_num(e.diameter_m * 1e6),
             d_over_cl(e.diameter_m, spec.corr_length_x_m)
@@ -189,6 +207,9 @@ fn effective_table(
             ratio(e.delta_xi, s.delta_xi),
             ratio(e.delta_zeta, s.delta_zeta),
             fmt_num(e.contact_fraction),
+            fmt_num(a.to_degrees()),
+            ratio(e.delta_xi, a),
+            ratio(e.delta_zeta, a),
         ]);
     }
     t

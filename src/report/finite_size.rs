@@ -143,7 +143,93 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
          whole surface; at these sizes the measured distances do not show it beyond the model's \
          own error.\n"
     );
+    grid(&dir, md)?;
     law(&dir.join("law"), md)?;
+    Ok(())
+}
+
+/// Grid convergence of the sphere's centre surface: D = 100 µm at 4, 8 and 16 nodes per
+/// smallest correlation length.
+fn grid(dir: &Path, md: &mut String) -> Result<()> {
+    let mut rows = Vec::new();
+    for spc in [4, 8, 16] {
+        let run = dir.join(format!("grid-s{spc}"));
+        let (Some(t), Some(s)) = (run_toml(&run), Rows::read(&run.join("summary.csv"))?) else {
+            continue;
+        };
+        let choice = t.get("surface_choice");
+        let g = |k: &str| {
+            choice
+                .and_then(|c| c.get(k))
+                .and_then(|v| v.as_float().or_else(|| v.as_integer().map(|i| i as f64)))
+                .unwrap_or(f64::NAN)
+        };
+        let pick = |a: f64, b: f64, col: &str| {
+            s.rows
+                .iter()
+                .find(|r| num(r, "alpha_in_deg") == Some(a) && num(r, "beta_in_deg") == Some(b))
+                .and_then(|r| num(r, col))
+                .unwrap_or(f64::NAN)
+        };
+        rows.push((
+            spc,
+            g("grid_nx"),
+            g("measured_delta_xi_deg"),
+            g("measured_delta_zeta_deg"),
+            [
+                (
+                    pick(-5.0, 0.0, "mean_alpha_out_deg"),
+                    pick(-5.0, 0.0, "se_mean_alpha_out_deg"),
+                ),
+                (
+                    pick(-5.0, 60.0, "mean_alpha_out_deg"),
+                    pick(-5.0, 60.0, "se_mean_alpha_out_deg"),
+                ),
+                (pick(-5.0, 60.0, "std_dbeta_deg"), f64::NAN),
+                (
+                    pick(-25.0, 60.0, "mean_alpha_out_deg"),
+                    pick(-25.0, 60.0, "se_mean_alpha_out_deg"),
+                ),
+            ],
+        ));
+    }
+    if rows.is_empty() {
+        return Ok(());
+    }
+    md.push_str(
+        "\nGrid convergence of the centre surface (D = 100 µm, side 40 c_L,max, nodes per smallest \
+         correlation length 4, 8 (the default) and 16; `finite-size/grid-s*`): its measured \
+         deviations and a few means (± standard error).\n\n\
+         | c_L/δ | nodes per side | centre Δξ, Δζ (°) | mean α⁺ (−5°, 0°) | mean α⁺ (−5°, 60°) | std β⁺−β⁻ (−5°, 60°) | mean α⁺ (−25°, 60°) |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    for (spc, n, dx, dz, m) in &rows {
+        let _ = writeln!(
+            md,
+            "| {spc} | {n} | {dx:.3}, {dz:.3} | {:.3} ± {:.3} | {:.3} ± {:.3} | {:.3} | {:.3} ± {:.3} |",
+            m[0].0, m[0].1, m[1].0, m[1].1, m[2].0, m[3].0, m[3].1
+        );
+    }
+    if let (Some(a), Some(b)) = (
+        rows.iter().find(|r| r.0 == 8),
+        rows.iter().find(|r| r.0 == 16),
+    ) {
+        let z = (0..4)
+            .filter(|&i| i != 2)
+            .map(|i| (a.4[i].0 - b.4[i].0).abs() / (a.4[i].1.powi(2) + b.4[i].1.powi(2)).sqrt())
+            .fold(0.0, f64::max);
+        let _ = writeln!(
+            md,
+            "\nFrom 8 to 16 nodes per correlation length the centre surface's deviations change by \
+             {:.1} % and {:.1} % and the means by at most {z:.1} combined standard errors. Each \
+             grid is another realisation of the random surface (side 40 c_L,max), so part of \
+             that is the realisation noise of a finite surface, not resolution; the centre \
+             surface's kinks (its slopes jump where two caps meet) are resolved well enough at the \
+             default 8 nodes per correlation length for the effective deviations (≤ 2 %).\n",
+            100.0 * (a.2 / b.2 - 1.0).abs(),
+            100.0 * (a.3 / b.3 - 1.0).abs(),
+        );
+    }
     Ok(())
 }
 

@@ -397,31 +397,9 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
     let field = match p.options.sphere_diameter_m {
         None => field,
         Some(d) => {
-            // A 2-D surface is stored as one row (or column): that axis has no period.
-            let side = match (field.nx > 1, field.nz > 1) {
-                (true, true) => field.length_x().min(field.length_z()),
-                (true, false) => field.length_x(),
-                (false, _) => field.length_z(),
-            };
-            if d > side {
-                return Err(Error::invalid(
-                    "particles.diameter_um",
-                    crate::output::fmt_num(d * 1e6),
-                    &format!(
-                        "at most the surface side, {} µm, for contact = \"sphere\" (a wider sphere rests on its own periodic images; enlarge deterministic.side_per_corr_length)",
-                        crate::output::fmt_num(side * 1e6)
-                    ),
-                ));
-            }
-            crate::memory::require(
-                "particles.diameter_um",
-                d * 1e6,
-                (field.heights.len() as u64)
-                    .saturating_mul(crate::surface::dilation::BYTES_PER_NODE),
-                "the centre surface of the sphere",
-            )?;
             let t = std::time::Instant::now();
-            let dil = crate::surface::dilation::dilate_paraboloid(&field, 0.5 * d);
+            let dil =
+                crate::surface::dilation::sphere_centre_surface(&field, d, "contact = \"sphere\"")?;
             sphere_entries.insert("contact".into(), "sphere".into());
             sphere_entries.insert("diameter_um".into(), f(d * 1e6));
             sphere_entries.insert(

@@ -174,29 +174,9 @@ fn effective_wall(case: &Case, seed: u64) -> Result<Option<(Deviations, toml::Ta
         return Err(Error::Internal("no surface plan for the sphere".into()));
     };
     let field = crate::commands::deterministic::generate_surface(plan, seed)?;
-    let side = match (field.nx > 1, field.nz > 1) {
-        (true, true) => field.length_x().min(field.length_z()),
-        (true, false) => field.length_x(),
-        (false, _) => field.length_z(),
-    };
-    if diameter > side {
-        return Err(Error::invalid(
-            "particles.diameter_um",
-            crate::output::fmt_num(diameter * 1e6),
-            &format!(
-                "at most the surface side, {} µm, for `{key}` (enlarge deterministic.side_per_corr_length)",
-                crate::output::fmt_num(side * 1e6)
-            ),
-        ));
-    }
-    crate::memory::require(
-        "particles.diameter_um",
-        diameter * 1e6,
-        (field.heights.len() as u64).saturating_mul(crate::surface::dilation::BYTES_PER_NODE),
-        "the centre surface of the sphere",
-    )?;
     let nominal = crate::surface::stats::measured_deviations(&field);
-    let dil = crate::surface::dilation::dilate_paraboloid(&field, 0.5 * diameter);
+    let dil =
+        crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
     let eff = crate::surface::stats::measured_deviations(&dil.field);
     if !(eff.delta_xi.is_finite() && eff.delta_zeta.is_finite()) {
         return Err(Error::Model(format!(

@@ -117,14 +117,7 @@ impl Incidence {
         } else {
             mean
         };
-        let (xi, zeta) = xi_zeta_rotated(gamma, gamma_star, self.sin_cos_beta);
-        SeenWall {
-            gamma,
-            gamma_star,
-            xi,
-            zeta,
-            normal: normal_from_xi_zeta(xi, zeta),
-        }
+        self.wall_of_gammas(gamma, gamma_star)
     }
 
     /// A wall element of inclinations `(γ, γ*)` in the incident frame (Eq. 23).

@@ -30,6 +30,48 @@ pub struct Dilated {
     pub contact_fraction: f64,
 }
 
+/// The centre surface of a sphere of diameter `diameter_m` on `f` for a run: refused (one
+/// line naming `particles.diameter_um`, `why` saying for what) when the sphere is wider than
+/// the surface's period — it would rest on its own images — or its buffers do not fit in
+/// memory. A 2-D surface stored as one row (or column) has no period along that axis.
+pub fn sphere_centre_surface(
+    f: &HeightField,
+    diameter_m: f64,
+    why: &str,
+) -> crate::error::Result<Dilated> {
+    let side = match (f.nx > 1, f.nz > 1) {
+        (true, true) => f.length_x().min(f.length_z()),
+        (true, false) => f.length_x(),
+        (false, _) => f.length_z(),
+    };
+    if diameter_m > side {
+        return Err(crate::error::Error::invalid(
+            "particles.diameter_um",
+            crate::output::fmt_num(diameter_m * 1e6),
+            &format!(
+                "at most the surface side, {} µm, for {why} (a wider sphere rests on its own periodic images; enlarge deterministic.side_per_corr_length)",
+                crate::output::fmt_num(side * 1e6)
+            ),
+        ));
+    }
+    crate::memory::require(
+        "particles.diameter_um",
+        diameter_m * 1e6,
+        (f.heights.len() as u64).saturating_mul(BYTES_PER_NODE),
+        "the centre surface of the sphere",
+    )?;
+    Ok(dilate_paraboloid(f, 0.5 * diameter_m))
+}
+
+/// Lowest and highest height of `f`.
+fn height_range(f: &HeightField) -> (f64, f64) {
+    f.heights
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
+            (a.min(h), b.max(h))
+        })
+}
+
 /// The nodes around a line's node that can attain its maximum: `⌈√(2RΔh)/δ⌉ + 1`.
 fn reach(radius_m: f64, height_range: f64, spacing: f64) -> usize {
     let r = (2.0 * radius_m * height_range.max(0.0)).sqrt() / spacing;
@@ -143,12 +185,7 @@ pub fn dilate_paraboloid(f: &HeightField, radius_m: f64) -> Dilated {
             contact_fraction: 1.0,
         };
     }
-    let (lo, hi) = f
-        .heights
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
-            (a.min(h), b.max(h))
-        });
+    let (lo, hi) = height_range(f);
     let range = hi - lo;
     // Along x: weight δx²/2R per squared index step.
     let ax = f.dx * f.dx / (2.0 * radius_m);
@@ -214,12 +251,7 @@ pub fn dilate_sphere_exact(f: &HeightField, radius_m: f64) -> Dilated {
             contact_fraction: 1.0,
         };
     }
-    let (lo, hi) = f
-        .heights
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
-            (a.min(h), b.max(h))
-        });
+    let (lo, hi) = height_range(f);
     let dh = (hi - lo).min(radius_m);
     let r_max = (radius_m * radius_m - (radius_m - dh) * (radius_m - dh)).sqrt();
     let wx = ((r_max / f.dx).ceil() as usize + 1).min(nx);

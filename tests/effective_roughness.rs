@@ -23,15 +23,7 @@ diameter_um = [0.001, 5.0, 50.0, 100.0, 500.0]
 fn spheres_see_a_smoother_wall_as_the_issue_measured() {
     let tmp = tempfile::tempdir().unwrap();
     let case = write_case(tmp.path(), "c.toml", CASE);
-    let out = tmp.path().join("out");
-    rebound(&[
-        "surface",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    let out = run_case("surface", &case, &tmp.path().join("out"), &[]);
     let c = Csv::read(&out.join("effective_roughness.csv"));
     assert_eq!(
         c.header.join(","),
@@ -99,16 +91,7 @@ fn diameters_beyond_the_side_or_out_of_range_are_refused() {
             "bad.toml",
             &CASE.replace("[0.001, 5.0, 50.0, 100.0, 500.0]", list),
         );
-        let out = tmp.path().join("never");
-        rebound(&[
-            "surface",
-            "--case",
-            case.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .refused(needle);
-        assert!(!out.exists());
+        refuse_case("surface", &case, tmp.path(), needle);
     }
     // Without diameters nothing is computed or written.
     let case = write_case(
@@ -116,14 +99,6 @@ fn diameters_beyond_the_side_or_out_of_range_are_refused() {
         "none.toml",
         &CASE.replace("diameter_um = [0.001, 5.0, 50.0, 100.0, 500.0]", ""),
     );
-    let out = tmp.path().join("none");
-    rebound(&[
-        "surface",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    let out = run_case("surface", &case, &tmp.path().join("none"), &[]);
     assert!(!out.join("effective_roughness.csv").exists());
 }

@@ -29,17 +29,7 @@ side_per_corr_length = 16.0
 const FINNIE: &str = "[erosion]\nmodel = \"finnie\"\nflow_stress_pa = 1e9\n";
 
 fn run(dir: &Path, command: &str, case: &Path, name: &str, extra: &[&str]) -> PathBuf {
-    let out = dir.join(name);
-    let mut args = vec![
-        command,
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ];
-    args.extend_from_slice(extra);
-    rebound(&args).ok();
-    out
+    run_case(command, case, &dir.join(name), extra)
 }
 
 #[test]
@@ -230,16 +220,7 @@ fn bad_erosion_input_is_refused_in_one_line() {
             &format!("{BASE}[erosion]\n{section}\n"),
         );
         for command in ["stochastic", "deterministic"] {
-            let out = tmp.path().join("never");
-            let r = rebound(&[
-                command,
-                "--case",
-                case.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-            ]);
-            r.refused(key);
-            assert!(!out.exists(), "{section}: wrote {}", out.display());
+            refuse_case(command, &case, tmp.path(), key);
         }
     }
     let case = write_case(

@@ -13,7 +13,7 @@
 
 mod common;
 
-use common::{rebound, write_case, Csv};
+use common::{run_case, write_case, Csv};
 use roughwall::erosion::dnv::{AngleDependency, Dnv};
 use roughwall::erosion::finnie::Finnie;
 use roughwall::erosion::ErosionModel;
@@ -134,15 +134,12 @@ fn finnie_on_a_smooth_wall_equals_openfoams_particle_erosion() {
             ),
         );
         for model in ["deterministic", "stochastic"] {
-            let out = tmp.path().join(format!("of{g}-{model}"));
-            rebound(&[
+            let out = run_case(
                 model,
-                "--case",
-                case.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-            ])
-            .ok();
+                &case,
+                &tmp.path().join(format!("of{g}-{model}")),
+                &[],
+            );
             let s = Csv::read(&out.join("summary.csv"));
             for row in rows {
                 let a = -fresh.num(row, "alpha_deg");
@@ -260,15 +257,7 @@ fn dnv_matches_pysand_to_1e_9() {
             alphas.join(", ")
         ),
     );
-    let out = tmp.path().join("dnv-run");
-    rebound(&[
-        "stochastic",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    let out = run_case("stochastic", &case, &tmp.path().join("dnv-run"), &[]);
     let s = Csv::read(&out.join("summary.csv"));
     assert_eq!(s.rows.len(), rows.len());
     for row in rows {

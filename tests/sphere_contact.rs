@@ -35,16 +35,7 @@ side_per_corr_length = 40.0
 
 fn run(dir: &Path, name: &str, body: &str) -> std::path::PathBuf {
     let c = write_case(dir, &format!("{name}.toml"), body);
-    let out = dir.join(name);
-    rebound(&[
-        "deterministic",
-        "--case",
-        c.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
-    out
+    run_case("deterministic", &c, &dir.join(name), &[])
 }
 
 #[test]
@@ -127,16 +118,7 @@ fn a_sphere_needs_its_scale_and_size_and_must_fit() {
         (case("100", "contact = \"ball\""), "deterministic.contact"),
     ] {
         let c = write_case(tmp.path(), "bad.toml", &body);
-        let out = tmp.path().join("never");
-        rebound(&[
-            "deterministic",
-            "--case",
-            c.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .refused(needle);
-        assert!(!out.exists());
+        refuse_case("deterministic", &c, tmp.path(), needle);
     }
 }
 
@@ -148,15 +130,7 @@ fn the_stochastic_model_takes_the_deviations_a_sphere_sees() {
         "contact = \"sphere\"\n[stochastic]\neffective_for_diameter = true",
     );
     let c = write_case(tmp.path(), "eff.toml", &body);
-    let out = tmp.path().join("eff");
-    rebound(&[
-        "stochastic",
-        "--case",
-        c.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    let out = run_case("stochastic", &c, &tmp.path().join("eff"), &[]);
     let m: toml::Table =
         toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
     let e = m["effective_for_diameter"].as_table().unwrap();

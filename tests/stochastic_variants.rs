@@ -336,15 +336,7 @@ fn case_key_selects_the_variant_and_refuses_bad_ones() {
             "c.toml",
             &format!("{base}[stochastic]\nmodel = \"{}\"\n", kind.name()),
         );
-        let out = tmp.path().join(kind.name());
-        common::rebound(&[
-            "stochastic",
-            "--case",
-            case.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .ok();
+        let out = common::run_case("stochastic", &case, &tmp.path().join(kind.name()), &[]);
         let manifest: toml::Table =
             toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
         let model = manifest["run"].get("model").and_then(|m| m.as_str());

@@ -126,6 +126,9 @@ impl Case {
                 })
             }
             "dnv" => {
+                // Defaults: carbon steel, K = 2e-9 (m/s)^-n, n = 2.6, ρ_t = 7800 kg/m³, the
+                // RP-O501 steel constants as pysand's `material_dict['carbon_steel']` holds them
+                // (tests/data/dnv_pysand.csv, first rows).
                 let angle_dependency = match e.angle_dependency.as_deref() {
                     None | Some("ductile") => AngleDependency::Ductile,
                     Some("brittle") => AngleDependency::Brittle,

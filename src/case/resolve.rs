@@ -657,6 +657,7 @@ impl Case {
             spin: spin_law(inc)?,
             density_kg_m3: within(
                 "particles.density_kg_m3",
+                // Soda-lime glass beads, the particles of Radenkovic & Simonin 2021, Sec. 4.
                 p.density_kg_m3.unwrap_or(2500.0),
                 10.0,
                 3e4,

@@ -57,13 +57,13 @@ pub struct Incidence {
     sin_cos_beta: (f64, f64),
     /// `Δγ², Δγ*², Cov(γ, γ*)` at `β⁻` (Eq. 26).
     moments: Moments,
-    /// `P_eff(γ | α⁻)` with `Δγ(β⁻)` (Eqs. 31–33).
+    /// `P_eff(γ | α⁻)` (Eqs. 31–33) with `Δγ(β⁻)` of Eq. (26) — or, for the isotropic
+    /// variants, with their one roughness angle.
     sampler: ShadowSampler,
     /// The rough-wall model drawing the walls ([`super::variants`]).
     variant: Variant,
-    /// The isotropic variants' roughness angle `Δγ` (rad) and their shadow-effect law.
+    /// The isotropic variants' roughness angle `Δγ` (rad).
     delta_gamma_iso: f64,
-    iso_sampler: ShadowSampler,
 }
 
 impl Incidence {
@@ -75,22 +75,20 @@ impl Incidence {
     /// The direction `(α⁻, β⁻)` (rad) on `wall`, walls drawn by `variant`.
     pub fn with_variant(alpha: f64, beta: f64, wall: &Deviations, variant: Variant) -> Incidence {
         let moments = rotated_moments(wall, beta);
-        let sampler = ShadowSampler::new(alpha, moments.var_a.max(0.0).sqrt());
         let delta_gamma_iso = variant.delta_gamma_on(wall);
-        let iso_sampler = if variant.is_paper() {
-            sampler
+        let delta_gamma = if variant.is_paper() {
+            moments.var_a.max(0.0).sqrt()
         } else {
-            ShadowSampler::new(alpha, delta_gamma_iso)
+            delta_gamma_iso
         };
         Incidence {
             alpha,
             beta,
             sin_cos_beta: beta.sin_cos(),
             moments,
-            sampler,
+            sampler: ShadowSampler::new(alpha, delta_gamma),
             variant,
             delta_gamma_iso,
-            iso_sampler,
         }
     }
 
@@ -160,7 +158,7 @@ impl Incidence {
             // Sommerfeld & Huber 1999: the shadow law in the incident plane, an independent
             // normal law across it, one Δγ for both (isotropic).
             VariantKind::SommerfeldHuber1999 => {
-                let gamma = self.iso_sampler.sample(rng);
+                let gamma = self.sampler.sample(rng);
                 let z: f64 = rng.sample(StandardNormal);
                 self.wall_of_gammas(gamma, dg * z)
             }
@@ -186,8 +184,8 @@ impl Incidence {
             // ELEXI: rotate n by θ₁ about n × t (towards the particle), then by θ₂ about the
             // original n, both angles from the shadow-weighted Gaussian.
             VariantKind::NormalPerturbation => {
-                let th1 = self.iso_sampler.sample(rng);
-                let th2 = self.iso_sampler.sample(rng);
+                let th1 = self.sampler.sample(rng);
+                let th2 = self.sampler.sample(rng);
                 let (s1, c1) = th1.sin_cos();
                 let (s2, c2) = th2.sin_cos();
                 // The horizontal part −sin θ₁ t, turned by θ₂ about y.
@@ -230,6 +228,27 @@ pub struct Rebound {
 }
 
 impl Rebound {
+    /// The rebound `(velocity, spin)` off the wall element `seen`.
+    fn off(
+        seen: &SeenWall,
+        velocity: Vector3<f64>,
+        spin: Vector3<f64>,
+        tries: u32,
+        candidates: u32,
+        first: SeenWall,
+    ) -> Rebound {
+        Rebound {
+            velocity,
+            spin,
+            gamma: seen.gamma,
+            gamma_star: seen.gamma_star,
+            normal: seen.normal,
+            tries,
+            candidates,
+            first,
+        }
+    }
+
     /// Whether every candidate was rejected until the [`MAX_TRIES`] guard.
     pub fn capped(&self) -> bool {
         self.tries >= MAX_TRIES
@@ -351,11 +370,16 @@ pub fn rebound<R: Rng + ?Sized>(
     diameter_m: f64,
     rng: &mut R,
 ) -> Rebound {
-    if let Some(done) = trivial(u_in, omega_in, wall, law, psi, diameter_m) {
-        return done;
-    }
-    let inc = Incidence::of_velocity(&u_in, wall);
-    rebound_from(&inc, u_in, omega_in, wall, law, psi, diameter_m, rng)
+    rebound_variant(
+        u_in,
+        omega_in,
+        wall,
+        law,
+        psi,
+        diameter_m,
+        Variant::PAPER,
+        rng,
+    )
 }
 
 /// [`rebound`] with the virtual walls drawn by `variant` ([`super::variants`]); the
@@ -374,9 +398,21 @@ pub fn rebound_variant<R: Rng + ?Sized>(
     if let Some(done) = trivial(u_in, omega_in, wall, law, psi, diameter_m) {
         return done;
     }
+    // The trivial cases are ruled out once, here: they also keep an incidence from being
+    // built for a particle that does not move towards the wall.
     let (alpha, beta) = incident_angles(&u_in);
     let inc = Incidence::with_variant(alpha, beta, wall, variant);
-    rebound_from(&inc, u_in, omega_in, wall, law, psi, diameter_m, rng)
+    rebound_drawn(
+        &inc,
+        u_in,
+        omega_in,
+        wall,
+        law,
+        psi,
+        diameter_m,
+        rng,
+        |_, _, _| {},
+    )
 }
 
 /// The rebounds that need no random draw: a particle not moving towards the wall (or a
@@ -483,16 +519,7 @@ fn rebound_repeated<R: Rng + ?Sized>(
         observe(&u, &seen.normal, true);
         let (u_out, w_out) = law.collide(u, w, seen.normal, diameter_m);
         if u_out.y > 0.0 {
-            return Rebound {
-                velocity: u_out,
-                spin: w_out,
-                gamma: seen.gamma,
-                gamma_star: seen.gamma_star,
-                normal: seen.normal,
-                tries,
-                candidates,
-                first,
-            };
+            return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
         }
         // Into (or along) the mean wall: the particle meets the wall again. An exactly
         // tangential velocity is taken as grazing by a hair so the incidence is defined.
@@ -500,6 +527,19 @@ fn rebound_repeated<R: Rng + ?Sized>(
         let (alpha, beta) = incident_angles(&u);
         cur = Incidence::with_variant(alpha.min(-1e-12), beta, wall, inc.variant);
     }
+    guard_rebound(u, w, law, diameter_m, candidates, first, observe)
+}
+
+/// After [`MAX_TRIES`] candidate walls: the collision with the mean (smooth) wall `j`.
+fn guard_rebound(
+    u: Vector3<f64>,
+    w: Vector3<f64>,
+    law: &CollisionLaw,
+    diameter_m: f64,
+    candidates: u32,
+    first: SeenWall,
+    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+) -> Rebound {
     let j = Vector3::new(0.0, 1.0, 0.0);
     let (u_out, w_out) = law.collide(u, w, j, diameter_m);
     observe(&u, &j, true);
@@ -538,6 +578,26 @@ pub fn rebound_from_observed<R: Rng + ?Sized>(
         }
         return done;
     }
+    rebound_drawn(
+        inc, u_in, omega_in, wall, law, psi, diameter_m, rng, observe,
+    )
+}
+
+/// [`rebound_from_observed`] once the trivial cases are ruled out: candidate walls drawn
+/// until one is accepted (steps 2–7), or the simpler variants' repeated hits.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn rebound_drawn<R: Rng + ?Sized>(
+    inc: &Incidence,
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    rng: &mut R,
+    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+) -> Rebound {
     if !inc.variant.is_paper() {
         return rebound_repeated(inc, u_in, omega_in, wall, law, diameter_m, rng, observe);
     }
@@ -562,30 +622,9 @@ pub fn rebound_from_observed<R: Rng + ?Sized>(
         }
         observe(&u_in, &seen.normal, true);
         // Step 7.
-        return Rebound {
-            velocity: u,
-            spin: w,
-            gamma: seen.gamma,
-            gamma_star: seen.gamma_star,
-            normal: seen.normal,
-            tries,
-            candidates,
-            first,
-        };
+        return Rebound::off(&seen, u, w, tries, candidates, first);
     }
-    let j = Vector3::new(0.0, 1.0, 0.0);
-    let (u, w) = law.collide(u_in, omega_in, j, diameter_m);
-    observe(&u_in, &j, true);
-    Rebound {
-        velocity: u,
-        spin: w,
-        gamma: 0.0,
-        gamma_star: 0.0,
-        normal: j,
-        tries: MAX_TRIES,
-        candidates,
-        first,
-    }
+    guard_rebound(u_in, omega_in, law, diameter_m, candidates, first, observe)
 }
 
 #[cfg(test)]

@@ -20,6 +20,35 @@
 use super::HeightField;
 use rayon::prelude::*;
 
+impl Dilated {
+    /// The surface itself: a point touches every node.
+    fn point(f: &HeightField) -> Dilated {
+        Dilated {
+            field: f.clone(),
+            contact_fraction: 1.0,
+        }
+    }
+
+    /// The centre surface `heights` on `f`'s grid, and the contact node of each node.
+    fn of(f: &HeightField, heights: Vec<f64>, contacts: impl Iterator<Item = usize>) -> Dilated {
+        let mut touched = vec![false; f.nx * f.nz];
+        for q in contacts {
+            touched[q] = true;
+        }
+        let count = touched.iter().filter(|&&t| t).count();
+        Dilated {
+            field: HeightField {
+                nx: f.nx,
+                nz: f.nz,
+                dx: f.dx,
+                dz: f.dz,
+                heights,
+            },
+            contact_fraction: count as f64 / touched.len() as f64,
+        }
+    }
+}
+
 /// Bytes per node [`dilate_paraboloid`] holds at its peak, besides the surface itself.
 pub const BYTES_PER_NODE: u64 = 32;
 
@@ -180,10 +209,7 @@ fn transpose<T: Copy + Default + Send + Sync>(src: &[T], nx: usize, nz: usize) -
 pub fn dilate_paraboloid(f: &HeightField, radius_m: f64) -> Dilated {
     let (nx, nz) = (f.nx, f.nz);
     if radius_m <= 0.0 || nx == 0 || nz == 0 {
-        return Dilated {
-            field: f.clone(),
-            contact_fraction: 1.0,
-        };
+        return Dilated::point(f);
     }
     let (lo, hi) = height_range(f);
     let range = hi - lo;
@@ -219,25 +245,11 @@ pub fn dilate_paraboloid(f: &HeightField, radius_m: f64) -> Dilated {
     drop(cols);
     let arg_z = transpose(&arg_z, nz, nx);
     // The node touched above (x, z): row arg_z, column arg_x of that row.
-    let mut touched = vec![false; nx * nz];
-    for iz in 0..nz {
-        for ix in 0..nx {
-            let qz = arg_z[iz * nx + ix] as usize;
-            let qx = arg_x[qz * nx + ix] as usize;
-            touched[qz * nx + qx] = true;
-        }
-    }
-    let count = touched.iter().filter(|&&t| t).count();
-    Dilated {
-        field: HeightField {
-            nx,
-            nz,
-            dx: f.dx,
-            dz: f.dz,
-            heights,
-        },
-        contact_fraction: count as f64 / (nx * nz) as f64,
-    }
+    let contacts = (0..nx * nz).map(|p| {
+        let qz = arg_z[p] as usize;
+        qz * nx + arg_x[qz * nx + p % nx] as usize
+    });
+    Dilated::of(f, heights, contacts)
 }
 
 /// The centre surface of an exact sphere of radius `radius_m`, by brute force over the
@@ -246,10 +258,7 @@ pub fn dilate_paraboloid(f: &HeightField, radius_m: f64) -> Dilated {
 pub fn dilate_sphere_exact(f: &HeightField, radius_m: f64) -> Dilated {
     let (nx, nz) = (f.nx, f.nz);
     if radius_m <= 0.0 || nx == 0 || nz == 0 {
-        return Dilated {
-            field: f.clone(),
-            contact_fraction: 1.0,
-        };
+        return Dilated::point(f);
     }
     let (lo, hi) = height_range(f);
     let dh = (hi - lo).min(radius_m);
@@ -282,21 +291,12 @@ pub fn dilate_sphere_exact(f: &HeightField, radius_m: f64) -> Dilated {
             b
         })
         .collect();
-    let mut touched = vec![false; nx * nz];
-    for &(_, q) in &best {
-        touched[q] = true;
-    }
-    let count = touched.iter().filter(|&&t| t).count();
-    Dilated {
-        field: HeightField {
-            nx,
-            nz,
-            dx: f.dx,
-            dz: f.dz,
-            heights: best.into_iter().map(|b| b.0).collect(),
-        },
-        contact_fraction: count as f64 / (nx * nz) as f64,
-    }
+    let contacts: Vec<usize> = best.iter().map(|b| b.1).collect();
+    Dilated::of(
+        f,
+        best.into_iter().map(|b| b.0).collect(),
+        contacts.into_iter(),
+    )
 }
 
 /// The roughness a sphere of diameter `diameter_m` sees: the measured normal-angle

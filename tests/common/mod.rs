@@ -40,6 +40,35 @@ pub fn rebound<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Run {
     }
 }
 
+/// Runs `rebound COMMAND --case CASE --out OUT EXTRA…`, which must succeed; returns `out`.
+pub fn run_case(command: &str, case: &Path, out: &Path, extra: &[&str]) -> PathBuf {
+    let mut args = vec![
+        command,
+        "--case",
+        case.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    rebound(&args).ok();
+    out.to_path_buf()
+}
+
+/// Runs `rebound COMMAND --case CASE`, which must be refused in one line containing
+/// `needle` (exit 2) without writing its `--out`.
+pub fn refuse_case(command: &str, case: &Path, dir: &Path, needle: &str) {
+    let out = dir.join("never-written");
+    rebound(&[
+        command,
+        "--case",
+        case.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .refused(needle);
+    assert!(!out.exists(), "{needle}: wrote {}", out.display());
+}
+
 /// Writes `body` as `dir/name` and returns its path.
 pub fn write_case(dir: &Path, name: &str, body: &str) -> PathBuf {
     let p = dir.join(name);

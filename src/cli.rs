@@ -33,6 +33,8 @@ pub enum Command {
     Report(ReportArgs),
     /// Merge the partial tallies of `--shard K/N` runs into the outputs of one run.
     Merge(MergeArgs),
+    /// Measure the escape table of the `calibrated` stochastic model on a deterministic run.
+    Calibrate(CalibrateArgs),
 }
 
 /// Options every simulation subcommand takes.
@@ -117,6 +119,15 @@ pub struct StochasticArgs {
 }
 
 #[derive(Args, Debug, Clone, Default)]
+pub struct CalibrateArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Histories per incident condition; overrides `[particles] count`.
+    #[arg(long, value_name = "N")]
+    pub particles: Option<u64>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
 pub struct MergeArgs {
     /// Output directory [default: results/<case name>/<subcommand>/].
     #[arg(long, value_name = "DIR")]
@@ -169,6 +180,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Stochastic(a) => a.common.threads,
         Command::ForceSweep(a) => a.common.threads,
         Command::Merge(a) => a.threads,
+        Command::Calibrate(a) => a.common.threads,
         Command::Compare(_) | Command::Report(_) => None,
     };
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
@@ -210,6 +222,7 @@ fn dispatch(cli: &Cli) -> Result<()> {
         Command::Compare(a) => commands::compare::run(a),
         Command::Report(a) => commands::report::run(a),
         Command::Merge(a) => commands::merge::run(a),
+        Command::Calibrate(a) => commands::calibrate::run(a),
     }
 }
 

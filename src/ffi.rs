@@ -48,6 +48,9 @@ pub const RW_MODEL_GAUSSIAN_ANGLE: i32 = 2;
 pub const RW_MODEL_GAUSSIAN_TILT: i32 = 3;
 /// The normal rotated by two shadow-weighted Gaussian angles (ELEXI).
 pub const RW_MODEL_NORMAL_PERTURBATION: i32 = 4;
+/// The paper's virtual walls with an escape law calibrated on the deterministic simulation,
+/// multiple collisions followed (`escape_table_csv`; NULL: the built-in table).
+pub const RW_MODEL_CALIBRATED: i32 = 5;
 
 /// What a wall handle is built from. Start from `rw_wall_params_default` and set fields.
 #[repr(C)]
@@ -78,6 +81,10 @@ pub struct rw_wall_params {
     pub model: i32,
     /// The isotropic models' roughness angle Δγ (degrees, 0 … 20); NaN: `(Δξ + Δζ)/2`.
     pub delta_gamma_deg: f64,
+    /// `RW_MODEL_CALIBRATED` only: the escape table as the NUL-terminated text
+    /// `rebound calibrate` writes (`escape_table.csv`); NULL: the built-in table. The
+    /// handle keeps its own copy (the text may be freed after `rw_wall_new`).
+    pub escape_table_csv: *const std::os::raw::c_char,
 }
 
 /// One particle–wall hit, global axes, SI units.
@@ -215,6 +222,7 @@ pub unsafe extern "C" fn rw_wall_params_default(params: *mut rw_wall_params) -> 
             seed: 0,
             model: RW_MODEL_RADENKOVIC_SIMONIN_2021,
             delta_gamma_deg: f64::NAN,
+            escape_table_csv: std::ptr::null(),
         });
         RW_OK
     })
@@ -227,7 +235,7 @@ fn wall_params(p: &rw_wall_params) -> Result<WallParams, String> {
         .and_then(|i| crate::stochastic::VariantKind::ALL.get(i).copied())
         .ok_or_else(|| {
             format!(
-                "invalid `model` = {}: allowed RW_MODEL_RADENKOVIC_SIMONIN_2021 (0) to RW_MODEL_NORMAL_PERTURBATION (4)",
+                "invalid `model` = {}: allowed RW_MODEL_RADENKOVIC_SIMONIN_2021 (0) to RW_MODEL_CALIBRATED (5)",
                 p.model
             )
         })?;
@@ -265,6 +273,17 @@ fn wall_params(p: &rw_wall_params) -> Result<WallParams, String> {
         seed: p.seed,
         model: Some(variant.name().into()),
         delta_gamma_deg: given(p.delta_gamma_deg),
+        escape_table: if p.escape_table_csv.is_null() {
+            None
+        } else {
+            // SAFETY: a non-NULL `escape_table_csv` is a NUL-terminated string (header).
+            let text = unsafe { std::ffi::CStr::from_ptr(p.escape_table_csv) };
+            Some(
+                text.to_str()
+                    .map_err(|_| "`stochastic.escape_table`: not UTF-8 text".to_string())?
+                    .to_string(),
+            )
+        },
     })
 }
 

@@ -36,6 +36,10 @@ pub struct WallParams {
     /// variants' roughness angle (degrees; `(Δξ + Δζ)/2` when `None`).
     pub model: Option<String>,
     pub delta_gamma_deg: Option<f64>,
+    /// The escape table of `model = "calibrated"`, as the text `rebound calibrate` writes
+    /// (`None`: the built-in table). The handle keeps its own copy: no file is read at run
+    /// time.
+    pub escape_table: Option<String>,
 }
 
 /// A wall: immutable once built, so one handle serves every thread.
@@ -47,6 +51,23 @@ pub struct WallModel {
     pub seed: u64,
     /// The rough-wall model drawing the virtual walls.
     pub variant: Variant,
+}
+
+/// `variant` with the escape table given as text (only `calibrated` takes one).
+fn with_escape_table(mut variant: Variant, table: Option<&str>) -> Result<Variant> {
+    let Some(text) = table else {
+        return Ok(variant);
+    };
+    if variant.kind != crate::stochastic::VariantKind::Calibrated {
+        return Err(Error::Input(format!(
+            "`stochastic.escape_table` applies to model = \"calibrated\" only (model = \"{}\")",
+            variant.kind.name()
+        )));
+    }
+    let table =
+        crate::stochastic::escape_table::EscapeTable::parse(text, "`stochastic.escape_table`")?;
+    variant.escape = Some(table.intern());
+    Ok(variant)
 }
 
 impl WallModel {
@@ -67,6 +88,7 @@ impl WallModel {
                 model: p.model.clone(),
                 delta_gamma_deg: p.delta_gamma_deg,
                 effective_for_diameter: None,
+                escape_table: None,
             }),
             ..Default::default()
         };
@@ -84,7 +106,7 @@ impl WallModel {
                 law: case.collision_law()?,
                 psi: case.psi()?,
                 seed: p.seed,
-                variant: case.variant()?,
+                variant: with_escape_table(case.variant()?, p.escape_table.as_deref())?,
             })
         });
         Ok((built?, warnings))

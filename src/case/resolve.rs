@@ -702,10 +702,11 @@ impl Case {
         };
         let delta_gamma = match st.delta_gamma_deg {
             None => None,
-            Some(_) if kind == VariantKind::RadenkovicSimonin2021 => {
-                return Err(Error::Input(
-                    "`stochastic.delta_gamma_deg` applies to the isotropic variants only; model = \"radenkovic-simonin-2021\" takes its Δγ from the wall (Eq. 26)".into(),
-                ))
+            Some(_) if kind.anisotropic() => {
+                return Err(Error::Input(format!(
+                    "`stochastic.delta_gamma_deg` applies to the isotropic variants only; model = \"{}\" takes its Δγ from the wall (Eq. 26)",
+                    kind.name()
+                )))
             }
             Some(d) => Some(
                 within(
@@ -719,7 +720,19 @@ impl Case {
                 .to_radians(),
             ),
         };
-        Ok(Variant { kind, delta_gamma })
+        let escape = match (&st.escape_table, kind) {
+            (None, _) => None,
+            (Some(path), VariantKind::Calibrated) => Some(read_escape_table(path)?),
+            (Some(_), _) => return Err(Error::Input(format!(
+                "`stochastic.escape_table` applies to model = \"calibrated\" only (model = \"{}\")",
+                kind.name()
+            ))),
+        };
+        Ok(Variant {
+            kind,
+            delta_gamma,
+            escape,
+        })
     }
 
     /// The collision law of `[collision]` (default: ideally elastic).
@@ -912,4 +925,28 @@ impl Values {
         }
         Ok(v)
     }
+}
+
+/// Largest escape table read (bytes); a table of the fixed grid is about 60 kB.
+const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 20;
+
+/// Reads the escape table at `path` (`[stochastic] escape_table`): as given, else under
+/// `configs/`; one-line errors that name the key and the file.
+fn read_escape_table(path: &str) -> Result<&'static crate::stochastic::escape_table::EscapeTable> {
+    let key = "stochastic.escape_table";
+    let file = super::load::resolve_path(std::path::Path::new(path)).map_err(|_| {
+        Error::Input(format!(
+            "`{key}` = \"{path}\": file not found (looked as given and under configs/)"
+        ))
+    })?;
+    let what = format!("`{key}` = \"{path}\"");
+    let len = std::fs::metadata(&file).map(|m| m.len()).unwrap_or(0);
+    if len > MAX_ESCAPE_TABLE_BYTES {
+        return Err(Error::Input(format!(
+            "{what}: {len} bytes, more than an escape table ({MAX_ESCAPE_TABLE_BYTES} at most)"
+        )));
+    }
+    let text = std::fs::read_to_string(&file)
+        .map_err(|e| Error::Input(format!("{what}: cannot read it: {e}")))?;
+    Ok(crate::stochastic::escape_table::EscapeTable::parse(&text, &what)?.intern())
 }

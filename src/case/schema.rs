@@ -162,6 +162,10 @@ pub struct StochasticSection {
     /// centre surface on the surface `deterministic` would generate (same seed).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub effective_for_diameter: Option<bool>,
+    /// The escape table of `model = "calibrated"` (a file `rebound calibrate` wrote; as
+    /// given, else under `configs/`); default: the built-in table.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub escape_table: Option<String>,
 }
 
 /// `[deterministic]`: tracker limits and the automatic surface choice.

@@ -1,5 +1,6 @@
 //! One module per subcommand: read the case, run the library, write outputs.
 
+pub mod calibrate;
 pub mod compare;
 pub mod deterministic;
 pub mod force_sweep;

@@ -1,5 +1,6 @@
 //! `rebound deterministic`: particle-centre bouncing on a generated anisotropic
 //! rough wall (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5 and 4; physics notes §5).
+pub mod calibrate;
 pub mod plots;
 pub mod scene;
 pub mod trace;
@@ -55,7 +56,7 @@ pub fn history(
 }
 
 /// The part of a history's stream key shared by a condition: `(seed, DETERMINISTIC, k)`.
-fn stream_prefix(seed: u64, cond_index: u64) -> rng::StreamPrefix {
+pub(crate) fn stream_prefix(seed: u64, cond_index: u64) -> rng::StreamPrefix {
     rng::StreamPrefix::new(seed, &[rng::domain::DETERMINISTIC, cond_index])
 }
 
@@ -72,7 +73,7 @@ fn history_at(
 
 /// [`history_at`] reporting every collision to `observe`.
 #[inline]
-fn history_observed(
+pub(crate) fn history_observed(
     tracker: &Tracker<'_>,
     setup: &ModelSetup,
     cond: &IncidentCondition,

@@ -5,6 +5,7 @@
 //! collision: it needs only the incident state, the wall's two deviations, the
 //! collision law and a random generator — no surface, no tables.
 
+use super::escape_table::{reduced_angle, Stage};
 use super::shadow_effect::ShadowSampler;
 use super::variants::{Variant, VariantKind};
 use crate::angles::{
@@ -76,17 +77,23 @@ impl Incidence {
     pub fn with_variant(alpha: f64, beta: f64, wall: &Deviations, variant: Variant) -> Incidence {
         let moments = rotated_moments(wall, beta);
         let delta_gamma_iso = variant.delta_gamma_on(wall);
-        let delta_gamma = if variant.is_paper() {
+        let delta_gamma = if variant.kind.anisotropic() {
             moments.var_a.max(0.0).sqrt()
         } else {
             delta_gamma_iso
+        };
+        // A rising particle meets the wall only in the calibrated model's later collisions.
+        let sampler = if alpha > 0.0 {
+            ShadowSampler::rising(alpha, delta_gamma)
+        } else {
+            ShadowSampler::new(alpha, delta_gamma)
         };
         Incidence {
             alpha,
             beta,
             sin_cos_beta: beta.sin_cos(),
             moments,
-            sampler: ShadowSampler::new(alpha, delta_gamma),
+            sampler,
             variant,
             delta_gamma_iso,
         }
@@ -154,7 +161,7 @@ impl Incidence {
         let t = Vector3::new(cb, 0.0, -sb);
         let j = Vector3::new(0.0, 1.0, 0.0);
         match self.variant.kind {
-            VariantKind::RadenkovicSimonin2021 => self.draw_wall(rng),
+            VariantKind::RadenkovicSimonin2021 | VariantKind::Calibrated => self.draw_wall(rng),
             // Sommerfeld & Huber 1999: the shadow law in the incident plane, an independent
             // normal law across it, one Δγ for both (isotropic).
             VariantKind::SommerfeldHuber1999 => {
@@ -530,6 +537,58 @@ fn rebound_repeated<R: Rng + ?Sized>(
     guard_rebound(u, w, law, diameter_m, candidates, first, observe)
 }
 
+/// The `calibrated` model: the paper's virtual walls (Eqs. 26, 29–33, for the current
+/// direction), the collision law, and then the particle leaves with the calibrated
+/// probability `P(escape | stage, α/Δγ(β), α⁺/Δγ(β⁺))` of [`super::escape_table`] — or it
+/// is trapped and meets the wall again *with its rebound velocity* (rising or not: the
+/// shadow law continued to `α > 0`, [`ShadowSampler::rising`]). Radenkovic & Simonin
+/// 2021 instead reject the trapped rebound and redraw for the same incident particle
+/// (Eq. 34, Fig. 13), which makes every multiple-collision history end like a single
+/// collision. Every collision is reported to `observe` as accepted (each is an impact).
+#[allow(clippy::too_many_arguments)]
+fn rebound_calibrated<R: Rng + ?Sized>(
+    inc: &Incidence,
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    diameter_m: f64,
+    rng: &mut R,
+    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+) -> Rebound {
+    let table = inc.variant.escape_table();
+    let (mut u, mut w) = (u_in, omega_in);
+    let mut cur = *inc;
+    let mut stage = Stage::First;
+    let mut x_in = reduced_angle(&u, wall);
+    let mut candidates = 0u32;
+    let mut first = SeenWall::FLAT;
+    for tries in 1..=MAX_TRIES {
+        let seen = cur.draw_wall(rng);
+        if u.dot(&seen.normal) >= 0.0 {
+            continue;
+        }
+        candidates += 1;
+        if candidates == 1 {
+            first = seen;
+        }
+        observe(&u, &seen.normal, true);
+        let (u_out, w_out) = law.collide(u, w, seen.normal, diameter_m);
+        if u_out.y > 0.0 {
+            let p = table.p_escape(stage, x_in, reduced_angle(&u_out, wall));
+            if p >= 1.0 || rng.gen::<f64>() < p {
+                return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
+            }
+        }
+        (u, w) = (u_out, w_out);
+        stage = Stage::Later;
+        x_in = reduced_angle(&u, wall);
+        let (alpha, beta) = incident_angles(&u);
+        cur = Incidence::with_variant(alpha, beta, wall, inc.variant);
+    }
+    guard_rebound(u, w, law, diameter_m, candidates, first, observe)
+}
+
 /// After [`MAX_TRIES`] candidate walls: the collision with the mean (smooth) wall `j`.
 fn guard_rebound(
     u: Vector3<f64>,
@@ -598,8 +657,12 @@ fn rebound_drawn<R: Rng + ?Sized>(
     rng: &mut R,
     mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
 ) -> Rebound {
-    if !inc.variant.is_paper() {
-        return rebound_repeated(inc, u_in, omega_in, wall, law, diameter_m, rng, observe);
+    match inc.variant.kind {
+        VariantKind::RadenkovicSimonin2021 => {}
+        VariantKind::Calibrated => {
+            return rebound_calibrated(inc, u_in, omega_in, wall, law, diameter_m, rng, observe)
+        }
+        _ => return rebound_repeated(inc, u_in, omega_in, wall, law, diameter_m, rng, observe),
     }
     let mut candidates = 0u32;
     let mut first = SeenWall::FLAT;

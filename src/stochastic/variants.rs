@@ -11,6 +11,7 @@
 //! | `gaussian-angle` | `α₁ = max(α + Δγ N(0,1), 0)`: a tilt in the incident plane only | no | hits again |
 //! | `gaussian-tilt` | tilt `δ = \|Δγ N(0,1)\|`, azimuth uniform in `[0, π)` towards the particle | no | hits again |
 //! | `normal-perturbation` | rotation by `θ₁` about `n × t`, then by `θ₂` about `n`, both from the shadow-weighted Gaussian | yes | hits again |
+//! | `calibrated` | as `radenkovic-simonin-2021` | yes (Eq. 31, continued to rising particles) | leaves with the calibrated probability of [`super::escape_table`], otherwise hits the wall again with the rebound velocity |
 //!
 //! Sources:
 //! * Sommerfeld & Huber, Int. J. Multiphase Flow 25 (1999) 1457–1489: the shadow-effect
@@ -38,6 +39,7 @@
 //! The isotropic variants take one roughness angle `Δγ`: `[stochastic] delta_gamma_deg`, or
 //! by default the mean of the wall's two deviations `(Δξ + Δζ)/2`.
 
+use super::escape_table::EscapeTable;
 use crate::wall::Deviations;
 
 /// Which rough-wall model draws the virtual walls.
@@ -54,16 +56,20 @@ pub enum VariantKind {
     GaussianTilt,
     /// ELEXI: the normal rotated by two shadow-weighted Gaussian angles.
     NormalPerturbation,
+    /// The paper's virtual walls with an escape law calibrated on a deterministic run, and
+    /// multiple collisions followed (`rebound calibrate`).
+    Calibrated,
 }
 
 impl VariantKind {
     /// Every variant, in the benchmark's order.
-    pub const ALL: [VariantKind; 5] = [
+    pub const ALL: [VariantKind; 6] = [
         VariantKind::RadenkovicSimonin2021,
         VariantKind::SommerfeldHuber1999,
         VariantKind::GaussianAngle,
         VariantKind::GaussianTilt,
         VariantKind::NormalPerturbation,
+        VariantKind::Calibrated,
     ];
 
     /// The name in case files (`[stochastic] model`).
@@ -74,7 +80,17 @@ impl VariantKind {
             VariantKind::GaussianAngle => "gaussian-angle",
             VariantKind::GaussianTilt => "gaussian-tilt",
             VariantKind::NormalPerturbation => "normal-perturbation",
+            VariantKind::Calibrated => "calibrated",
         }
+    }
+
+    /// Whether the virtual walls are those of the anisotropic wall (Eqs. 26, 29–33) rather
+    /// than of one isotropic roughness angle.
+    pub fn anisotropic(self) -> bool {
+        matches!(
+            self,
+            VariantKind::RadenkovicSimonin2021 | VariantKind::Calibrated
+        )
     }
 
     /// The variant of a case-file name.
@@ -83,12 +99,16 @@ impl VariantKind {
     }
 }
 
-/// A variant with its one roughness angle (the isotropic ones).
+/// A variant with its one roughness angle (the isotropic ones) or its escape table (the
+/// calibrated one).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Variant {
     pub kind: VariantKind,
     /// `Δγ` (rad) of the isotropic variants; `None`: `(Δξ + Δζ)/2` of the wall.
     pub delta_gamma: Option<f64>,
+    /// The escape law of `calibrated` (`None`: the built-in table). Interned
+    /// ([`EscapeTable::intern`]), so the variant stays a small `Copy` value.
+    pub escape: Option<&'static EscapeTable>,
 }
 
 impl Variant {
@@ -96,7 +116,22 @@ impl Variant {
     pub const PAPER: Variant = Variant {
         kind: VariantKind::RadenkovicSimonin2021,
         delta_gamma: None,
+        escape: None,
     };
+
+    /// The calibrated model with `table` (`None`: the built-in one).
+    pub fn calibrated(table: Option<&'static EscapeTable>) -> Variant {
+        Variant {
+            kind: VariantKind::Calibrated,
+            delta_gamma: None,
+            escape: table,
+        }
+    }
+
+    /// The escape table of the calibrated model.
+    pub fn escape_table(&self) -> &'static EscapeTable {
+        self.escape.unwrap_or_else(EscapeTable::builtin)
+    }
 
     /// The roughness angle an isotropic variant uses on `wall` (rad).
     pub fn delta_gamma_on(&self, wall: &Deviations) -> f64 {

@@ -1,0 +1,98 @@
+//! `rebound calibrate`: the escape table of the `calibrated` stochastic model, measured
+//! on the deterministic simulation of a case (`crate::deterministic::calibrate`).
+
+use crate::cli::CalibrateArgs;
+use crate::commands::deterministic::{generate_surface, prepare};
+use crate::commands::Context;
+use crate::deterministic::{calibrate::escape_counts, Tracker};
+use crate::error::{Error, Result};
+use crate::output::out_dir::check_out;
+use crate::output::{write_atomic, OutputDir};
+use crate::runner::TallyOverrides;
+use crate::stochastic::escape_table::EscapeTable;
+use crate::surface::stats::measured_deviations;
+
+/// The built-in case: the calibration of the shipped table.
+pub const DEFAULT_CASE: &str = include_str!("../../configs/calibration/aniso.toml");
+
+/// Runs the subcommand.
+pub fn run(args: &CalibrateArgs) -> Result<()> {
+    let ctx = Context::new(&args.common, "calibrate", DEFAULT_CASE)?;
+    let o = TallyOverrides {
+        particles: args.particles,
+        ..Default::default()
+    };
+    let p = prepare(&ctx.case, &o, None)?;
+    if p.options.sphere_diameter_m.is_some() {
+        return Err(Error::Input(
+            "`deterministic.contact` = \"sphere\": `rebound calibrate` measures the particle-centre model the stochastic model stands for; remove the key".into(),
+        ));
+    }
+    let Some(plan) = &p.surface else {
+        return Err(Error::Internal("no surface plan".into()));
+    };
+    check_out(&ctx.out_dir, "--out")?;
+    let field = generate_surface(plan, ctx.seed)?;
+    let tracker = Tracker::new(&field, p.options.max_collisions).map_err(Error::Input)?;
+    // The reduced angles use the deviations the surface has, not the ones it was meant to
+    // have: the table must not absorb the surface's discretisation (a few per cent).
+    let measured = measured_deviations(&field);
+    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
+    let t0 = std::time::Instant::now();
+    let mut setup = p.setup;
+    setup.wall = measured;
+    let count = p.scene.count as u64;
+    let counts = escape_counts(&tracker, &setup, &p.scene.conditions, count, ctx.seed);
+    let seconds = t0.elapsed().as_secs_f64();
+    if counts.total() == 0 {
+        return Err(Error::Model(
+            "no collision was counted: every history was lost or left too steeply to be trapped"
+                .into(),
+        ));
+    }
+    let source = format!(
+        "case {} seed {} particles {} conditions {} wall (measured) {:.4} {:.4} deg",
+        ctx.case.name,
+        ctx.seed,
+        count,
+        p.scene.conditions.len(),
+        measured.delta_xi.to_degrees(),
+        measured.delta_zeta.to_degrees()
+    );
+    let table = EscapeTable::from_counts(counts, &source);
+    write_atomic(
+        &out.path().join("escape_table.csv"),
+        table.to_csv().as_bytes(),
+    )?;
+    let mut manifest = ctx.manifest;
+    let round = |x: f64| toml::Value::Float((x * 1e4).round() / 1e4);
+    let mut t = toml::Table::new();
+    t.insert(
+        "measured_delta_xi_deg".into(),
+        round(measured.delta_xi.to_degrees()),
+    );
+    t.insert(
+        "measured_delta_zeta_deg".into(),
+        round(measured.delta_zeta.to_degrees()),
+    );
+    t.insert(
+        "collisions_counted".into(),
+        toml::Value::Integer(table.counts().total() as i64),
+    );
+    t.insert(
+        "histories".into(),
+        toml::Value::Integer((count * p.scene.conditions.len() as u64) as i64),
+    );
+    t.insert(
+        "use".into(),
+        "[stochastic] model = \"calibrated\", escape_table = \"<this file>\"".into(),
+    );
+    manifest.set("calibration", toml::Value::Table(t));
+    manifest.set_run(
+        "compute_s",
+        toml::Value::Float((seconds * 1e3).round() / 1e3),
+    );
+    manifest.write(out.path())?;
+    out.commit()?;
+    Ok(())
+}

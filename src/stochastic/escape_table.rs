@@ -1,0 +1,602 @@
+//! The calibrated escape law of the `calibrated` wall model: the probability that a
+//! particle leaves the wall after a collision, tabulated from a deterministic run
+//! (`rebound calibrate`) instead of Radenkovic & Simonin 2021, Eq. (34).
+//!
+//! Eq. (34) gives the single-collision probability as `tanh(ψ α⁺/Δγ(β⁺))` whatever the
+//! incidence. The deterministic simulation says otherwise (`results/REPORT.md`, "A model
+//! within the deterministic noise"): at grazing incidence a particle hits near the asperity
+//! tops and escapes more easily, and after a first collision it starts low, in a valley.
+//! So the table is indexed by the collision's stage (first, or a later one of the same
+//! history), by the incident direction and by the rebound direction, both in units of the
+//! wall's roughness angle in their own plane:
+//!
+//! `x_in = α/Δγ(β)` of the velocity before the collision (negative: descending; positive:
+//! a rebound that was trapped and meets the wall again while rising), and
+//! `x_out = α⁺/Δγ(β⁺)` of the rebound (`Δγ(β)` of Eq. 26/35, `√(cos²β Δξ² + sin²β Δζ²)`).
+//!
+//! The grid is fixed (so tables are comparable and a file cannot disagree with the code
+//! about it): `x_in ∈ [−6, 6]` in 24 bins, `x_out ∈ [0, 4]` in 40 bins, two stages. The
+//! probability is read bilinearly between bin centres (clamped at the edges); beyond
+//! `x_out = 4` it is 1 (the deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
+
+use crate::error::{Error, Result};
+use crate::wall::Deviations;
+use nalgebra::Vector3;
+use std::sync::{Mutex, OnceLock};
+
+/// Lower edge of the `x_in` axis.
+pub const X_IN_MIN: f64 = -6.0;
+/// Upper edge of the `x_in` axis.
+pub const X_IN_MAX: f64 = 6.0;
+/// Bins along `x_in`.
+pub const X_IN_BINS: usize = 24;
+/// Upper edge of the `x_out` axis (the lower one is 0).
+pub const X_OUT_MAX: f64 = 4.0;
+/// Bins along `x_out`.
+pub const X_OUT_BINS: usize = 40;
+/// Stages: the first collision of a history, and the later ones.
+pub const STAGES: usize = 2;
+/// Cells of a table.
+pub const CELLS: usize = STAGES * X_IN_BINS * X_OUT_BINS;
+/// Collisions a cell needs to stand on its own; sparser cells take their neighbour's value.
+pub const MIN_COUNT: u64 = 50;
+/// First line of a table file (names the format and its version).
+pub const MAGIC: &str = "# roughwall escape table v1";
+const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
+
+const DX_IN: f64 = (X_IN_MAX - X_IN_MIN) / X_IN_BINS as f64;
+const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
+
+/// Which collision of a history.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// The first collision (the particle comes from the flow).
+    First = 0,
+    /// A later one (the particle was trapped by the roughness).
+    Later = 1,
+}
+
+impl Stage {
+    fn name(self) -> &'static str {
+        match self {
+            Stage::First => "first",
+            Stage::Later => "later",
+        }
+    }
+}
+
+/// `α/Δγ(β)` of the velocity `u` on `wall` (signed like `α`; `Δγ(β)` of Eq. 26). A smooth
+/// wall in that plane gives `±∞` (the particle always escapes).
+#[inline]
+pub fn reduced_angle(u: &Vector3<f64>, wall: &Deviations) -> f64 {
+    let s = u.norm();
+    let alpha = (u.y / s).clamp(-1.0, 1.0).asin();
+    let h2 = u.x * u.x + u.z * u.z;
+    // cos²β = u²/(u² + w²), as in Eq. (35)'s implementation.
+    let var = if h2 > 0.0 {
+        (u.x * u.x * wall.delta_xi * wall.delta_xi + u.z * u.z * wall.delta_zeta * wall.delta_zeta)
+            / h2
+    } else {
+        wall.delta_xi * wall.delta_xi
+    };
+    alpha / var.sqrt()
+}
+
+fn cell(stage: Stage, i_in: usize, i_out: usize) -> usize {
+    (stage as usize * X_IN_BINS + i_in) * X_OUT_BINS + i_out
+}
+
+fn bin_in(x_in: f64) -> usize {
+    (((x_in - X_IN_MIN) / DX_IN).floor().max(0.0) as usize).min(X_IN_BINS - 1)
+}
+
+/// Integer counts of collisions and escapes per cell: what a calibration run accumulates.
+/// Sums are exact, so the counts do not depend on the order or the thread that added them.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EscapeCounts {
+    pub collisions: Vec<u64>,
+    pub escaped: Vec<u64>,
+}
+
+impl Default for EscapeCounts {
+    fn default() -> Self {
+        EscapeCounts {
+            collisions: vec![0; CELLS],
+            escaped: vec![0; CELLS],
+        }
+    }
+}
+
+impl EscapeCounts {
+    /// Counts one collision with incident velocity `u_in` and rebound `u_out`, and whether
+    /// the particle then left the wall. Rebounds into the mean wall (`α⁺ ≤ 0`) are not
+    /// counted: they cannot escape and the model never asks.
+    pub fn push(
+        &mut self,
+        stage: Stage,
+        u_in: &Vector3<f64>,
+        u_out: &Vector3<f64>,
+        wall: &Deviations,
+        escaped: bool,
+    ) {
+        if u_out.y <= 0.0 {
+            return;
+        }
+        let x_out = reduced_angle(u_out, wall);
+        if !(x_out < X_OUT_MAX) {
+            return;
+        }
+        let x_in = reduced_angle(u_in, wall);
+        if x_in.is_nan() {
+            return;
+        }
+        let i_out = ((x_out / DX_OUT) as usize).min(X_OUT_BINS - 1);
+        let c = cell(stage, bin_in(x_in), i_out);
+        self.collisions[c] += 1;
+        self.escaped[c] += escaped as u64;
+    }
+
+    /// Adds `other` (exact integer sums).
+    pub fn add(&mut self, other: &EscapeCounts) {
+        for (a, b) in self.collisions.iter_mut().zip(&other.collisions) {
+            *a += b;
+        }
+        for (a, b) in self.escaped.iter_mut().zip(&other.escaped) {
+            *a += b;
+        }
+    }
+
+    /// Total collisions counted.
+    pub fn total(&self) -> u64 {
+        self.collisions.iter().sum()
+    }
+}
+
+/// A calibrated escape law: the counts it came from and the probability of every cell
+/// (sparse cells filled, see [`EscapeTable::from_counts`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EscapeTable {
+    counts: EscapeCounts,
+    p: Vec<f64>,
+    /// Where the table came from (the `# source:` line of its file).
+    pub source: String,
+}
+
+impl EscapeTable {
+    /// The table of `counts`. A cell with fewer than [`MIN_COUNT`] collisions takes the
+    /// value of the nearest cell along `x_in` (same stage and `x_out`) that has enough;
+    /// a column with none takes the first stage's filled value, and a column empty in both
+    /// stages is 1 (the rebound is steep enough that no run saw it trapped).
+    pub fn from_counts(counts: EscapeCounts, source: &str) -> EscapeTable {
+        let mut p = vec![f64::NAN; CELLS];
+        for stage in [Stage::First, Stage::Later] {
+            for i_out in 0..X_OUT_BINS {
+                let own = |i_in: usize| {
+                    let c = cell(stage, i_in, i_out);
+                    (counts.collisions[c] >= MIN_COUNT)
+                        .then(|| counts.escaped[c] as f64 / counts.collisions[c] as f64)
+                };
+                for i_in in 0..X_IN_BINS {
+                    // Nearest populated bin along x_in, the lower one first on a tie.
+                    let v = (0..X_IN_BINS).find_map(|d| {
+                        let lo = i_in.checked_sub(d).and_then(own);
+                        let hi = (i_in + d < X_IN_BINS).then(|| own(i_in + d)).flatten();
+                        lo.or(hi)
+                    });
+                    let v = match (v, stage) {
+                        (Some(v), _) => v,
+                        (None, Stage::Later) => p[cell(Stage::First, i_in, i_out)],
+                        (None, Stage::First) => f64::NAN,
+                    };
+                    p[cell(stage, i_in, i_out)] = v;
+                }
+            }
+        }
+        for v in &mut p {
+            if v.is_nan() {
+                *v = 1.0;
+            }
+        }
+        EscapeTable {
+            counts,
+            p,
+            source: source.to_string(),
+        }
+    }
+
+    /// The counts the table came from.
+    pub fn counts(&self) -> &EscapeCounts {
+        &self.counts
+    }
+
+    /// The probability of cell `(stage, i_in, i_out)`.
+    pub fn cell_p(&self, stage: Stage, i_in: usize, i_out: usize) -> f64 {
+        self.p[cell(stage, i_in, i_out)]
+    }
+
+    /// The probability that a particle leaves the wall after a collision of `stage` from
+    /// reduced incident angle `x_in` with reduced rebound angle `x_out` (bilinear between
+    /// bin centres, clamped at the edges; 1 beyond `x_out = 4`, 0 for `x_out ≤ 0`).
+    #[inline]
+    pub fn p_escape(&self, stage: Stage, x_in: f64, x_out: f64) -> f64 {
+        if !(x_out > 0.0) {
+            return 0.0;
+        }
+        if x_out >= X_OUT_MAX {
+            return 1.0;
+        }
+        // A direction with no roughness in its plane has no reduced angle (0/0).
+        let x_in = if x_in.is_nan() { 0.0 } else { x_in };
+        let (i0, i1, ti) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
+        let (o0, o1, to) = axis(x_out, 0.0, DX_OUT, X_OUT_BINS);
+        let at = |i, o| self.p[cell(stage, i, o)];
+        let lo = at(i0, o0) + (at(i0, o1) - at(i0, o0)) * to;
+        let hi = at(i1, o0) + (at(i1, o1) - at(i1, o0)) * to;
+        lo + (hi - lo) * ti
+    }
+
+    /// The table as a file: the magic line, `# source:`, then one row per cell.
+    pub fn to_csv(&self) -> String {
+        let mut s = format!("{MAGIC}\n# source: {}\n{HEADER}\n", self.source);
+        for stage in [Stage::First, Stage::Later] {
+            for i_in in 0..X_IN_BINS {
+                for i_out in 0..X_OUT_BINS {
+                    let c = cell(stage, i_in, i_out);
+                    s.push_str(&format!(
+                        "{},{:.3},{:.3},{},{},{:.6}\n",
+                        stage.name(),
+                        X_IN_MIN + (i_in as f64 + 0.5) * DX_IN,
+                        (i_out as f64 + 0.5) * DX_OUT,
+                        self.counts.collisions[c],
+                        self.counts.escaped[c],
+                        self.p[c]
+                    ));
+                }
+            }
+        }
+        s
+    }
+
+    /// Reads a table written by [`EscapeTable::to_csv`]; `what` names it in errors. The
+    /// probabilities are recomputed from the counts, and every row is checked against the
+    /// grid: a malformed or mismatched table is a one-line error.
+    pub fn parse(text: &str, what: &str) -> Result<EscapeTable> {
+        let bad = |line: usize, msg: &str| Error::Input(format!("{what}, line {line}: {msg}"));
+        let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end()));
+        match lines.next() {
+            Some((_, l)) if l == MAGIC => {}
+            _ => {
+                return Err(Error::Input(format!(
+                    "{what}: not an escape table (the first line must be `{MAGIC}`; `rebound calibrate` writes one)"
+                )))
+            }
+        }
+        let source = match lines.next() {
+            Some((_, l)) if l.starts_with("# source: ") => l["# source: ".len()..].to_string(),
+            Some((n, _)) => return Err(bad(n, "expected `# source: …`")),
+            None => return Err(bad(2, "expected `# source: …`")),
+        };
+        match lines.next() {
+            Some((_, l)) if l == HEADER => {}
+            Some((n, _)) => return Err(bad(n, &format!("expected the header `{HEADER}`"))),
+            None => return Err(bad(3, &format!("expected the header `{HEADER}`"))),
+        }
+        let mut counts = EscapeCounts::default();
+        let mut rows = 0usize;
+        for stage in [Stage::First, Stage::Later] {
+            for i_in in 0..X_IN_BINS {
+                for i_out in 0..X_OUT_BINS {
+                    let (n, l) = lines.next().ok_or_else(|| {
+                        Error::Input(format!(
+                            "{what}: truncated after {rows} of {CELLS} rows (the grid is {STAGES} stages × {X_IN_BINS} × {X_OUT_BINS})"
+                        ))
+                    })?;
+                    let f: Vec<&str> = l.split(',').collect();
+                    if f.len() != 6 {
+                        return Err(bad(n, &format!("{} fields, expected 6", f.len())));
+                    }
+                    let num = |k: usize| -> Result<f64> {
+                        f[k].parse::<f64>()
+                            .ok()
+                            .filter(|v| v.is_finite())
+                            .ok_or_else(|| bad(n, &format!("`{}` is not a number", f[k])))
+                    };
+                    let int = |k: usize| -> Result<u64> {
+                        f[k].parse::<u64>().map_err(|_| {
+                            bad(n, &format!("`{}` is not a non-negative integer", f[k]))
+                        })
+                    };
+                    let x_in = X_IN_MIN + (i_in as f64 + 0.5) * DX_IN;
+                    let x_out = (i_out as f64 + 0.5) * DX_OUT;
+                    if f[0] != stage.name()
+                        || (num(1)? - x_in).abs() > 1e-9
+                        || (num(2)? - x_out).abs() > 1e-9
+                    {
+                        return Err(bad(
+                            n,
+                            &format!(
+                                "expected the cell ({}, x_in = {x_in}, x_out = {x_out}): the table does not match this version's grid",
+                                stage.name()
+                            ),
+                        ));
+                    }
+                    let (c, e) = (int(3)?, int(4)?);
+                    if e > c {
+                        return Err(bad(n, &format!("{e} escapes out of {c} collisions")));
+                    }
+                    let p = num(5)?;
+                    if !(0.0..=1.0).contains(&p) {
+                        return Err(bad(n, &format!("p_escape = {p} is not in [0, 1]")));
+                    }
+                    let k = cell(stage, i_in, i_out);
+                    counts.collisions[k] = c;
+                    counts.escaped[k] = e;
+                    rows += 1;
+                }
+            }
+        }
+        if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
+            return Err(bad(n, &format!("more than the {CELLS} rows of the grid")));
+        }
+        let table = EscapeTable::from_counts(counts, &source);
+        // The written probabilities must be the ones the counts give (a hand-edited or
+        // corrupted table is refused rather than silently recomputed).
+        let written = parse_p(text);
+        if let Some(k) = (0..CELLS).find(|&k| (written[k] - table.p[k]).abs() > 5e-7) {
+            return Err(Error::Input(format!(
+                "{what}: row {} gives p_escape = {} but its counts give {:.6} (edited or corrupted)",
+                k + 1,
+                written[k],
+                table.p[k]
+            )));
+        }
+        if table.counts.total() == 0 {
+            return Err(Error::Input(format!("{what}: no collisions counted")));
+        }
+        Ok(table)
+    }
+
+    /// The table shipped with the library: calibrated by `rebound calibrate --case
+    /// calibration/aniso.toml` on the (Δξ, Δζ) = (2.5°, 7.5°) wall of Radenkovic & Simonin
+    /// 2021, Sec. 3 (`scripts/calibrate.sh` regenerates it byte for byte).
+    pub fn builtin() -> &'static EscapeTable {
+        static T: OnceLock<EscapeTable> = OnceLock::new();
+        T.get_or_init(|| {
+            EscapeTable::parse(BUILTIN, "the built-in escape table")
+                .expect("the built-in escape table is checked by a test")
+        })
+    }
+
+    /// A `'static` copy of `self`, shared by every wall built with an equal table: wall
+    /// models are `Copy` and hold a reference, and a host building many walls from one
+    /// table keeps one copy. (Each distinct table is kept for the life of the process.)
+    pub fn intern(self) -> &'static EscapeTable {
+        static TABLES: Mutex<Vec<&'static EscapeTable>> = Mutex::new(Vec::new());
+        if self == *EscapeTable::builtin() {
+            return EscapeTable::builtin();
+        }
+        let mut v = TABLES.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(t) = v.iter().find(|t| ***t == self) {
+            return t;
+        }
+        let t: &'static EscapeTable = Box::leak(Box::new(self));
+        v.push(t);
+        t
+    }
+}
+
+/// The built-in table's text.
+pub const BUILTIN: &str = include_str!("../../configs/calibration/aniso-escape.csv");
+
+/// Bins `(lo, hi)` and the weight of `hi` for a bilinear read at `x` (centres at
+/// `min + (i + ½) dx`, clamped).
+#[inline]
+fn axis(x: f64, min: f64, dx: f64, bins: usize) -> (usize, usize, f64) {
+    let t = ((x - min) / dx - 0.5).clamp(0.0, (bins - 1) as f64);
+    let i = (t.floor() as usize).min(bins - 2);
+    (i, i + 1, t - i as f64)
+}
+
+/// The `p_escape` column of a table text already checked row by row.
+fn parse_p(text: &str) -> Vec<f64> {
+    text.lines()
+        .skip(3)
+        .take(CELLS)
+        .map(|l| {
+            l.rsplit(',')
+                .next()
+                .and_then(|v| v.parse().ok())
+                .unwrap_or(f64::NAN)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wall() -> Deviations {
+        Deviations {
+            delta_xi: 0.05,
+            delta_zeta: 0.12,
+        }
+    }
+
+    #[test]
+    fn the_builtin_table_parses_and_is_a_probability() {
+        let t = EscapeTable::builtin();
+        assert!(t.counts().total() > 1_000_000);
+        for stage in [Stage::First, Stage::Later] {
+            for x_in in [-7.0, -3.3, -0.1, 0.0, 0.4, 2.0, 9.0] {
+                let mut last = 0.0;
+                for k in 0..=90 {
+                    let x_out = k as f64 * 0.05;
+                    let p = t.p_escape(stage, x_in, x_out);
+                    assert!((0.0..=1.0).contains(&p), "{p}");
+                    // (The later stage is sparse and noisier: range only.)
+                    if stage == Stage::First && k > 0 && x_out < 3.0 {
+                        // Steeper rebounds escape more often (up to the counting noise).
+                        assert!(
+                            p > last - 0.08,
+                            "{stage:?} {x_in} {x_out}: {p} after {last}"
+                        );
+                    }
+                    last = p;
+                }
+            }
+        }
+        assert_eq!(t.p_escape(Stage::First, -1.0, 0.0), 0.0);
+        assert_eq!(t.p_escape(Stage::First, -1.0, -0.3), 0.0);
+        assert_eq!(t.p_escape(Stage::First, -1.0, 4.0), 1.0);
+        assert!(t.p_escape(Stage::First, f64::NAN, 1.0).is_finite());
+    }
+
+    #[test]
+    fn counts_round_trip_through_the_file_exactly() {
+        let mut c = EscapeCounts::default();
+        let w = wall();
+        let u_in = Vector3::new(1.0, -0.1, 0.3);
+        for k in 0..2000 {
+            let a = 0.001 + 0.0004 * k as f64;
+            let u_out = Vector3::new(a.cos(), a.sin(), 0.1);
+            let stage = if k % 3 == 0 {
+                Stage::Later
+            } else {
+                Stage::First
+            };
+            c.push(stage, &u_in, &u_out, &w, k % 5 != 0);
+        }
+        let t = EscapeTable::from_counts(c.clone(), "test");
+        let back = EscapeTable::parse(&t.to_csv(), "t").unwrap();
+        assert_eq!(back, t);
+        assert_eq!(back.counts(), &c);
+        assert_eq!(back.to_csv(), t.to_csv());
+    }
+
+    #[test]
+    fn bilinear_reading_hits_the_cell_centres() {
+        let mut c = EscapeCounts::default();
+        // One populated cell column: x_in bin 10, every x_out bin, p = i_out/40.
+        for i_out in 0..X_OUT_BINS {
+            let k = cell(Stage::First, 10, i_out);
+            c.collisions[k] = 400;
+            c.escaped[k] = 10 * i_out as u64;
+        }
+        let t = EscapeTable::from_counts(c, "t");
+        let x_in = X_IN_MIN + 10.5 * DX_IN;
+        for i_out in 0..X_OUT_BINS {
+            let x_out = (i_out as f64 + 0.5) * DX_OUT;
+            let p = t.p_escape(Stage::First, x_in, x_out);
+            assert!((p - i_out as f64 / 40.0).abs() < 1e-12);
+        }
+        // Half way between two centres: the mean; sparse bins take the populated one's value,
+        // and the later stage (empty) the first stage's.
+        let p = t.p_escape(Stage::Later, -5.9, 1.0);
+        assert!((p - 0.5 * (9.0 + 10.0) / 40.0).abs() < 1e-12, "{p}");
+    }
+
+    #[test]
+    fn malformed_or_mismatched_tables_are_one_line_errors() {
+        let good = EscapeTable::builtin().to_csv();
+        let lines: Vec<&str> = good.lines().collect();
+        let edit = |k: usize, to: &str| {
+            let mut l = lines.clone();
+            l[k] = to;
+            l.join("\n")
+        };
+        let row = lines[10];
+        let fields: Vec<&str> = row.split(',').collect();
+        let cases: Vec<(String, &str)> = vec![
+            (String::new(), "not an escape table"),
+            (good.replacen("v1", "v9", 1), "not an escape table"),
+            (edit(1, "source"), "# source"),
+            (edit(2, "a,b"), "header"),
+            (lines[..100].join("\n"), "truncated after 97"),
+            (edit(10, "first,1,2"), "3 fields"),
+            (
+                edit(10, &format!("later,{}", fields[1..].join(","))),
+                "does not match this version's grid",
+            ),
+            (
+                edit(
+                    10,
+                    &format!("first,{},9.999,{}", fields[1], fields[3..].join(",")),
+                ),
+                "does not match",
+            ),
+            (
+                edit(
+                    10,
+                    &format!(
+                        "{},{},{},x,{},{}",
+                        fields[0], fields[1], fields[2], fields[4], fields[5]
+                    ),
+                ),
+                "`x` is not a non-negative integer",
+            ),
+            (
+                edit(
+                    10,
+                    &format!("{},{},{},1,2,0.5", fields[0], fields[1], fields[2]),
+                ),
+                "2 escapes out of 1",
+            ),
+            (
+                edit(
+                    10,
+                    &format!(
+                        "{},{},{},{},{},1.5",
+                        fields[0], fields[1], fields[2], fields[3], fields[4]
+                    ),
+                ),
+                "not in [0, 1]",
+            ),
+            (
+                edit(
+                    10,
+                    &format!(
+                        "{},{},{},{},{},nan",
+                        fields[0], fields[1], fields[2], fields[3], fields[4]
+                    ),
+                ),
+                "`nan` is not a number",
+            ),
+            (format!("{good}first,0,0,0,0,0\n"), "more than the"),
+        ];
+        for (text, needle) in cases {
+            let e = EscapeTable::parse(&text, "`stochastic.escape_table` = \"t.csv\"")
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(needle), "{e} (wanted {needle})");
+            assert!(e.contains("t.csv"), "{e}");
+            assert!(!e.contains('\n'), "{e}");
+        }
+        // A probability that disagrees with its counts (hand-edited): refused.
+        let c: u64 = fields[3].parse().unwrap();
+        if c >= MIN_COUNT {
+            let e = EscapeTable::parse(
+                &edit(
+                    10,
+                    &format!(
+                        "{},{},{},{},{},0.999999",
+                        fields[0], fields[1], fields[2], fields[3], fields[4]
+                    ),
+                ),
+                "t",
+            );
+            assert!(e.unwrap_err().to_string().contains("edited or corrupted"));
+        }
+    }
+
+    #[test]
+    fn interning_keeps_one_copy_per_table() {
+        let a = EscapeTable::from_counts(EscapeCounts::default(), "x");
+        let p = a.clone().intern();
+        let q = a.intern();
+        assert!(std::ptr::eq(p, q));
+        assert!(std::ptr::eq(
+            EscapeTable::builtin().clone().intern(),
+            EscapeTable::builtin()
+        ));
+    }
+}

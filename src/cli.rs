@@ -10,7 +10,7 @@ use std::path::PathBuf;
 /// Particles bouncing off anisotropic rough walls: surfaces, deterministic bouncing,
 /// a stochastic wall model, and the peak elastic force of spheroids.
 #[derive(Parser, Debug)]
-#[command(name = "rebound", version, about, long_about = None)]
+#[command(name = "rebound", version = crate::BUILD_VERSION, about, long_about = None)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,

@@ -466,7 +466,7 @@ pub fn run_compare(
     let figs = write_overlays(dir, &a, &b, label_a, label_b)?;
     let mut run = toml::Table::new();
     run.insert("command".into(), "compare".into());
-    run.insert("version".into(), env!("CARGO_PKG_VERSION").into());
+    run.insert("version".into(), crate::BUILD_VERSION.into());
     run.insert("a".into(), a_dir.display().to_string().into());
     run.insert("b".into(), b_dir.display().to_string().into());
     run.insert("label_a".into(), label_a.into());

@@ -28,3 +28,14 @@ pub mod surface;
 pub mod tally;
 pub mod wall;
 pub mod wall_model;
+
+/// This build's identity: the package version, `+src.`, and a 64-bit FNV-1a digest (16 hex
+/// digits) of every `src/**/*.rs` file, `Cargo.toml` and `Cargo.lock` (`build.rs`), e.g.
+/// `0.1.0+src.0123456789abcdef`. The package version alone is the same for every commit; this
+/// changes whenever the code that produces results does. Partial tallies record it and
+/// `rebound merge` refuses shards of another build; `run.toml` records it as `version`.
+pub const BUILD_VERSION: &str = concat!(
+    env!("CARGO_PKG_VERSION"),
+    "+src.",
+    env!("ROUGHWALL_SOURCE_DIGEST")
+);

@@ -389,3 +389,82 @@ fn bad_shards_targets_and_merges_are_one_line_errors_and_write_nothing() {
     rebound(&["merge", "--out", nv, &s[0], &s[1], &s[2], &s[3]]).ok();
     assert!(never.join("summary.csv").is_file());
 }
+
+/// The `version = "…"` line of a partial tally: its build identity.
+fn partial_version(text: &str) -> String {
+    text.lines()
+        .find_map(|l| l.strip_prefix("version = \""))
+        .and_then(|v| v.strip_suffix('"'))
+        .expect("a version line")
+        .to_string()
+}
+
+#[test]
+fn shards_of_another_build_are_refused_naming_the_shard_and_both_versions() {
+    let tmp = tempfile::tempdir().unwrap();
+    let case = write_case(tmp.path(), "c.toml", CASE);
+    let shard = |k: u32| {
+        let d = out(tmp.path(), &format!("s{k}"));
+        run_case("stochastic", &case, &d, &["--shard", &format!("{k}/2")]);
+        d
+    };
+    let (s1, s2) = (shard(1), shard(2));
+
+    // The build identity: the package version and a digest of the sources, the same in
+    // `--version`, in the partial tally and in the merged `run.toml`.
+    let file = s2.join("partial.toml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let this = partial_version(&text);
+    let (package, digest) = this.split_once("+src.").expect("VERSION+src.DIGEST");
+    assert_eq!(package, env!("CARGO_PKG_VERSION"));
+    assert!(
+        digest.len() == 16 && digest.bytes().all(|b| b.is_ascii_hexdigit()),
+        "{this}"
+    );
+    assert_eq!(this, roughwall::BUILD_VERSION);
+    let shown = rebound(&["--version"]).ok().stdout;
+    assert_eq!(shown.trim(), format!("rebound {this}"));
+    let together = out(tmp.path(), "together");
+    rebound(&[
+        "merge",
+        "--out",
+        together.to_str().unwrap(),
+        s1.to_str().unwrap(),
+        s2.to_str().unwrap(),
+    ])
+    .ok();
+    let manifest = std::fs::read_to_string(together.join("run.toml")).unwrap();
+    assert!(
+        manifest.contains(&format!("version = \"{this}\"")),
+        "{manifest}"
+    );
+
+    // The same package version from other sources: only the digest differs, and the file
+    // stays valid (its checksum is recomputed as the library computes it).
+    let other_digest = if digest == "0123456789abcdef" {
+        "fedcba9876543210"
+    } else {
+        "0123456789abcdef"
+    };
+    let other = format!("{package}+src.{other_digest}");
+    let body = &text[..text.trim_end().rfind('\n').unwrap() + 1];
+    assert_eq!(roughwall::tally::partial::sealed(body), text);
+    let needle = format!("version = \"{this}\"\n");
+    assert_eq!(body.matches(&needle).count(), 1);
+    let rewritten = body.replacen(&needle, &format!("version = \"{other}\"\n"), 1);
+    std::fs::write(&file, roughwall::tally::partial::sealed(&rewritten)).unwrap();
+
+    let never = out(tmp.path(), "never");
+    let run = rebound(&[
+        "merge",
+        "--out",
+        never.to_str().unwrap(),
+        s1.to_str().unwrap(),
+        s2.to_str().unwrap(),
+    ]);
+    run.refused(&file.display().to_string());
+    run.refused(&format!(
+        "written by rebound {other}, this is rebound {this}"
+    ));
+    assert!(!never.exists(), "a refused merge wrote output");
+}

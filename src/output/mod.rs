@@ -105,7 +105,7 @@ impl Manifest {
     pub fn new(command: &str, case: &crate::case::Case, seed: u64, threads: usize) -> Manifest {
         let mut run = toml::Table::new();
         run.insert("command".into(), command.into());
-        run.insert("version".into(), env!("CARGO_PKG_VERSION").into());
+        run.insert("version".into(), crate::BUILD_VERSION.into());
         run.insert("seed".into(), toml::Value::Integer(seed as i64));
         run.insert("threads".into(), toml::Value::Integer(threads as i64));
         let mut root = toml::Table::new();

@@ -5,8 +5,9 @@
 //! thread count; a worker fills one block in particle order; blocks are absorbed into
 //! their condition in block order. Workers run at most a few blocks ahead of the oldest
 //! unfinished one, so memory does not grow with the particle count. The stopping rule is
-//! checked after each absorbed block, on the tally of the blocks before it only, so where
-//! a condition stops does not depend on the threads either.
+//! checked after each absorbed block, on the tally of that block and the blocks before it
+//! (never on blocks finished out of order), so where a condition stops does not depend on
+//! the threads either.
 
 use super::condition::{BlockTally, ConditionTally, TallySpec};
 use crate::progress::Progress;
@@ -151,7 +152,8 @@ type Finished = (usize, Option<(BlockTally, f64)>);
 
 impl Shared {
     /// Absorbs every finished block that is next in line; checks the stopping rule after
-    /// each, on the tally of the blocks before it only.
+    /// each, on the tally of that block and the blocks before it (all absorbed in block
+    /// order, none finished out of order).
     fn absorb_ready(&mut self, plan: &Plan, done: &[AtomicBool], progress: &Progress) {
         while let Some((k, finished)) = self.waiting.remove(&self.absorbed) {
             self.absorbed += 1;

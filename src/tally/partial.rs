@@ -1,7 +1,8 @@
 //! Partial tallies: what `--shard K/N` writes instead of final outputs, and what
 //! `rebound merge` reads back.
 //!
-//! A partial tally is a TOML file that describes itself: format version, tool version,
+//! A partial tally is a TOML file that describes itself: format version, build identity
+//! ([`crate::BUILD_VERSION`]: the tool version and a digest of its sources),
 //! the command, the case text with every override, the seed, the shard, a digest of all
 //! of these, and per condition the integer tallies plus one record of moments per block
 //! (floats as exact bit patterns). Its last line is a SHA-256 of everything before it, so
@@ -29,6 +30,12 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
         .collect()
 }
 
+/// A partial tally's text: `body` followed by its checksum line (`# sha256 ` and the SHA-256
+/// of `body`), as [`Partial::write`] writes it and [`PartialFile::read`] checks it.
+pub fn sealed(body: &str) -> String {
+    format!("{body}{CHECKSUM_PREFIX}{}\n", sha256_hex(body.as_bytes()))
+}
+
 /// Everything that makes two runs the same run: shards must agree on all of it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -51,11 +58,11 @@ pub struct RunIdentity {
 }
 
 impl RunIdentity {
-    /// A digest of everything but `case_origin`, and of the tool's version.
+    /// A digest of everything but `case_origin`, and of the build identity.
     pub fn digest(&self) -> String {
         let mut h = Sha256::new();
         for part in [
-            env!("CARGO_PKG_VERSION"),
+            crate::BUILD_VERSION,
             &self.command,
             &self.case_text,
             &self.seed,
@@ -210,7 +217,7 @@ impl Partial {
         let head = FileHead {
             format: FORMAT.into(),
             format_version: FORMAT_VERSION,
-            version: env!("CARGO_PKG_VERSION").into(),
+            version: crate::BUILD_VERSION.into(),
             case_digest: self.identity.digest(),
             shard: self.shard.to_string(),
             block_size: BLOCK_SIZE as i64,
@@ -220,13 +227,9 @@ impl Partial {
             manifest: self.manifest.clone(),
             conditions,
         };
-        let mut text =
+        let body =
             toml::to_string(&head).map_err(|e| Error::Io(format!("{}: {e}", path.display())))?;
-        let sum = sha256_hex(text.as_bytes());
-        text.push_str(CHECKSUM_PREFIX);
-        text.push_str(&sum);
-        text.push('\n');
-        crate::output::write_atomic(path, text.as_bytes())
+        crate::output::write_atomic(path, sealed(&body).as_bytes())
     }
 }
 
@@ -281,11 +284,11 @@ impl PartialFile {
                 head.format, head.format_version
             )));
         }
-        if head.version != env!("CARGO_PKG_VERSION") {
+        if head.version != crate::BUILD_VERSION {
             return Err(bad(&format!(
-                "written by rebound {}, this is rebound {}: rerun the shard with this version",
+                "written by rebound {}, this is rebound {} (another build): rerun the shard with this build",
                 head.version,
-                env!("CARGO_PKG_VERSION")
+                crate::BUILD_VERSION
             )));
         }
         if head.block_size != BLOCK_SIZE as i64 {

@@ -143,6 +143,7 @@ fn bench_variants(c: &mut Criterion) {
             let v = Variant {
                 kind,
                 delta_gamma: None,
+                escape: None,
             };
             g.bench_function(format!("{}_{}", s.name, kind.name()), |b| {
                 b.iter(|| black_box(tallied_block_with(s, n, None, v)))

@@ -89,6 +89,12 @@
 #define RW_MODEL_NORMAL_PERTURBATION 4
 
 /*
+ The paper's virtual walls with an escape law calibrated on the deterministic simulation,
+ multiple collisions followed (`escape_table_csv`; NULL: the built-in table).
+ */
+#define RW_MODEL_CALIBRATED 5
+
+/*
  An immutable wall handle, safe to share between threads.
  */
 typedef struct rw_wall rw_wall;
@@ -138,6 +144,12 @@ typedef struct {
    The isotropic models' roughness angle Δγ (degrees, 0 … 20); NaN: `(Δξ + Δζ)/2`.
    */
   double delta_gamma_deg;
+  /*
+   `RW_MODEL_CALIBRATED` only: the escape table as the NUL-terminated text
+   `rebound calibrate` writes (`escape_table.csv`); NULL: the built-in table. The
+   handle keeps its own copy (the text may be freed after `rw_wall_new`).
+   */
+  const char *escape_table_csv;
 } rw_wall_params;
 
 /*

@@ -588,20 +588,52 @@ mod tests {
         for (i, kind) in crate::stochastic::VariantKind::ALL.iter().enumerate() {
             let mut p = params();
             p.model = i as i32;
-            if i > 0 {
+            if !kind.anisotropic() {
                 p.delta_gamma_deg = 4.0;
             }
             let (s, w, msg) = wall(&p);
             assert_eq!((s, msg.as_str()), (RW_OK, ""), "{}", kind.name());
             let handle = unsafe { &*w }.model;
             assert_eq!(handle.variant.kind, *kind);
-            let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
-            assert_eq!(unsafe { rw_rebound(w, &hit(1), r.as_mut_ptr()) }, RW_OK);
-            first.push(unsafe { r.assume_init() }.velocity.map(f64::to_bits));
+            // Twenty hits: two models may agree on one hit (e.g. the paper's and the
+            // calibrated one when both accept the first wall element), not on all.
+            let bits: Vec<[u64; 3]> = (0..20)
+                .map(|i| {
+                    let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
+                    assert_eq!(unsafe { rw_rebound(w, &hit(i), r.as_mut_ptr()) }, RW_OK);
+                    unsafe { r.assume_init() }.velocity.map(f64::to_bits)
+                })
+                .collect();
+            first.push(bits);
             unsafe { rw_wall_free(w) };
         }
+        let n = first.len();
+        first.sort();
         first.dedup();
-        assert_eq!(first.len(), 5, "the models gave the same rebound");
+        assert_eq!(first.len(), n, "two models gave the same rebound");
+        // The calibrated model's table travels with the handle, as text: the built-in
+        // table's text is the NULL default; a bad text is a one-line refusal.
+        let rebound_with = |table: Option<&std::ffi::CString>| {
+            let mut p = params();
+            p.model = RW_MODEL_CALIBRATED;
+            p.escape_table_csv = table.map_or(std::ptr::null(), |t| t.as_ptr());
+            let (s, w, msg) = wall(&p);
+            if s != RW_OK {
+                return Err(msg);
+            }
+            let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
+            assert_eq!(unsafe { rw_rebound(w, &hit(3), r.as_mut_ptr()) }, RW_OK);
+            unsafe { rw_wall_free(w) };
+            Ok(unsafe { r.assume_init() }.velocity.map(f64::to_bits))
+        };
+        let builtin = std::ffi::CString::new(crate::stochastic::escape_table::BUILTIN).unwrap();
+        assert_eq!(rebound_with(None), rebound_with(Some(&builtin)));
+        let bad = std::ffi::CString::new("alpha,beta\n").unwrap();
+        let msg = rebound_with(Some(&bad)).unwrap_err();
+        assert!(
+            msg.contains("stochastic.escape_table") && !msg.contains('\n'),
+            "{msg}"
+        );
         for (model, dg, key) in [
             (9, f64::NAN, "model"),
             (2, -1.0, "delta_gamma_deg"),

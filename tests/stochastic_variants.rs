@@ -26,6 +26,7 @@ fn variant(kind: VariantKind) -> Variant {
     Variant {
         kind,
         delta_gamma: None,
+        escape: None,
     }
 }
 
@@ -115,10 +116,11 @@ fn smooth_wall_is_one_specular_collision_for_every_variant() {
             }
         }
         // A rough wall with Δγ = 0 given to an isotropic variant: every element is flat.
-        if kind != VariantKind::RadenkovicSimonin2021 {
+        if !kind.anisotropic() {
             let flat = Variant {
                 kind,
                 delta_gamma: Some(0.0),
+                escape: None,
             };
             let out = run(
                 flat,

@@ -723,10 +723,12 @@ impl Case {
         let escape = match (&st.escape_table, kind) {
             (None, _) => None,
             (Some(path), VariantKind::Calibrated) => Some(read_escape_table(path)?),
-            (Some(_), _) => return Err(Error::Input(format!(
+            (Some(_), _) => {
+                return Err(Error::Input(format!(
                 "`stochastic.escape_table` applies to model = \"calibrated\" only (model = \"{}\")",
                 kind.name()
-            ))),
+            )))
+            }
         };
         Ok(Variant {
             kind,

@@ -4,6 +4,7 @@
 //! `speed_vs_error.csv`/`.svg`.
 //! Every number in the report is read from a file in `results/`; a missing run is said so.
 
+pub mod calibration;
 pub mod erosion;
 pub mod finite_size;
 pub mod paper;
@@ -32,6 +33,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     sections::sec4(results, &mut md)?;
     sections::hu(results, &mut md)?;
     wall_models::wall_models(results, &mut md)?;
+    calibration::calibration(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
     finite_size::finite_size(results, &mut md)?;
     spin::spin(results, &mut md)?;

@@ -123,7 +123,7 @@ impl EscapeCounts {
             return;
         }
         let x_out = reduced_angle(u_out, wall);
-        if !(x_out < X_OUT_MAX) {
+        if x_out.is_nan() || x_out >= X_OUT_MAX {
             return;
         }
         let x_in = reduced_angle(u_in, wall);
@@ -219,7 +219,7 @@ impl EscapeTable {
     /// bin centres, clamped at the edges; 1 beyond `x_out = 4`, 0 for `x_out ≤ 0`).
     #[inline]
     pub fn p_escape(&self, stage: Stage, x_in: f64, x_out: f64) -> f64 {
-        if !(x_out > 0.0) {
+        if x_out.is_nan() || x_out <= 0.0 {
             return 0.0;
         }
         if x_out >= X_OUT_MAX {

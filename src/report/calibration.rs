@@ -1,0 +1,203 @@
+//! The calibrated model's section of `REPORT.md` (`scripts/calibrate.sh`): the paper's
+//! stochastic model and `calibrated`, both with the deviations measured on the deterministic
+//! surface, against `deterministic` at 10⁶ particles per condition; writes
+//! `calibration/calibration.csv`. Every number is read from the runs' `compare` outputs.
+
+use crate::error::Result;
+use crate::output::csv::{num, run_toml, Rows};
+use crate::output::{fmt_num, CsvTable};
+use std::fmt::Write;
+use std::path::Path;
+
+const SCENES: [(&str, &str); 7] = [
+    (
+        "aniso",
+        "Sec. 3, (2.5°, 7.5°), elastic — the calibration wall",
+    ),
+    ("aniso-rev", "Sec. 3, (7.5°, 2.5°), elastic"),
+    ("glass-steel", "Sec. 4, (3.8°, 7.5°), Sommerfeld–Huber"),
+    ("glass-steel-2d", "Sec. 4, (3.8°, 0°), Sommerfeld–Huber"),
+    ("glass-steel-iso", "Sec. 4, (3.8°, 3.8°), Sommerfeld–Huber"),
+    ("test-5-5", "(5°, 5°), elastic — not calibrated on"),
+    ("test-4-1", "(4°, 1°), elastic — not calibrated on"),
+];
+const MODELS: [&str; 2] = ["radenkovic-simonin-2021", "calibrated"];
+
+/// Worst case over the conditions with `|α⁻| ≥ min_alpha`.
+#[derive(Clone, Copy, Debug, Default)]
+struct Worst {
+    ks_alpha: f64,
+    ks_dbeta: f64,
+    bias_alpha: f64,
+    z_alpha: f64,
+    ks_gamma_first: f64,
+}
+
+fn worst(c: &Rows, min_alpha: f64) -> Worst {
+    let mut w = Worst::default();
+    for r in &c.rows {
+        if num(r, "alpha_in_deg").is_none_or(|a| a.abs() < min_alpha) {
+            continue;
+        }
+        let (Some(ks), Some(a), Some(b)) = (num(r, "ks"), num(r, "mean_a"), num(r, "mean_b"))
+        else {
+            continue;
+        };
+        match r.get("quantity").map_or("", String::as_str) {
+            "alpha_out" => {
+                w.ks_alpha = w.ks_alpha.max(ks);
+                w.bias_alpha = w.bias_alpha.max((b - a).abs());
+                w.z_alpha = w.z_alpha.max(num(r, "z").unwrap_or(0.0).abs());
+            }
+            "dbeta" => w.ks_dbeta = w.ks_dbeta.max(ks),
+            "gamma_first" => w.ks_gamma_first = w.ks_gamma_first.max(ks),
+            _ => {}
+        }
+    }
+    w
+}
+
+/// ns per rebound of a stochastic run (wall clock, all threads).
+fn ns_per_rebound(dir: &Path) -> Option<f64> {
+    let t = run_toml(dir)?;
+    let run = t.get("run")?;
+    let secs = run.get("compute_s")?.as_float()?;
+    let per = run.get("particles_per_condition")?.as_integer()? as f64;
+    let n = t.get("conditions")?.as_array()?.len() as f64;
+    (per * n > 0.0).then(|| 1e9 * secs / (per * n))
+}
+
+pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
+    md.push_str("## A model within the deterministic noise? The calibrated escape law\n\n");
+    let dir = results.join("calibration");
+    let mut table = CsvTable::new(&[
+        "scene",
+        "model",
+        "min_abs_alpha_in_deg",
+        "max_ks_alpha_out",
+        "max_ks_dbeta",
+        "max_abs_bias_mean_alpha_out_deg",
+        "max_abs_z_alpha_out",
+        "max_ks_gamma_first",
+    ]);
+    let mut lines = String::new();
+    let mut particles = None;
+    // (scene, model, |α⁻| ≥ 2.5°, |α⁻| ≥ 5°)
+    let mut scores: Vec<(&str, &str, Worst, Worst)> = Vec::new();
+    for (scene, label) in SCENES {
+        for model in MODELS {
+            let run = dir.join(scene).join(model);
+            let Some(c) = Rows::read(&run.join("compare/comparison.csv"))? else {
+                continue;
+            };
+            particles = particles.or_else(|| {
+                run_toml(&run.join("stochastic"))
+                    .and_then(|t| t.get("run")?.get("particles_per_condition")?.as_integer())
+            });
+            let all = worst(&c, 2.5);
+            let steep = worst(&c, 5.0);
+            scores.push((scene, model, all, steep));
+            for (min, w) in [(2.5, all), (5.0, steep)] {
+                table.push(vec![
+                    scene.into(),
+                    model.into(),
+                    fmt_num(min),
+                    fmt_num(w.ks_alpha),
+                    fmt_num(w.ks_dbeta),
+                    fmt_num(w.bias_alpha),
+                    fmt_num(w.z_alpha),
+                    fmt_num(w.ks_gamma_first),
+                ]);
+            }
+            let _ = writeln!(
+                lines,
+                "| {scene} ({label}) | {model} | {:.4} / {:.4} | {:.4} / {:.4} | {:.3} / {:.3} | {:.4} | {} |",
+                all.ks_alpha,
+                steep.ks_alpha,
+                all.ks_dbeta,
+                steep.ks_dbeta,
+                all.bias_alpha,
+                steep.bias_alpha,
+                steep.ks_gamma_first,
+                ns_per_rebound(&run.join("stochastic")).map_or("–".into(), |x| format!("{x:.0}")),
+            );
+        }
+    }
+    if lines.is_empty() {
+        let _ = writeln!(
+            md,
+            "*Not run: `{}` is missing (`scripts/calibrate.sh`).*\n",
+            dir.display()
+        );
+        return Ok(());
+    }
+    table.write(&dir.join("calibration.csv"))?;
+    let shipped = std::fs::read_to_string(dir.join("table/shipped.txt")).unwrap_or_default();
+    let n = particles.unwrap_or(0);
+    let noise = if n > 0 {
+        1.36 * (2.0 / n as f64).sqrt()
+    } else {
+        f64::NAN
+    };
+    let _ = write!(
+        md,
+        "`[stochastic] model = \"calibrated\"` keeps the paper's virtual walls (Eqs. 26, 29–33) but \
+         replaces the single-collision law (Eq. 34) by an escape probability \
+         P(escape | stage, α/Δγ(β), α⁺/Δγ(β⁺)) that `rebound calibrate` measures on the deterministic \
+         simulation, and follows multiple collisions instead of redrawing them (a trapped particle meets \
+         the wall again with its rebound velocity). The shipped table is calibrated on the (2.5°, 7.5°) \
+         wall only ({}). Both models run here with the deviations **measured on the deterministic \
+         surface** (its `run.toml`: the generated, triangulated surfaces have a few per cent less slope than \
+         nominal, and run with the nominal deviations a model is also judged on that difference), {n} particles per condition \
+         for both models (two-sample KS noise at 95 %: {noise:.4}). Cells: all conditions with |α⁻| ≥ 2.5° / \
+         only |α⁻| ≥ 5°; `max KS γ first` is the first wall element's law (the paper's shadow law against \
+         the deterministic surface), which the escape law cannot change. Table: `calibration/calibration.csv`.\n\n\
+         | scene | model | max KS α⁺ | max KS β⁺−β⁻ | max \\|bias\\| mean α⁺ (°) | max KS γ first (\\|α⁻\\| ≥ 5°) | ns/rebound |\n\
+         |---|---|---|---|---|---|---|\n{lines}\n",
+        shipped.trim().trim_end_matches('.'),
+    );
+    // Reading, from the numbers above.
+    let meets = |w: &Worst| w.ks_alpha <= 0.005 && w.ks_dbeta <= 0.005 && w.bias_alpha <= 0.05;
+    let list = |pick: &dyn Fn(&Worst, &Worst) -> bool| -> Vec<&str> {
+        scores
+            .iter()
+            .filter(|s| s.1 == "calibrated" && pick(&s.2, &s.3))
+            .map(|s| s.0)
+            .collect()
+    };
+    let all_ok = list(&|a, _| meets(a));
+    let steep_ok = list(&|_, b| meets(b));
+    let improved: Vec<String> = scores
+        .iter()
+        .filter(|s| s.1 == "calibrated")
+        .filter_map(|c| {
+            let p = scores
+                .iter()
+                .find(|s| s.0 == c.0 && s.1 == "radenkovic-simonin-2021")?;
+            Some(format!("{} {:.4} → {:.4}", c.0, p.2.ks_alpha, c.2.ks_alpha))
+        })
+        .collect();
+    let name = |v: &[&str]| {
+        if v.is_empty() {
+            "none".to_string()
+        } else {
+            v.join(", ")
+        }
+    };
+    let _ = write!(
+        md,
+        "Reading. The goal (max KS of α⁺ and of β⁺ − β⁻ ≤ 0.005 and |bias| of mean α⁺ ≤ 0.05°) is met \
+         by `calibrated` at |α⁻| ≥ 2.5° on: {}; at |α⁻| ≥ 5° on: {}. Max KS of α⁺ (|α⁻| ≥ 2.5°), paper → \
+         calibrated: {}. Where the goal is missed, the first wall element's law is off (column `max KS γ \
+         first`, and at grazing incidence more so: see `compare/comparison.csv`, quantity `gamma_first`): \
+         the deterministic particles meet elements steeper on average than the shadow law of Eqs. 31–33 \
+         gives. The escape law cannot change that; the next step is to calibrate the first element's law \
+         as well (a tabulated correction of Eq. 31 by α⁻/Δγ), not a different escape law. ns/rebound is \
+         the whole run's compute time on 2 threads (measured while other jobs ran; `docs/performance.md` \
+         has the benchmark).\n\n",
+        name(&all_ok),
+        name(&steep_ok),
+        improved.join("; "),
+    );
+    Ok(())
+}

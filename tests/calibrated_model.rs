@@ -1,0 +1,196 @@
+//! The `calibrated` wall model: `rebound calibrate` writes an escape table that reads back
+//! equal to its source run, the stochastic model takes it by case key (or the built-in one),
+//! and malformed or mismatched tables are one-line errors.
+mod common;
+
+use roughwall::stochastic::escape_table::{EscapeTable, Stage};
+use std::path::Path;
+
+const CASE: &str = "name = \"cal\"\nseed = 7\n[wall]\ndelta_xi_deg = 3.0\ndelta_zeta_deg = 6.0\n\
+                    [incidence]\nalpha_deg = [-3.0, -12.5]\nbeta_deg = [0.0, 90.0]\n\
+                    [particles]\ncount = 3000\n[collision]\nmodel = \"elastic\"\n";
+
+fn calibrate(dir: &Path, threads: &str) -> std::path::PathBuf {
+    let case = common::write_case(dir, "cal.toml", CASE);
+    common::run_case(
+        "calibrate",
+        &case,
+        &dir.join(format!("t{threads}")),
+        &["--threads", threads],
+    )
+}
+
+#[test]
+fn the_table_reads_back_equal_to_its_source_run() {
+    let tmp = tempfile::tempdir().unwrap();
+    let a = calibrate(tmp.path(), "1");
+    let b = calibrate(tmp.path(), "2");
+    let text = std::fs::read_to_string(a.join("escape_table.csv")).unwrap();
+    assert_eq!(
+        text,
+        std::fs::read_to_string(b.join("escape_table.csv")).unwrap()
+    );
+    let table = EscapeTable::parse(&text, "t").unwrap();
+
+    // The same histories counted through the library: the same table.
+    use roughwall::commands::deterministic::{generate_surface, prepare};
+    use roughwall::deterministic::{calibrate::escape_counts, Tracker};
+    let case = roughwall::case::parse(CASE, "cal").unwrap();
+    let p = prepare(&case, &Default::default(), None).unwrap();
+    let field = generate_surface(p.surface.as_ref().unwrap(), 7).unwrap();
+    let tracker = Tracker::new(&field, p.options.max_collisions).unwrap();
+    let mut setup = p.setup;
+    setup.wall = roughwall::surface::stats::measured_deviations(&field);
+    let counts = escape_counts(&tracker, &setup, &p.scene.conditions, 3000, 7);
+    assert_eq!(table.counts(), &counts);
+
+    // Against the deterministic run of the same case and seed: every history's first
+    // collision is counted once at most, and a counted first collision escapes exactly when
+    // the history had one collision.
+    let det = common::run_case(
+        "deterministic",
+        &common::write_case(tmp.path(), "det.toml", CASE),
+        &tmp.path().join("det"),
+        &[],
+    );
+    let s = common::Csv::read(&det.join("summary.csv"));
+    let (mut followed, mut single) = (0.0, 0.0);
+    for row in &s.rows {
+        let n = s.num(row, "particles") - s.num(row, "lost");
+        followed += n;
+        single += s.num(row, "p_single") * n;
+    }
+    let first: u64 = (0..roughwall::stochastic::escape_table::X_IN_BINS)
+        .flat_map(|i| (0..roughwall::stochastic::escape_table::X_OUT_BINS).map(move |o| (i, o)))
+        .map(|(i, o)| {
+            let k = (i * roughwall::stochastic::escape_table::X_OUT_BINS) + o;
+            counts.collisions[k]
+        })
+        .sum();
+    let first_escaped: u64 = (0..roughwall::stochastic::escape_table::X_IN_BINS
+        * roughwall::stochastic::escape_table::X_OUT_BINS)
+        .map(|k| counts.escaped[k])
+        .sum();
+    assert!(
+        first as f64 <= followed,
+        "{first} first collisions of {followed} histories"
+    );
+    assert!(first as f64 > 0.5 * followed, "{first} of {followed}");
+    // Single-collision histories whose rebound is steeper than the table (x_out ≥ 4) are
+    // not counted: fewer escapes than single collisions, but most of them.
+    assert!(
+        first_escaped as f64 <= single.round() + 0.5,
+        "{first_escaped} > {single}"
+    );
+    assert!(
+        first_escaped as f64 > 0.5 * single,
+        "{first_escaped} vs {single}"
+    );
+    let manifest = std::fs::read_to_string(a.join("run.toml")).unwrap();
+    assert!(manifest.contains("measured_delta_xi_deg"), "{manifest}");
+}
+
+#[test]
+fn the_stochastic_model_takes_the_table_by_key_or_the_built_in_one() {
+    let tmp = tempfile::tempdir().unwrap();
+    let table = calibrate(tmp.path(), "2").join("escape_table.csv");
+    let builtin = tmp.path().join("builtin.csv");
+    std::fs::write(&builtin, roughwall::stochastic::escape_table::BUILTIN).unwrap();
+    let run = |name: &str, extra: &str| {
+        let case = common::write_case(
+            tmp.path(),
+            &format!("{name}.toml"),
+            &format!("{CASE}[stochastic]\nmodel = \"calibrated\"\n{extra}"),
+        );
+        let out = common::run_case("stochastic", &case, &tmp.path().join(name), &[]);
+        std::fs::read(out.join("summary.csv")).unwrap()
+    };
+    let default = run("default", "");
+    let same = run(
+        "same",
+        &format!("escape_table = \"{}\"\n", builtin.display()),
+    );
+    let own = run("own", &format!("escape_table = \"{}\"\n", table.display()));
+    assert_eq!(
+        default, same,
+        "the built-in table given as a file changed the run"
+    );
+    assert_ne!(default, own, "a different table gave the same run");
+}
+
+#[test]
+fn bad_tables_are_refused_in_one_line() {
+    let tmp = tempfile::tempdir().unwrap();
+    let good = roughwall::stochastic::escape_table::BUILTIN;
+    let write = |name: &str, text: &str| {
+        let p = tmp.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let half: Vec<&str> = good.lines().take(900).collect();
+    let truncated = write("trunc.csv", &half.join("\n"));
+    let not_table = write("other.csv", "alpha,beta\n1,2\n");
+    let lines: Vec<&str> = good.lines().collect();
+    let mut shifted = lines.clone();
+    shifted[3] = "first,-5.500,0.050,10,1,0.100000";
+    let shifted = write("shifted.csv", &shifted.join("\n"));
+    for (model, path, needle) in [
+        (
+            "calibrated",
+            truncated.display().to_string(),
+            "truncated after",
+        ),
+        (
+            "calibrated",
+            not_table.display().to_string(),
+            "not an escape table",
+        ),
+        (
+            "calibrated",
+            shifted.display().to_string(),
+            "does not match this version's grid",
+        ),
+        ("calibrated", "no/such/table.csv".into(), "file not found"),
+        (
+            "radenkovic-simonin-2021",
+            truncated.display().to_string(),
+            "applies to model = \"calibrated\" only",
+        ),
+    ] {
+        let case = common::write_case(
+            tmp.path(),
+            "bad.toml",
+            &format!("{CASE}[stochastic]\nmodel = \"{model}\"\nescape_table = \"{path}\"\n"),
+        );
+        common::refuse_case("stochastic", &case, tmp.path(), needle);
+        common::refuse_case("stochastic", &case, tmp.path(), "stochastic.escape_table");
+    }
+    let sphere = common::write_case(
+        tmp.path(),
+        "sphere.toml",
+        &format!("{CASE}[particles.x]\n")
+            .replace(
+                "[particles]\ncount = 3000\n",
+                "[particles]\ncount = 3000\ndiameter_um = 50.0\n",
+            )
+            .replace(
+                "[particles.x]\n",
+                "[deterministic]\ncontact = \"sphere\"\nrms_height_um = 1.0\n",
+            ),
+    );
+    common::refuse_case("calibrate", &sphere, tmp.path(), "deterministic.contact");
+}
+
+#[test]
+fn later_collisions_follow_the_table_of_the_later_stage() {
+    // The model's two stages differ where the deterministic run says they do: a particle
+    // trapped after a first collision escapes less easily at the same reduced angles.
+    let t = EscapeTable::builtin();
+    let mut lower = 0;
+    for x_out in [0.2, 0.4, 0.6, 0.8] {
+        if t.p_escape(Stage::Later, -1.0, x_out) < t.p_escape(Stage::First, -1.0, x_out) {
+            lower += 1;
+        }
+    }
+    assert!(lower >= 3, "later-stage escape not lower at 3 of 4 points");
+}

@@ -29,7 +29,8 @@
 #define RW_INVALID_INPUT 2
 
 /*
- A wall parameter out of its range (see the message of `rw_wall_new`).
+ A wall parameter out of its range (see the message of `rw_wall_new`), or a `threads`
+ argument of `rw_rebound_batch` above `RW_MAX_THREADS`.
  */
 #define RW_INVALID_PARAMETER 3
 
@@ -39,9 +40,16 @@
 #define RW_NULL_POINTER 4
 
 /*
- A bug in the library (a Rust panic, caught at the boundary); please report it.
+ A bug in the library (a Rust panic, caught at the boundary); please report it. The
+ outputs of the call are then unspecified (a batch may be partly written).
  */
 #define RW_INTERNAL_ERROR 5
+
+/*
+ The most threads `rw_rebound_batch` accepts (more is `RW_INVALID_PARAMETER`): far above
+ the cores of any node a CFD rank runs on, far below what exhausts a process's threads.
+ */
+#define RW_MAX_THREADS 1024
 
 /*
  Ideally elastic, frictionless collisions (Radenkovic & Simonin 2021, Sec. 3.1).
@@ -162,7 +170,8 @@ typedef struct {
   double velocity[3];
   double spin[3];
   /*
-   Face normal, either orientation, any non-zero length.
+   Face normal, either orientation, any non-zero length (one of unit length to
+   round-off is used as given, as the host's own rebound uses it).
    */
   double normal[3];
   /*
@@ -314,7 +323,8 @@ void rw_wall_free(rw_wall *wall);
 /*
  The rebound of one hit, into `*result`. Returns the hit's status (also in
  `result->status`): `RW_OK` (a rebound), `RW_NOT_APPROACHING` or `RW_INVALID_INPUT` (the
- particle is returned unchanged), or `RW_NULL_POINTER`. Allocates nothing, starts no thread.
+ particle is returned unchanged), or `RW_NULL_POINTER` (nothing written). Allocates
+ nothing, starts no thread.
 
  # Safety
  `wall` is NULL or a live handle; `hit` is NULL or valid; `result` is NULL or writable.
@@ -323,9 +333,13 @@ int32_t rw_rebound(const rw_wall *wall, const rw_hit *hit, rw_result *result);
 
 /*
  The rebounds of `batch->n` hits (each exactly as `rw_rebound` gives it, whatever the
- thread count), per-hit statuses in `batch->out_status`. `threads` ≤ 1 runs in the calling
- thread; more splits the hits over that many threads, started and joined in this call.
- Returns `RW_OK`, or `RW_NULL_POINTER` when a required array is NULL (nothing written).
+ thread count), per-hit statuses in `batch->out_status`: bad hits get their status
+ (`RW_INVALID_INPUT`, …) and finite outputs, the others are rebounded. `threads` ≤ 1
+ runs in the calling thread; 2 … `RW_MAX_THREADS` splits the hits over that many
+ threads (at most one per hit), started and joined in this call (a thread the system
+ refuses to start leaves its share to the calling thread). Returns `RW_OK`;
+ `RW_NULL_POINTER` when `wall`, `batch` or a required array is NULL, and
+ `RW_INVALID_PARAMETER` when `threads` > `RW_MAX_THREADS`: then nothing is written.
 
  # Safety
  `wall` is NULL or a live handle; `batch` is NULL or valid, with every non-NULL array

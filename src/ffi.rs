@@ -22,12 +22,18 @@ pub const RW_NOT_APPROACHING: i32 = 1;
 /// A non-finite number, a zero-length normal, a lay direction parallel to the normal or a
 /// negative diameter: the particle is returned unchanged (non-finite components as 0).
 pub const RW_INVALID_INPUT: i32 = 2;
-/// A wall parameter out of its range (see the message of `rw_wall_new`).
+/// A wall parameter out of its range (see the message of `rw_wall_new`), or a `threads`
+/// argument of `rw_rebound_batch` above `RW_MAX_THREADS`.
 pub const RW_INVALID_PARAMETER: i32 = 3;
 /// A required pointer was NULL.
 pub const RW_NULL_POINTER: i32 = 4;
-/// A bug in the library (a Rust panic, caught at the boundary); please report it.
+/// A bug in the library (a Rust panic, caught at the boundary); please report it. The
+/// outputs of the call are then unspecified (a batch may be partly written).
 pub const RW_INTERNAL_ERROR: i32 = 5;
+
+/// The most threads `rw_rebound_batch` accepts (more is `RW_INVALID_PARAMETER`): far above
+/// the cores of any node a CFD rank runs on, far below what exhausts a process's threads.
+pub const RW_MAX_THREADS: i32 = 1024;
 
 /// Ideally elastic, frictionless collisions (Radenkovic & Simonin 2021, Sec. 3.1).
 pub const RW_LAW_ELASTIC: i32 = 0;
@@ -94,7 +100,8 @@ pub struct rw_hit {
     /// Particle velocity (m/s) and angular velocity (rad/s).
     pub velocity: [f64; 3],
     pub spin: [f64; 3],
-    /// Face normal, either orientation, any non-zero length.
+    /// Face normal, either orientation, any non-zero length (one of unit length to
+    /// round-off is used as given, as the host's own rebound uses it).
     pub normal: [f64; 3],
     /// The wall's lay direction (that of Δξ), projected onto the wall plane.
     pub lay: [f64; 3],
@@ -179,6 +186,22 @@ pub struct rw_wall {
 /// Runs `f`, turning a panic into `RW_INTERNAL_ERROR`.
 fn guarded(f: impl FnOnce() -> i32) -> i32 {
     catch_unwind(AssertUnwindSafe(f)).unwrap_or(RW_INTERNAL_ERROR)
+}
+
+/// Unit tests only (never in the library): a hit with this particle id, or a wall with this
+/// seed, panics inside the entry point, standing in for a bug, to check that the panic is
+/// caught at the boundary.
+#[cfg(test)]
+const FORCED_PANIC_KEY: u64 = 0xdead_beef_0bad_f00d;
+
+/// The rebound of one hit: what `rw_rebound` and every hit of `rw_rebound_batch` run.
+fn rebound_one(model: &WallModel, hit: &Hit) -> HitOutcome {
+    #[cfg(test)]
+    assert_ne!(
+        hit.particle_id, FORCED_PANIC_KEY,
+        "a panic forced by a test"
+    );
+    model.rebound(hit)
 }
 
 /// Copies `msg` into the caller's buffer, NUL-terminated, cut at a character boundary.
@@ -312,6 +335,8 @@ pub unsafe extern "C" fn rw_wall_new(
     }
     guarded(|| {
         wall.write(std::ptr::null_mut());
+        #[cfg(test)]
+        assert_ne!((*params).seed, FORCED_PANIC_KEY, "a panic forced by a test");
         let built =
             wall_params(&*params).and_then(|p| WallModel::new(&p).map_err(|e| e.to_string()));
         match built {
@@ -365,7 +390,8 @@ fn hit_of(h: &rw_hit) -> Hit {
 
 /// The rebound of one hit, into `*result`. Returns the hit's status (also in
 /// `result->status`): `RW_OK` (a rebound), `RW_NOT_APPROACHING` or `RW_INVALID_INPUT` (the
-/// particle is returned unchanged), or `RW_NULL_POINTER`. Allocates nothing, starts no thread.
+/// particle is returned unchanged), or `RW_NULL_POINTER` (nothing written). Allocates
+/// nothing, starts no thread.
 ///
 /// # Safety
 /// `wall` is NULL or a live handle; `hit` is NULL or valid; `result` is NULL or writable.
@@ -379,7 +405,7 @@ pub unsafe extern "C" fn rw_rebound(
         return RW_NULL_POINTER;
     }
     guarded(|| {
-        let r = result_of(&(*wall).model.rebound(&hit_of(&*hit)));
+        let r = result_of(&rebound_one(&(*wall).model, &hit_of(&*hit)));
         result.write(r);
         r.status
     })
@@ -452,9 +478,13 @@ impl Batch {
 }
 
 /// The rebounds of `batch->n` hits (each exactly as `rw_rebound` gives it, whatever the
-/// thread count), per-hit statuses in `batch->out_status`. `threads` ≤ 1 runs in the calling
-/// thread; more splits the hits over that many threads, started and joined in this call.
-/// Returns `RW_OK`, or `RW_NULL_POINTER` when a required array is NULL (nothing written).
+/// thread count), per-hit statuses in `batch->out_status`: bad hits get their status
+/// (`RW_INVALID_INPUT`, …) and finite outputs, the others are rebounded. `threads` ≤ 1
+/// runs in the calling thread; 2 … `RW_MAX_THREADS` splits the hits over that many
+/// threads (at most one per hit), started and joined in this call (a thread the system
+/// refuses to start leaves its share to the calling thread). Returns `RW_OK`;
+/// `RW_NULL_POINTER` when `wall`, `batch` or a required array is NULL, and
+/// `RW_INVALID_PARAMETER` when `threads` > `RW_MAX_THREADS`: then nothing is written.
 ///
 /// # Safety
 /// `wall` is NULL or a live handle; `batch` is NULL or valid, with every non-NULL array
@@ -472,12 +502,15 @@ pub unsafe extern "C" fn rw_rebound_batch(
     if b.0.n > 0 && !b.required_present() {
         return RW_NULL_POINTER;
     }
+    if threads > RW_MAX_THREADS {
+        return RW_INVALID_PARAMETER;
+    }
     let model = (*wall).model;
     guarded(|| {
         let n = b.0.n;
         let run = |lo: usize, hi: usize| {
             for i in lo..hi {
-                b.put(i, &model.rebound(&b.hit(i)));
+                b.put(i, &rebound_one(&model, &b.hit(i)));
             }
         };
         let t = (threads.max(1) as usize).min(n.max(1));
@@ -486,10 +519,25 @@ pub unsafe extern "C" fn rw_rebound_batch(
         } else {
             let chunk = n.div_ceil(t);
             std::thread::scope(|s| {
+                let mut started = Vec::with_capacity(t);
                 for k in 0..t {
                     let (lo, hi) = (k * chunk, ((k + 1) * chunk).min(n));
+                    if lo >= hi {
+                        continue;
+                    }
                     let run = &run;
-                    s.spawn(move || run(lo, hi));
+                    match std::thread::Builder::new().spawn_scoped(s, move || run(lo, hi)) {
+                        Ok(thread) => started.push(thread),
+                        // No thread to be had (a limit of the system): this share runs here.
+                        Err(_) => run(lo, hi),
+                    }
+                }
+                // Joined, not only waited for (as the scope's end would): the threads have
+                // exited when the call returns. A panic in one is re-raised here.
+                for thread in started {
+                    if let Err(panic) = thread.join() {
+                        std::panic::resume_unwind(panic);
+                    }
                 }
             });
         }
@@ -773,6 +821,442 @@ mod tests {
                 assert_eq!(gamma[i], single[i].gamma);
             }
         }
+        unsafe { rw_wall_free(w) };
+    }
+
+    /// The columns of a batch (inputs and outputs), owned; outputs start at sentinels.
+    struct Columns {
+        input: Vec<Vec<f64>>,
+        pid: Vec<u64>,
+        cid: Vec<u64>,
+        out: Vec<Vec<f64>>,
+        walls: Vec<u32>,
+        status: Vec<i32>,
+    }
+
+    const SENTINEL: f64 = -12345.0;
+
+    impl Columns {
+        fn new(hits: &[rw_hit]) -> Columns {
+            let col = |f: &dyn Fn(&rw_hit) -> f64| hits.iter().map(f).collect::<Vec<f64>>();
+            let input = vec![
+                col(&|h| h.velocity[0]),
+                col(&|h| h.velocity[1]),
+                col(&|h| h.velocity[2]),
+                col(&|h| h.spin[0]),
+                col(&|h| h.spin[1]),
+                col(&|h| h.spin[2]),
+                col(&|h| h.normal[0]),
+                col(&|h| h.normal[1]),
+                col(&|h| h.normal[2]),
+                col(&|h| h.lay[0]),
+                col(&|h| h.lay[1]),
+                col(&|h| h.lay[2]),
+                col(&|h| h.wall_velocity[0]),
+                col(&|h| h.wall_velocity[1]),
+                col(&|h| h.wall_velocity[2]),
+                col(&|h| h.diameter),
+            ];
+            let n = hits.len();
+            Columns {
+                input,
+                pid: hits.iter().map(|h| h.particle_id).collect(),
+                cid: hits.iter().map(|h| h.collision_index).collect(),
+                out: vec![vec![SENTINEL; n]; 8],
+                walls: vec![u32::MAX; n],
+                status: vec![-1; n],
+            }
+        }
+
+        /// Every array given.
+        fn batch(&mut self) -> rw_batch {
+            let i = |k: usize| self.input[k].as_ptr();
+            let (o, rest) = self.out.split_at_mut(4);
+            let (o2, o3) = rest.split_at_mut(2);
+            let [ux, uy, uz, wx] = o else { unreachable!() };
+            let [wy, wz] = o2 else { unreachable!() };
+            let [g, gs] = o3 else { unreachable!() };
+            rw_batch {
+                n: self.pid.len(),
+                ux: i(0),
+                uy: i(1),
+                uz: i(2),
+                wx: i(3),
+                wy: i(4),
+                wz: i(5),
+                nx: i(6),
+                ny: i(7),
+                nz: i(8),
+                lx: i(9),
+                ly: i(10),
+                lz: i(11),
+                vx: i(12),
+                vy: i(13),
+                vz: i(14),
+                diameter: i(15),
+                particle_id: self.pid.as_ptr(),
+                collision_index: self.cid.as_ptr(),
+                out_ux: ux.as_mut_ptr(),
+                out_uy: uy.as_mut_ptr(),
+                out_uz: uz.as_mut_ptr(),
+                out_wx: wx.as_mut_ptr(),
+                out_wy: wy.as_mut_ptr(),
+                out_wz: wz.as_mut_ptr(),
+                out_gamma: g.as_mut_ptr(),
+                out_gamma_star: gs.as_mut_ptr(),
+                out_candidate_walls: self.walls.as_mut_ptr(),
+                out_status: self.status.as_mut_ptr(),
+            }
+        }
+
+        fn untouched(&self) -> bool {
+            self.out.iter().flatten().all(|&x| x == SENTINEL)
+                && self.walls.iter().all(|&x| x == u32::MAX)
+                && self.status.iter().all(|&x| x == -1)
+        }
+
+        /// Output `i` as an `rw_result`.
+        fn result(&self, i: usize) -> rw_result {
+            let o = |k: usize| self.out[k][i];
+            rw_result {
+                velocity: [o(0), o(1), o(2)],
+                spin: [o(3), o(4), o(5)],
+                gamma: o(6),
+                gamma_star: o(7),
+                candidate_walls: self.walls[i],
+                status: self.status[i],
+            }
+        }
+    }
+
+    fn single(w: *const rw_wall, h: &rw_hit) -> (i32, rw_result) {
+        let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
+        let s = unsafe { rw_rebound(w, h, r.as_mut_ptr()) };
+        (s, unsafe { r.assume_init() })
+    }
+
+    fn same(a: &rw_result, b: &rw_result) -> bool {
+        let bits = |r: &rw_result| {
+            let mut v: Vec<u64> = r
+                .velocity
+                .iter()
+                .chain(&r.spin)
+                .map(|x| x.to_bits())
+                .collect();
+            v.extend([r.gamma.to_bits(), r.gamma_star.to_bits()]);
+            (v, r.candidate_walls, r.status)
+        };
+        bits(a) == bits(b)
+    }
+
+    /// Hits a C host could hand over by mistake, each with its expected status.
+    fn bad_hits() -> Vec<(&'static str, rw_hit, i32)> {
+        let h = rw_hit {
+            spin: [10.0, -20.0, 30.0],
+            ..hit(7)
+        };
+        let (inf, nan) = (f64::INFINITY, f64::NAN);
+        vec![
+            (
+                "inf velocity",
+                rw_hit {
+                    velocity: [5.0, -inf, 0.0],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "NaN velocity",
+                rw_hit {
+                    velocity: [nan, -1.0, 0.0],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "inf spin",
+                rw_hit {
+                    spin: [0.0, 0.0, -inf],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "inf normal",
+                rw_hit {
+                    normal: [0.0, -inf, 0.0],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "NaN normal",
+                rw_hit {
+                    normal: [0.0, -1.0, nan],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "zero normal",
+                rw_hit {
+                    normal: [0.0; 3],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "NaN lay",
+                rw_hit {
+                    lay: [nan, 0.0, 0.0],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "inf lay",
+                rw_hit {
+                    lay: [inf, 0.0, 1.0],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "lay along the normal",
+                rw_hit {
+                    lay: [0.0, 3.0, 0.0],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            ("zero lay", rw_hit { lay: [0.0; 3], ..h }, RW_INVALID_INPUT),
+            (
+                "inf wall velocity",
+                rw_hit {
+                    wall_velocity: [inf, 0.0, 0.0],
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "inf diameter",
+                rw_hit { diameter: inf, ..h },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "NaN diameter",
+                rw_hit { diameter: nan, ..h },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "negative diameter",
+                rw_hit {
+                    diameter: -1e-6,
+                    ..h
+                },
+                RW_INVALID_INPUT,
+            ),
+            (
+                "along the wall",
+                rw_hit {
+                    velocity: [3.0, 0.0, 1.0],
+                    ..h
+                },
+                RW_NOT_APPROACHING,
+            ),
+        ]
+    }
+
+    #[test]
+    fn every_bad_input_is_its_status_with_finite_outputs() {
+        let (_, w, _) = wall(&params());
+        for (what, h, want) in bad_hits() {
+            let (s, r) = single(w, &h);
+            assert_eq!((s, r.status), (want, want), "{what}");
+            assert!(
+                r.velocity.iter().chain(&r.spin).all(|x| x.is_finite()),
+                "{what}: {r:?}"
+            );
+            assert_eq!(
+                (r.gamma, r.gamma_star, r.candidate_walls),
+                (0.0, 0.0, 0),
+                "{what}"
+            );
+            // Returned unchanged, a non-finite component as 0.
+            let clean = |v: [f64; 3]| v.map(|x| if x.is_finite() { x } else { 0.0 });
+            assert_eq!(r.velocity, clean(h.velocity), "{what}");
+            assert_eq!(r.spin, clean(h.spin), "{what}");
+        }
+        unsafe { rw_wall_free(w) };
+    }
+
+    #[test]
+    fn a_batch_with_bad_hits_rebounds_the_good_ones_and_flags_the_bad_ones() {
+        let (_, w, _) = wall(&params());
+        let bad = bad_hits();
+        // Good and bad hits interleaved: the bad ones at every third place.
+        let mut hits = Vec::new();
+        let mut expect = Vec::new();
+        for i in 0..3 * bad.len() {
+            if i % 3 == 1 {
+                hits.push(bad[i / 3].1);
+                expect.push(bad[i / 3].2);
+            } else {
+                hits.push(rw_hit {
+                    spin: [5.0, 0.0, -3.0],
+                    ..hit(100 + i as u64)
+                });
+                expect.push(RW_OK);
+            }
+        }
+        for threads in [1, 2, 4] {
+            let mut c = Columns::new(&hits);
+            let b = c.batch();
+            assert_eq!(unsafe { rw_rebound_batch(w, &b, threads) }, RW_OK);
+            for (i, h) in hits.iter().enumerate() {
+                let r = c.result(i);
+                assert_eq!(r.status, expect[i], "{threads} threads, hit {i}");
+                assert!(r.velocity.iter().chain(&r.spin).all(|x| x.is_finite()));
+                assert!(
+                    same(&r, &single(w, h).1),
+                    "{threads} threads, hit {i}: {r:?}"
+                );
+                if expect[i] == RW_OK {
+                    assert!(r.candidate_walls >= 1 && r.velocity[1] > 0.0, "{r:?}");
+                }
+            }
+        }
+        unsafe { rw_wall_free(w) };
+    }
+
+    #[test]
+    fn a_batch_with_a_null_required_array_is_refused_and_nothing_is_written() {
+        let (_, w, _) = wall(&params());
+        let hits: Vec<rw_hit> = (0..8).map(hit).collect();
+        type Clear = fn(&mut rw_batch);
+        let required: [(&str, Clear); 16] = [
+            ("ux", |b| b.ux = std::ptr::null()),
+            ("uy", |b| b.uy = std::ptr::null()),
+            ("uz", |b| b.uz = std::ptr::null()),
+            ("nx", |b| b.nx = std::ptr::null()),
+            ("ny", |b| b.ny = std::ptr::null()),
+            ("nz", |b| b.nz = std::ptr::null()),
+            ("lx", |b| b.lx = std::ptr::null()),
+            ("ly", |b| b.ly = std::ptr::null()),
+            ("lz", |b| b.lz = std::ptr::null()),
+            ("diameter", |b| b.diameter = std::ptr::null()),
+            ("particle_id", |b| b.particle_id = std::ptr::null()),
+            ("collision_index", |b| b.collision_index = std::ptr::null()),
+            ("out_ux", |b| b.out_ux = std::ptr::null_mut()),
+            ("out_uy", |b| b.out_uy = std::ptr::null_mut()),
+            ("out_uz", |b| b.out_uz = std::ptr::null_mut()),
+            ("out_status", |b| b.out_status = std::ptr::null_mut()),
+        ];
+        for (name, clear) in required {
+            for threads in [1, 3] {
+                let mut c = Columns::new(&hits);
+                let mut b = c.batch();
+                clear(&mut b);
+                assert_eq!(
+                    unsafe { rw_rebound_batch(w, &b, threads) },
+                    RW_NULL_POINTER,
+                    "{name}"
+                );
+                assert!(c.untouched(), "{name}: written");
+            }
+        }
+        // The optional arrays may be NULL: spin and wall velocity default to 0.
+        let mut c = Columns::new(&hits);
+        let mut b = c.batch();
+        (b.wx, b.wy, b.wz, b.vx, b.vy, b.vz) = (
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null(),
+            std::ptr::null(),
+        );
+        (b.out_wx, b.out_gamma, b.out_candidate_walls) = (
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+        );
+        assert_eq!(unsafe { rw_rebound_batch(w, &b, 2) }, RW_OK);
+        assert!(c.status.iter().all(|&s| s == RW_OK));
+        assert!(c.out[3].iter().all(|&x| x == SENTINEL) && c.out[4].iter().all(|&x| x != SENTINEL));
+        // NULL wall: refused, nothing written.
+        let mut c = Columns::new(&hits);
+        let b = c.batch();
+        assert_eq!(
+            unsafe { rw_rebound_batch(std::ptr::null(), &b, 1) },
+            RW_NULL_POINTER
+        );
+        assert!(c.untouched());
+        unsafe { rw_wall_free(w) };
+    }
+
+    #[test]
+    fn more_threads_than_the_maximum_are_refused_before_anything_is_written() {
+        let (_, w, _) = wall(&params());
+        let hits: Vec<rw_hit> = (0..100).map(hit).collect();
+        for threads in [RW_MAX_THREADS + 1, 1 << 20, i32::MAX] {
+            let mut c = Columns::new(&hits);
+            let b = c.batch();
+            assert_eq!(
+                unsafe { rw_rebound_batch(w, &b, threads) },
+                RW_INVALID_PARAMETER,
+                "{threads}"
+            );
+            assert!(c.untouched(), "{threads}: written");
+        }
+        // Up to the maximum (here one thread per hit), and 0 or negative (the calling
+        // thread): every hit as the single call gives it.
+        for threads in [RW_MAX_THREADS, 0, -5] {
+            let mut c = Columns::new(&hits);
+            let b = c.batch();
+            assert_eq!(
+                unsafe { rw_rebound_batch(w, &b, threads) },
+                RW_OK,
+                "{threads}"
+            );
+            for (i, h) in hits.iter().enumerate() {
+                assert!(same(&c.result(i), &single(w, h).1), "{threads}: {i}");
+            }
+        }
+        unsafe { rw_wall_free(w) };
+    }
+
+    #[test]
+    fn a_panic_inside_an_entry_point_is_rw_internal_error() {
+        let (_, w, _) = wall(&params());
+        let bug = rw_hit {
+            particle_id: FORCED_PANIC_KEY,
+            ..hit(1)
+        };
+        let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
+        assert_eq!(
+            unsafe { rw_rebound(w, &bug, r.as_mut_ptr()) },
+            RW_INTERNAL_ERROR
+        );
+        let hits: Vec<rw_hit> = (0..50)
+            .map(|i| if i == 37 { bug } else { hit(i) })
+            .collect();
+        for threads in [1, 4] {
+            let mut c = Columns::new(&hits);
+            let b = c.batch();
+            assert_eq!(
+                unsafe { rw_rebound_batch(w, &b, threads) },
+                RW_INTERNAL_ERROR,
+                "{threads}"
+            );
+        }
+        let mut p = params();
+        p.seed = FORCED_PANIC_KEY;
+        let (s, handle, _) = wall(&p);
+        assert_eq!(s, RW_INTERNAL_ERROR);
+        assert!(handle.is_null());
+        // The library goes on working after a caught panic.
+        assert_eq!(single(w, &hit(1)).0, RW_OK);
         unsafe { rw_wall_free(w) };
     }
 

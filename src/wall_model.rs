@@ -12,7 +12,7 @@
 
 use crate::case::{capture_warnings, Case, CollisionSection, StochasticSection, WallSpec};
 use crate::collision::CollisionLaw;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::rng;
 use crate::stochastic::{rebound_variant, Variant};
 use crate::wall::Deviations;
@@ -72,8 +72,11 @@ fn with_escape_table(mut variant: Variant, table: Option<&str>) -> Result<Varian
 
 impl WallModel {
     /// Validates the parameters with the case-file rules and one-line messages (keys named
-    /// as in a case file: `wall.delta_xi_deg`, `collision.e_h`, `stochastic.psi`, …).
-    /// Returns the handle and the warnings (e.g. a deviation beyond the low-roughness range).
+    /// as in a case file: `wall.delta_xi_deg`, `collision.e_h`, `stochastic.psi`, …): the
+    /// parameters become a [`Case`], checked by the functions that check a case file
+    /// ([`Case::check_finite`], then the resolvers of `rebound stochastic`), so the same bad
+    /// value gives the same message. Returns the handle and the warnings (e.g. a deviation
+    /// beyond the low-roughness range).
     pub fn new(p: &WallParams) -> Result<(WallModel, Vec<String>)> {
         let case = Case {
             name: "wall".into(),
@@ -93,14 +96,7 @@ impl WallModel {
             ..Default::default()
         };
         let (built, warnings) = capture_warnings(|| -> Result<WallModel> {
-            for (key, v) in [
-                ("wall.delta_xi_deg", p.delta_xi_deg),
-                ("wall.delta_zeta_deg", p.delta_zeta_deg),
-            ] {
-                if !v.is_finite() {
-                    return Err(Error::invalid(key, v, "a finite number of degrees"));
-                }
-            }
+            case.check_finite()?;
             Ok(WallModel {
                 wall: case.wall_source()?.deviations(),
                 law: case.collision_law()?,
@@ -116,17 +112,7 @@ impl WallModel {
     /// unchanged with [`HitStatus::InvalidInput`] (non-finite components as 0), a particle that
     /// does not move across the wall with [`HitStatus::NotApproaching`].
     pub fn rebound(&self, hit: &Hit) -> HitOutcome {
-        // A particle not rebounded leaves as it came; a non-finite component leaves as 0,
-        // so that no NaN or infinity reaches the host from here.
-        let clean = |v: [f64; 3]| v.map(|x| if x.is_finite() { x } else { 0.0 });
-        let unchanged = |status| HitOutcome {
-            velocity: clean(hit.velocity),
-            spin: clean(hit.spin),
-            status,
-            gamma: 0.0,
-            gamma_star: 0.0,
-            candidate_walls: 0,
-        };
+        let unchanged = |status| HitOutcome::unchanged(hit, status);
         let finite = [
             hit.velocity,
             hit.spin,
@@ -149,6 +135,19 @@ impl WallModel {
         if u.y == 0.0 {
             return unchanged(HitStatus::NotApproaching);
         }
+        if self.wall.delta_xi == 0.0 && self.wall.delta_zeta == 0.0 {
+            // A smooth wall: the collision with the mean wall, as `stochastic::rebound` gives
+            // it (no random draw, one candidate wall), but computed in the host's axes rather
+            // than through the wall's frame and back. For the elastic law that is
+            // `u − (2 (u·n)) n` with the dot product summed x, y, z: the operations, in the
+            // same order, of a CFD code's own specular rebound (code_saturne's
+            // CS_LAGR_REBOUND), so a smooth elastic roughwall wall gives its host's
+            // trajectories bit for bit (examples/code_saturne, check (a)).
+            let (v, w) = self
+                .law
+                .collide(u_rel, Vector3::from(hit.spin), frame.ey, hit.diameter_m);
+            return Self::outcome(hit, v, w, 0.0, 0.0, 1);
+        }
         let w = frame.to_local(&Vector3::from(hit.spin));
         let mut r = rng::stream(
             self.seed,
@@ -164,19 +163,38 @@ impl WallModel {
             self.variant,
             &mut r,
         );
-        let velocity = frame.to_global(&out.velocity) + Vector3::from(hit.wall_velocity);
-        let spin = frame.to_global(&out.spin);
+        Self::outcome(
+            hit,
+            frame.to_global(&out.velocity),
+            frame.to_global(&out.spin),
+            out.gamma,
+            out.gamma_star,
+            out.tries,
+        )
+    }
+
+    /// The outcome of a rebound computed relative to the wall (global axes): the wall's
+    /// velocity added back, and no NaN or infinity to the host.
+    fn outcome(
+        hit: &Hit,
+        velocity_rel: Vector3<f64>,
+        spin: Vector3<f64>,
+        gamma: f64,
+        gamma_star: f64,
+        candidate_walls: u32,
+    ) -> HitOutcome {
+        let velocity = velocity_rel + Vector3::from(hit.wall_velocity);
         if !velocity.iter().chain(spin.iter()).all(|x| x.is_finite()) {
             // Overflow of extreme inputs (e.g. |u| near f64::MAX): no NaN reaches the host.
-            return unchanged(HitStatus::InvalidInput);
+            return HitOutcome::unchanged(hit, HitStatus::InvalidInput);
         }
         HitOutcome {
             velocity: velocity.into(),
             spin: spin.into(),
             status: HitStatus::Rebound,
-            gamma: out.gamma,
-            gamma_star: out.gamma_star,
-            candidate_walls: out.tries,
+            gamma,
+            gamma_star,
+            candidate_walls,
         }
     }
 }
@@ -232,6 +250,22 @@ pub struct HitOutcome {
     pub candidate_walls: u32,
 }
 
+impl HitOutcome {
+    /// A particle not rebounded: it leaves as it came, a non-finite component as 0, so that
+    /// no NaN or infinity reaches the host.
+    fn unchanged(hit: &Hit, status: HitStatus) -> HitOutcome {
+        let clean = |v: [f64; 3]| v.map(|x| if x.is_finite() { x } else { 0.0 });
+        HitOutcome {
+            velocity: clean(hit.velocity),
+            spin: clean(hit.spin),
+            status,
+            gamma: 0.0,
+            gamma_star: 0.0,
+            candidate_walls: 0,
+        }
+    }
+}
+
 /// The wall's frame at a hit: `e_y` the normal into the flow, `e_x` the lay direction in the
 /// wall plane, `e_z = e_x × e_y` (right-handed, as the paper's `x, y, z`).
 struct Frame {
@@ -248,7 +282,14 @@ impl Frame {
         if n_len == 0.0 || !n_len.is_finite() {
             return None;
         }
-        let mut ey = n / n_len;
+        // A normal the host made unit (to round-off) is used as given: dividing it by its
+        // computed length could change its last bits, and the host's own rebound uses it
+        // as it is.
+        let mut ey = if (n_len - 1.0).abs() <= 4.0 * f64::EPSILON {
+            n
+        } else {
+            n / n_len
+        };
         let u_rel = Vector3::from(hit.velocity) - Vector3::from(hit.wall_velocity);
         if u_rel.dot(&ey) > 0.0 {
             ey = -ey; // into the flow: the particle arrives against it
@@ -414,6 +455,84 @@ mod tests {
     }
 
     #[test]
+    fn a_smooth_elastic_wall_is_the_hosts_specular_rebound_bit_for_bit() {
+        let m = WallModel::new(&WallParams::default()).unwrap().0;
+        assert_eq!(m.law, CollisionLaw::Elastic);
+        // code_saturne's CS_LAGR_REBOUND (cs_lagr_tracking.c): tmp = 2 (u·n), u_k -= tmp n_k.
+        let host = |u: [f64; 3], n: [f64; 3]| {
+            let tmp = 2. * (u[0] * n[0] + u[1] * n[1] + u[2] * n[2]);
+            [u[0] - tmp * n[0], u[1] - tmp * n[1], u[2] - tmp * n[2]]
+        };
+        let mut r = rng::stream(17, &[2]);
+        use rand::Rng;
+        let mut v = || 2.0 * r.gen::<f64>() - 1.0;
+        let mut rounded_lengths = 0;
+        for k in 0..2000 {
+            // A unit normal as a host computes it (n / |n|), either orientation; the
+            // velocity towards the wall.
+            let raw = [v(), v(), v()];
+            let len = (raw[0] * raw[0] + raw[1] * raw[1] + raw[2] * raw[2]).sqrt();
+            let n = raw.map(|x| x / len);
+            if (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt() != 1.0 {
+                rounded_lengths += 1;
+            }
+            let mut u = [5.0 * v(), 5.0 * v(), 5.0 * v()];
+            let un: f64 = (0..3).map(|i| u[i] * n[i]).sum();
+            if un > 0.0 {
+                u = u.map(|x| -x);
+            }
+            let normal = if k % 2 == 0 { n } else { n.map(|x| -x) };
+            let spin = [v() * 100.0, v() * 100.0, v() * 100.0];
+            let out = m.rebound(&Hit {
+                velocity: u,
+                spin,
+                normal,
+                lay: [v(), v(), v()],
+                ..hit()
+            });
+            assert_eq!(out.status, HitStatus::Rebound);
+            assert_eq!(
+                out.velocity.map(f64::to_bits),
+                host(u, n).map(f64::to_bits),
+                "{k}"
+            );
+            assert_eq!(out.spin, spin);
+            assert_eq!(
+                (out.gamma, out.gamma_star, out.candidate_walls),
+                (0.0, 0.0, 1)
+            );
+        }
+        // Some of those normals are 1 ulp off unit length: the case that must not be
+        // normalised again.
+        assert!(rounded_lengths > 100, "{rounded_lengths}");
+        // In the paper's frame it is `stochastic::rebound` on the smooth wall, bit for bit.
+        let h = hit();
+        let mut r = rng::stream(0, &[rng::domain::WALL_HITS, 12, 3]);
+        let direct = rebound(
+            Vector3::from(h.velocity),
+            Vector3::zeros(),
+            &m.wall,
+            &m.law,
+            m.psi,
+            h.diameter_m,
+            &mut r,
+        );
+        let out = m.rebound(&h);
+        assert_eq!(out.velocity, <[f64; 3]>::from(direct.velocity));
+        assert_eq!(out.candidate_walls, direct.tries);
+        // A moving smooth wall: the specular rebound relative to it.
+        let w = [0.3, 0.0, -0.2];
+        let moving = m.rebound(&Hit {
+            velocity: [h.velocity[0] + w[0], h.velocity[1], h.velocity[2] + w[2]],
+            wall_velocity: w,
+            ..h
+        });
+        for ((m, w), o) in moving.velocity.iter().zip(w).zip(out.velocity) {
+            assert!((m - w - o).abs() < 1e-14, "{moving:?}");
+        }
+    }
+
+    #[test]
     fn bad_inputs_are_statuses_never_nan() {
         let m = glass_steel();
         let h = hit();
@@ -441,6 +560,30 @@ mod tests {
             },
             Hit {
                 wall_velocity: [f64::NEG_INFINITY, 0.0, 0.0],
+                ..h
+            },
+            Hit {
+                velocity: [f64::INFINITY, -1.0, 0.0],
+                ..h
+            },
+            Hit {
+                normal: [0.0, f64::INFINITY, 0.0],
+                ..h
+            },
+            Hit {
+                normal: [f64::NAN, 1.0, 0.0],
+                ..h
+            },
+            Hit {
+                lay: [1.0, 0.0, f64::NAN],
+                ..h
+            },
+            Hit {
+                diameter_m: f64::INFINITY,
+                ..h
+            },
+            Hit {
+                diameter_m: f64::NAN,
                 ..h
             },
         ] {

@@ -4,6 +4,7 @@
 //! * Bad input (zero normal, lay along the normal, negative diameter, NaN, NULL) is a status.
 //! * 10⁶ C calls on the Sec. 4 glass–steel scene in a rotated, moving frame give rebound
 //!   angles whose PDFs match `rebound stochastic` on the same scene within KS 0.01.
+//! * A single call starts no thread (`tests/c/threads.c`).
 
 mod common;
 use common::*;
@@ -152,6 +153,28 @@ preset = "glass-steel"
         eprintln!("C example against rebound stochastic: KS {q} = {ks:.4}");
         assert!(ks <= 0.01, "{q}: KS {ks}");
     }
+}
+
+/// A single call starts no thread: `tests/c/threads.c` counts the threads of its (fresh)
+/// process in `/proc/self/task` around 3 × 10⁴ `rw_rebound` calls on three walls; the count
+/// must see a thread the program starts itself, and the batch call's threads are joined.
+#[test]
+fn a_single_call_starts_no_thread() {
+    ensure_tools(&[("cc", "gcc")]);
+    let tmp = tempfile::tempdir().unwrap();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let exe = tmp.path().join("threads");
+    build_with_roughwall(
+        "cc",
+        &[&root.join("tests/c/threads.c")],
+        &exe,
+        &["-pthread"],
+    );
+    let out = run(&exe, &[]);
+    let counts: Vec<u32> = out.split_whitespace().map(|x| x.parse().unwrap()).collect();
+    // start, after rw_wall_new, most during the calls, with a thread of its own, after a
+    // 4-thread batch.
+    assert_eq!(counts, [1, 1, 1, 2, 1], "{out}");
 }
 
 #[test]

@@ -3,7 +3,8 @@
 //! in a box whose walls are `CS_LAGR_BC_USER` zones; the hook calls `rw_rebound` at every
 //! wall hit (`examples/code_saturne/`).
 //! * (a) A smooth elastic roughwall wall gives the trajectories of code_saturne's built-in
-//!   `CS_LAGR_REBOUND` (same cells; positions and velocities within 1e-12).
+//!   `CS_LAGR_REBOUND` bit for bit (same cells; every position, velocity and tracking restart
+//!   point identical as printed with `%.17g`, i.e. the same doubles).
 //! * (b) On the Sec. 4 glass–steel wall, the 12 000 first hits on the floor (α⁻ = −15°,
 //!   β⁻ = 60° in the wall's frame) rebound with angles whose PDFs match `rebound
 //!   stochastic` on the same scene within KS 0.03.
@@ -15,6 +16,42 @@ use roughwall::output::schema::read_run;
 use roughwall::tally::histogram::Histogram;
 use std::path::Path;
 use std::process::Command;
+
+/// `install.sh` checks and installs under the lock that `ensure_tools` takes around
+/// apt-get (`/tmp/roughwall-apt.lock`): while another process holds it, `install.sh` waits.
+#[test]
+fn install_sh_waits_for_the_apt_lock() {
+    use std::io::BufRead;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let hold = std::time::Duration::from_secs(3);
+    let mut holder = Command::new("flock")
+        .args(["/tmp/roughwall-apt.lock", "sh", "-c"])
+        .arg(format!("echo locked; sleep {}", hold.as_secs()))
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("run flock");
+    let mut line = String::new();
+    std::io::BufReader::new(holder.stdout.take().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    assert_eq!(line.trim(), "locked");
+    let t0 = std::time::Instant::now();
+    let out = Command::new(root.join("examples/code_saturne/install.sh"))
+        .output()
+        .expect("run install.sh");
+    let waited = t0.elapsed();
+    assert!(holder.wait().unwrap().success());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // It could only finish once the holder let go (minus the time to start install.sh).
+    assert!(
+        waited >= hold - std::time::Duration::from_millis(500),
+        "install.sh did not wait for the apt lock: {waited:?}"
+    );
+}
 
 #[test]
 fn code_saturne_calls_roughwall_at_every_wall_hit() {
@@ -38,6 +75,10 @@ fn code_saturne_calls_roughwall_at_every_wall_hit() {
     eprintln!("{stdout}");
     // (a)
     assert!(stdout.contains("cell_id mismatches: 0"), "{stdout}");
+    assert!(
+        stdout.contains("values differing as printed (%.17g): 0 of"),
+        "{stdout}"
+    );
     assert!(stdout.contains("CHECK (a): PASS"), "{stdout}");
     // (b): the first hit of every particle, on the floor y = 0, in the wall's frame
     // (normal +y into the flow, lay (cos 60°, 0, sin 60°), z = x × y).

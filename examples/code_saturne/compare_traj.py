@@ -13,7 +13,8 @@ and is not compared).
 Pass criterion ("equal to printed precision"): same keys, same cell ids and
 every compared value textually identical as printed (%.17g, i.e. bitwise
 equal doubles), unless --tol T > 0 is given, in which case
-max |a-b| <= T is accepted.  Exit status 0 on pass, 1 on failure.
+max |a-b| <= T is accepted (for experiments; run_checks.sh and the test use
+the default, bitwise).  Exit status 0 on pass, 1 on failure.
 """
 import argparse
 import csv
@@ -58,8 +59,10 @@ def hits_summary(rundir):
                 nd_out.append(float(r["n_dot_outward"]))
                 nlen = math.sqrt(sum(c * c for c in nv))
                 nlen_dev = max(nlen_dev, abs(nlen - 1.0))
-                un = sum(a * b for a, b in zip(ui, nv)) / nlen
-                spec = [a - 2.0 * un * b / nlen for a, b in zip(ui, nv)]
+                # CS_LAGR_REBOUND's specular rebound, operation for operation:
+                # tmp = 2 (u.n); u_k -= tmp n_k (face_norm used as given)
+                tmp = 2.0 * (ui[0] * nv[0] + ui[1] * nv[1] + ui[2] * nv[2])
+                spec = [a - tmp * b for a, b in zip(ui, nv)]
                 spec_dev = max(spec_dev, max(abs(a - b) for a, b in zip(spec, uo)))
     return n, len(keys), nd_out, nlen_dev, spec_dev
 

@@ -2,7 +2,15 @@
 # install.sh: install code_saturne 6.0.x (Debian bookworm: 6.0.2-2) and the
 # compilers it needs for user sources, via apt, only when missing.
 # Idempotent: a second run does nothing (no apt-get update either).
+# The check and the install run under the lock every test of this repository takes
+# around apt-get (/tmp/roughwall-apt.lock, see ensure_tools in tests/common/mod.rs), so
+# that two of them never run dpkg at the same time.
 set -euo pipefail
+
+lock=/tmp/roughwall-apt.lock
+touch "$lock" 2>/dev/null || true   # flock needs the file, not write access to it
+exec 9<"$lock"
+flock 9
 
 need=()
 dpkg-query -W -f='${Status}' code-saturne 2>/dev/null | grep -q "install ok installed" || need+=(code-saturne)
@@ -19,6 +27,9 @@ if [ ${#need[@]} -gt 0 ]; then
 else
   echo "install.sh: code-saturne, gcc, gfortran, python3 already present"
 fi
+
+flock -u 9
+exec 9>&-
 
 ver="$(dpkg-query -W -f='${Version}' code-saturne)"
 case "$ver" in

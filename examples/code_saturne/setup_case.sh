@@ -45,7 +45,10 @@ if [ "$user_mode" = 1 ]; then
   [ -f "$include/roughwall.h" ] || { echo "no roughwall.h in $include" >&2; exit 2; }
   [ -f "$lib/libroughwall.so" ] || { echo "no libroughwall.so in $lib (cargo build --release)" >&2; exit 2; }
   defs="$defs -I$include"
-  libs="-L$lib -lroughwall -Wl,-rpath,$lib"
+  # An RPATH, searched before LD_LIBRARY_PATH (a RUNPATH is searched after it): the run
+  # uses this library even when LD_LIBRARY_PATH names another libroughwall.so (cargo test
+  # puts target/debug, possibly stale, first).
+  libs="-L$lib -lroughwall -Wl,--disable-new-dtags,-rpath,$lib"
 fi
 
 rm -rf "$outdir"

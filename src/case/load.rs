@@ -68,9 +68,7 @@ pub const BUILT_IN: &str = "<built-in case>";
 pub fn parse(text: &str, origin: &str) -> Result<Case> {
     // First as a plain TOML tree, to reject NaN/inf anywhere with the key's path.
     let tree: toml::Table = toml::from_str(text).map_err(|e| one_line(origin, text, &e))?;
-    reject_non_finite(&toml::Value::Table(tree), "").map_err(|key| {
-        Error::invalid(&key, "nan/inf", &format!("a finite number (in {origin})"))
-    })?;
+    check_finite(&toml::Value::Table(tree))?;
     let case: Case = toml::from_str(text).map_err(|e| one_line(origin, text, &e))?;
     if case.name.trim().is_empty() {
         return Err(Error::invalid("name", "\"\"", "a non-empty name"));
@@ -83,9 +81,27 @@ pub fn parse(text: &str, origin: &str) -> Result<Case> {
     Ok(case)
 }
 
-fn reject_non_finite(v: &toml::Value, path: &str) -> std::result::Result<(), String> {
+/// The one check for NaN and ±inf, shared by case files (on their TOML tree, before the
+/// schema) and the C library's wall parameters (on the [`Case`] that `rw_wall_new` builds,
+/// see [`Case::check_finite`]), so that both give the same one-line message for the same
+/// value: `invalid `KEY` = VALUE: allowed a finite number`, for the first non-finite number
+/// by key path.
+pub fn check_finite(tree: &toml::Value) -> Result<()> {
+    reject_non_finite(tree, "").map_err(|(key, v)| Error::invalid(&key, v, "a finite number"))
+}
+
+impl Case {
+    /// [`check_finite`] on this case as a TOML tree (its keys as in a case file).
+    pub fn check_finite(&self) -> Result<()> {
+        let tree = toml::Value::try_from(self)
+            .map_err(|e| Error::Internal(format!("a case as a TOML tree: {e}")))?;
+        check_finite(&tree)
+    }
+}
+
+fn reject_non_finite(v: &toml::Value, path: &str) -> std::result::Result<(), (String, f64)> {
     match v {
-        toml::Value::Float(f) if !f.is_finite() => Err(path.to_string()),
+        toml::Value::Float(f) if !f.is_finite() => Err((path.to_string(), *f)),
         toml::Value::Table(t) => {
             for (k, v) in t {
                 let p = if path.is_empty() {
@@ -151,6 +167,36 @@ mod tests {
         assert!(err("seed = 1\n").contains("name"));
         assert!(err("name='a'\n[surface]\nrms_height_um = nan\n").contains("surface.rms_height_um"));
         assert!(err("name='a'\n[surface]\n[wall]\n").contains("not both"));
+    }
+
+    #[test]
+    fn a_non_finite_number_is_the_same_message_from_a_file_and_from_a_built_case() {
+        for (text, value) in [
+            ("nan", f64::NAN),
+            ("inf", f64::INFINITY),
+            ("-inf", f64::NEG_INFINITY),
+        ] {
+            let want = format!("invalid `wall.delta_zeta_deg` = {value}: allowed a finite number");
+            let from_file = err(&format!(
+                "name='a'\n[wall]\ndelta_xi_deg = 1.0\ndelta_zeta_deg = {text}\n"
+            ));
+            assert_eq!(from_file, want);
+            let built = Case {
+                name: "a".into(),
+                wall: Some(crate::case::WallSpec {
+                    delta_xi_deg: Some(1.0),
+                    delta_zeta_deg: Some(value),
+                    ..Default::default()
+                }),
+                ..Default::default()
+            };
+            assert_eq!(built.check_finite().unwrap_err().to_string(), want);
+        }
+        let fine = parse(
+            "name='a'\n[wall]\ndelta_xi_deg = 1.0\ndelta_zeta_deg = 2.0\n",
+            "t.toml",
+        );
+        assert_eq!(fine.unwrap().check_finite(), Ok(()));
     }
 
     #[test]

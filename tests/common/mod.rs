@@ -176,19 +176,29 @@ pub fn ensure_tools(tools: &[(&str, &str)]) {
 }
 
 /// The directory holding the C library `libroughwall.so` built with this test binary.
+/// `cargo test` writes it to `deps/` and leaves the copy next to the binary (made by an
+/// earlier `cargo build`) as it was, possibly from older sources: the newer of the two.
 pub fn c_library_dir() -> PathBuf {
     let bin = Path::new(env!("CARGO_BIN_EXE_rebound"));
     let dir = bin.parent().unwrap();
-    for d in [dir.to_path_buf(), dir.join("deps")] {
-        if d.join("libroughwall.so").is_file() {
-            return d;
-        }
-    }
-    panic!("libroughwall.so not found next to {}", bin.display());
+    let modified = |d: &Path| {
+        std::fs::metadata(d.join("libroughwall.so"))
+            .and_then(|m| m.modified())
+            .ok()
+    };
+    [dir.join("deps"), dir.to_path_buf()]
+        .into_iter()
+        .filter_map(|d| modified(&d).map(|t| (t, d)))
+        .max_by_key(|(t, _)| *t)
+        .map(|(_, d)| d)
+        .unwrap_or_else(|| panic!("libroughwall.so not found next to {}", bin.display()))
 }
 
 /// Compiles `sources` with `compiler` against `include/` and `libroughwall.so` into
-/// `out`; panics with the compiler's message on failure.
+/// `out`; panics with the compiler's message on failure. The library's directory goes in as
+/// an RPATH (not a RUNPATH), which the loader searches before `LD_LIBRARY_PATH`: `cargo
+/// test` puts `target/debug` first there, whose `libroughwall.so` (left by an earlier
+/// `cargo build`) may be older than the one this test was built with.
 pub fn build_with_roughwall(compiler: &str, sources: &[&Path], out: &Path, extra: &[&str]) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let lib = c_library_dir();
@@ -201,7 +211,7 @@ pub fn build_with_roughwall(compiler: &str, sources: &[&Path], out: &Path, extra
         .arg("-L")
         .arg(&lib)
         .arg("-lroughwall")
-        .arg(format!("-Wl,-rpath,{}", lib.display()))
+        .arg(format!("-Wl,--disable-new-dtags,-rpath,{}", lib.display()))
         .arg("-lm")
         .arg("-o")
         .arg(out)

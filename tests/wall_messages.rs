@@ -1,0 +1,197 @@
+//! A bad wall parameter gives the same one-line message from the C library's `rw_wall_new`
+//! as from a case file (issue 9: "validated with the same ranges and one-line messages as
+//! case files"). For each bad value, the message of `rw_wall_new` is compared with
+//! * the error of the case file holding that value, parsed by `case::parse` and resolved
+//!   as `rebound stochastic` resolves it (`commands::stochastic::prepare`), and
+//! * what `rebound stochastic --case` prints (`error: ` and the message, one line, exit 2).
+
+mod common;
+use common::*;
+use roughwall::commands::stochastic::{prepare, DEFAULT_CASE};
+use roughwall::commands::Context;
+use roughwall::ffi::*;
+use std::ffi::{c_char, CStr};
+
+/// A parameter of both interfaces: how to set it in `rw_wall_params` and in a case file.
+#[derive(Clone, Copy)]
+enum Param {
+    DeltaXi,
+    DeltaZeta,
+    Psi,
+    EH,
+    AlphaE,
+    Mu0,
+    MuH,
+    AlphaMu,
+    /// Δγ with an isotropic model (`RW_MODEL_GAUSSIAN_ANGLE`, `gaussian-angle`).
+    DeltaGammaIsotropic,
+    /// Δγ with the paper's model, which takes it from the wall.
+    DeltaGammaPapers,
+}
+
+/// `x` as a TOML number (TOML has `nan`, `inf` and `-inf`).
+fn toml_number(x: f64) -> String {
+    if x.is_nan() {
+        "nan".into()
+    } else if x.is_infinite() {
+        if x > 0.0 { "inf" } else { "-inf" }.into()
+    } else {
+        format!("{x:?}")
+    }
+}
+
+/// The built-in case of `rebound stochastic` (the Sec. 4 glass–steel scene) with `p` = `x`.
+fn case_text(p: Param, x: f64) -> String {
+    let v = toml_number(x);
+    let base = DEFAULT_CASE;
+    let sh = "preset = \"glass-steel\"";
+    let edit = |from: &str, to: String| {
+        assert!(base.contains(from), "{from}");
+        base.replacen(from, &to, 1)
+    };
+    match p {
+        Param::DeltaXi => edit("delta_xi_deg = 3.8", format!("delta_xi_deg = {v}")),
+        Param::DeltaZeta => edit("delta_zeta_deg = 7.5", format!("delta_zeta_deg = {v}")),
+        Param::Psi => edit("psi = 2.0", format!("psi = {v}")),
+        Param::EH => edit(sh, format!("{sh}\ne_h = {v}")),
+        Param::AlphaE => edit(sh, format!("{sh}\nalpha_e_deg = {v}")),
+        Param::Mu0 => edit(sh, format!("{sh}\nmu_0 = {v}")),
+        Param::MuH => edit(sh, format!("{sh}\nmu_h = {v}")),
+        Param::AlphaMu => edit(sh, format!("{sh}\nalpha_mu_deg = {v}")),
+        Param::DeltaGammaIsotropic => edit(
+            "psi = 2.0",
+            format!("psi = 2.0\nmodel = \"gaussian-angle\"\ndelta_gamma_deg = {v}"),
+        ),
+        Param::DeltaGammaPapers => edit("psi = 2.0", format!("psi = 2.0\ndelta_gamma_deg = {v}")),
+    }
+}
+
+/// The same wall as `rw_wall_params`, with `p` = `x`.
+fn c_params(p: Param, x: f64) -> rw_wall_params {
+    let mut c = std::mem::MaybeUninit::<rw_wall_params>::uninit();
+    assert_eq!(unsafe { rw_wall_params_default(c.as_mut_ptr()) }, RW_OK);
+    let mut c = unsafe { c.assume_init() };
+    c.delta_xi_deg = 3.8;
+    c.delta_zeta_deg = 7.5;
+    c.law = RW_LAW_SOMMERFELD_HUBER;
+    c.preset = RW_PRESET_GLASS_STEEL;
+    c.psi = 2.0;
+    match p {
+        Param::DeltaXi => c.delta_xi_deg = x,
+        Param::DeltaZeta => c.delta_zeta_deg = x,
+        Param::Psi => c.psi = x,
+        Param::EH => c.e_h = x,
+        Param::AlphaE => c.alpha_e_deg = x,
+        Param::Mu0 => c.mu_0 = x,
+        Param::MuH => c.mu_h = x,
+        Param::AlphaMu => c.alpha_mu_deg = x,
+        Param::DeltaGammaIsotropic => {
+            c.model = RW_MODEL_GAUSSIAN_ANGLE;
+            c.delta_gamma_deg = x;
+        }
+        Param::DeltaGammaPapers => c.delta_gamma_deg = x,
+    }
+    c
+}
+
+/// `rw_wall_new`'s status and message.
+fn c_message(p: &rw_wall_params) -> (i32, String) {
+    let mut w = std::ptr::null_mut();
+    let mut buf = [0 as c_char; 1024];
+    let s = unsafe { rw_wall_new(p, &mut w, buf.as_mut_ptr(), buf.len()) };
+    unsafe { rw_wall_free(w) };
+    let msg = unsafe { CStr::from_ptr(buf.as_ptr()) };
+    (s, msg.to_str().unwrap().to_string())
+}
+
+/// The error of the case `text` as `rebound stochastic` resolves it (`None`: accepted).
+fn case_message(text: &str, dir: &std::path::Path) -> Option<String> {
+    let ctx = match Context::from_text(
+        text.to_string(),
+        "case.toml".into(),
+        None,
+        Some(dir.join("out")),
+        "stochastic",
+    ) {
+        Ok(ctx) => ctx,
+        Err(e) => return Some(e.to_string()),
+    };
+    prepare(&ctx.case, &Default::default(), ctx.seed)
+        .err()
+        .map(|e| e.to_string())
+}
+
+const NAN: f64 = f64::NAN;
+const INF: f64 = f64::INFINITY;
+
+/// The bad values: negative, zero where it must be positive, too large, NaN, ±inf. (In
+/// `rw_wall_params` a NaN Sommerfeld–Huber parameter or Δγ means "the preset's value" or
+/// "from the wall", not a bad value, so NaN is checked for Δξ, Δζ and ψ only.)
+fn bad_values() -> Vec<(Param, f64)> {
+    use Param::*;
+    let mut v = Vec::new();
+    for p in [DeltaXi, DeltaZeta] {
+        v.extend([-1.0, -1e-9, 20.5, 25.0, 1e300, NAN, INF, -INF].map(|x| (p, x)));
+    }
+    v.extend([0.0, -1.0, 0.005, 100.5, 1e9, NAN, INF, -INF].map(|x| (Psi, x)));
+    v.extend([0.0, -0.5, 1.5, INF, -INF].map(|x| (EH, x)));
+    v.extend([0.0, -10.0, 90.5, INF].map(|x| (AlphaE, x)));
+    v.extend([-0.1, 2.5, INF, -INF].map(|x| (Mu0, x)));
+    v.extend([-1.0, 3.0, INF].map(|x| (MuH, x)));
+    v.extend([0.0, 100.0, -INF].map(|x| (AlphaMu, x)));
+    v.extend([-1.0, 25.0, INF].map(|x| (DeltaGammaIsotropic, x)));
+    v.extend([3.0].map(|x| (DeltaGammaPapers, x)));
+    v
+}
+
+#[test]
+fn rw_wall_new_gives_the_case_files_message_for_every_bad_value() {
+    let tmp = tempfile::tempdir().unwrap();
+    // The base wall is valid on both sides (the Δζ = 7.5° warning aside).
+    let (s, _) = c_message(&c_params(Param::Psi, 2.0));
+    assert_eq!(s, RW_OK);
+    assert_eq!(case_message(&case_text(Param::Psi, 2.0), tmp.path()), None);
+    let mut keys = std::collections::BTreeSet::new();
+    for (p, x) in bad_values() {
+        let text = case_text(p, x);
+        let (status, from_c) = c_message(&c_params(p, x));
+        assert_eq!(status, RW_INVALID_PARAMETER, "{x}: {from_c}\n{text}");
+        let from_case =
+            case_message(&text, tmp.path()).unwrap_or_else(|| panic!("case accepted: {x}\n{text}"));
+        assert_eq!(from_c, from_case, "{x}\n{text}");
+        assert!(from_c.contains('`') && !from_c.contains('\n'), "{from_c}");
+        keys.insert(from_c.split('`').nth(1).unwrap().to_string());
+    }
+    // Every parameter was reached (its own key in the message).
+    let want = [
+        "collision.alpha_e_deg",
+        "collision.alpha_mu_deg",
+        "collision.e_h",
+        "collision.mu_0",
+        "collision.mu_h",
+        "stochastic.delta_gamma_deg",
+        "stochastic.psi",
+        "wall.delta_xi_deg",
+        "wall.delta_zeta_deg",
+    ];
+    assert_eq!(keys.into_iter().collect::<Vec<_>>(), want);
+}
+
+#[test]
+fn rebound_stochastic_prints_the_same_line_as_rw_wall_new() {
+    let tmp = tempfile::tempdir().unwrap();
+    for (k, (p, x)) in bad_values().into_iter().enumerate().step_by(3) {
+        let case = write_case(tmp.path(), &format!("bad{k}.toml"), &case_text(p, x));
+        let (_, from_c) = c_message(&c_params(p, x));
+        let out = tmp.path().join(format!("out{k}"));
+        let run = rebound(&[
+            "stochastic",
+            "--case",
+            case.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        run.refused(&from_c);
+        assert_eq!(run.stderr.trim(), format!("error: {from_c}"), "{x}");
+    }
+}

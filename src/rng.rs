@@ -23,6 +23,8 @@ pub mod domain {
     pub const SURFACE_STATS: u64 = 4;
     /// Wall hits of a host code through `wall_model` (indices: particle id, collision index).
     pub const WALL_HITS: u64 = 5;
+    /// Shadow-law draws of `rebound calibrate` (indices: condition, particle).
+    pub const CALIBRATION: u64 = 6;
 }
 
 /// SplitMix64 finaliser: a bijective 64-bit mixer.

@@ -12,7 +12,7 @@
 
 use crate::case::{capture_warnings, Case, CollisionSection, StochasticSection, WallSpec};
 use crate::collision::CollisionLaw;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::rng;
 use crate::stochastic::{rebound_variant, Variant};
 use crate::wall::Deviations;

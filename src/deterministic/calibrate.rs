@@ -1,11 +1,16 @@
 //! The escape law of the `calibrated` stochastic model, measured on a deterministic run
 //! (`rebound calibrate`): every collision of every followed history is counted with its
 //! stage, its reduced incident and rebound angles and whether the particle then left the
-//! wall ([`crate::stochastic::escape_table`]).
+//! wall, and the first wall element of every history beside a draw of the paper's shadow
+//! law for the same direction ([`crate::stochastic::escape_table`]).
 
 use super::{history_observed, stream_prefix, Fate, HitInfo, ModelSetup, Tracker};
+use crate::angles::{gamma_from_normal, incident_angles};
 use crate::incidence::IncidentCondition;
-use crate::stochastic::escape_table::{EscapeCounts, Stage};
+use crate::rng;
+use crate::stochastic::escape_table::{reduced_angle, EscapeCounts, Stage};
+use crate::stochastic::ShadowSampler;
+use crate::wall::delta_gamma;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 
@@ -22,23 +27,48 @@ pub fn escape_counts(
     let mut total = EscapeCounts::default();
     for (k, cond) in conditions.iter().enumerate() {
         let prefix = stream_prefix(seed, k as u64);
+        // Shadow-law draws from a stream of their own (the histories' are untouched).
+        let model_prefix = rng::StreamPrefix::new(seed, &[rng::domain::CALIBRATION, k as u64]);
         let counts = (0..count)
             .into_par_iter()
             .fold(
                 || {
                     (
                         EscapeCounts::default(),
-                        Vec::<(Vector3<f64>, Vector3<f64>)>::new(),
+                        Vec::<(Vector3<f64>, Vector3<f64>, Vector3<f64>)>::new(),
                     )
                 },
                 |(mut counts, mut hits), i| {
                     hits.clear();
                     let h = history_observed(tracker, setup, cond, &prefix, i, |hit: &HitInfo| {
-                        hits.push((hit.u_in, hit.u_out))
+                        hits.push((hit.u_in, hit.u_out, hit.normal))
                     });
+                    // Every collision's element beside a shadow-law draw for its direction.
+                    let mut model_stream = model_prefix.stream(i);
+                    for (j, (u_in, _, normal)) in hits.iter().enumerate() {
+                        let (alpha, beta) = incident_angles(u_in);
+                        let dg = delta_gamma(&setup.wall, beta);
+                        if dg <= 0.0 {
+                            continue;
+                        }
+                        let shadow = if alpha > 0.0 {
+                            ShadowSampler::rising(alpha, dg)
+                        } else {
+                            ShadowSampler::new(alpha, dg)
+                        };
+                        let (g_det, _) = gamma_from_normal(normal, beta);
+                        let g_model = shadow.sample(&mut model_stream);
+                        let stage = if j == 0 { Stage::First } else { Stage::Later };
+                        counts.push_element(
+                            stage,
+                            reduced_angle(u_in, &setup.wall),
+                            g_det / dg,
+                            g_model / dg,
+                        );
+                    }
                     if h.fate == Fate::Escaped {
                         let last = hits.len().saturating_sub(1);
-                        for (j, (u_in, u_out)) in hits.iter().enumerate() {
+                        for (j, (u_in, u_out, _)) in hits.iter().enumerate() {
                             let stage = if j == 0 { Stage::First } else { Stage::Later };
                             counts.push(stage, u_in, u_out, &setup.wall, j == last);
                         }

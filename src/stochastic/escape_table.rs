@@ -40,9 +40,22 @@ pub const STAGES: usize = 2;
 pub const CELLS: usize = STAGES * X_IN_BINS * X_OUT_BINS;
 /// Collisions a cell needs to stand on its own; sparser cells take their neighbour's value.
 pub const MIN_COUNT: u64 = 50;
+/// Shadow-law draws a first-element cell needs for its weight (the weight's relative
+/// noise is about `√(2/n)`: 4.5 % here); sparser cells keep the shadow law (weight 1).
+pub const ELEMENT_MIN_COUNT: u64 = 1000;
+/// Lower edge of the reduced first-element angle `g = γ/Δγ(β⁻)`.
+pub const G_MIN: f64 = -4.0;
+/// Upper edge of `g`.
+pub const G_MAX: f64 = 6.0;
+/// Bins along `g`.
+pub const G_BINS: usize = 100;
+/// Cells of the first-element correction.
+pub const ELEMENT_CELLS: usize = STAGES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
-pub const MAGIC: &str = "# roughwall escape table v1";
+pub const MAGIC: &str = "# roughwall escape table v2";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
+const ELEMENT_HEADER: &str = "element_stage,x_in,g,deterministic,model,weight";
+const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
 
 const DX_IN: f64 = (X_IN_MAX - X_IN_MIN) / X_IN_BINS as f64;
 const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
@@ -96,6 +109,10 @@ fn bin_in(x_in: f64) -> usize {
 pub struct EscapeCounts {
     pub collisions: Vec<u64>,
     pub escaped: Vec<u64>,
+    /// First wall elements by `(x_in, g)`: seen by the deterministic particles, and drawn
+    /// from the paper's shadow law (Eqs. 31–33) for the same incident directions.
+    pub element_deterministic: Vec<u64>,
+    pub element_model: Vec<u64>,
 }
 
 impl Default for EscapeCounts {
@@ -103,11 +120,34 @@ impl Default for EscapeCounts {
         EscapeCounts {
             collisions: vec![0; CELLS],
             escaped: vec![0; CELLS],
+            element_deterministic: vec![0; ELEMENT_CELLS],
+            element_model: vec![0; ELEMENT_CELLS],
         }
     }
 }
 
+/// The cell of `(stage, x_in, g)` in the element tables (`None` outside the `g` range).
+fn element_cell(stage: Stage, x_in: f64, g: f64) -> Option<usize> {
+    if !(G_MIN..G_MAX).contains(&g) || x_in.is_nan() {
+        return None;
+    }
+    let i_g = (((g - G_MIN) / DG) as usize).min(G_BINS - 1);
+    Some((stage as usize * X_IN_BINS + bin_in(x_in)) * G_BINS + i_g)
+}
+
 impl EscapeCounts {
+    /// Counts the wall element of one collision: `g_deterministic = γ/Δγ(β)` of the
+    /// element the deterministic particle hit (`β` of its velocity before the collision),
+    /// `g_model` of one draw of the shadow law for the same direction (reduced angle `x_in`).
+    pub fn push_element(&mut self, stage: Stage, x_in: f64, g_deterministic: f64, g_model: f64) {
+        if let Some(c) = element_cell(stage, x_in, g_deterministic) {
+            self.element_deterministic[c] += 1;
+        }
+        if let Some(c) = element_cell(stage, x_in, g_model) {
+            self.element_model[c] += 1;
+        }
+    }
+
     /// Counts one collision with incident velocity `u_in` and rebound `u_out`, and whether
     /// the particle then left the wall. Rebounds into the mean wall (`α⁺ ≤ 0`) are not
     /// counted: they cannot escape and the model never asks.
@@ -144,6 +184,16 @@ impl EscapeCounts {
         for (a, b) in self.escaped.iter_mut().zip(&other.escaped) {
             *a += b;
         }
+        for (a, b) in self
+            .element_deterministic
+            .iter_mut()
+            .zip(&other.element_deterministic)
+        {
+            *a += b;
+        }
+        for (a, b) in self.element_model.iter_mut().zip(&other.element_model) {
+            *a += b;
+        }
     }
 
     /// Total collisions counted.
@@ -158,6 +208,12 @@ impl EscapeCounts {
 pub struct EscapeTable {
     counts: EscapeCounts,
     p: Vec<f64>,
+    /// First-element correction: the ratio of the deterministic first elements' law to the
+    /// shadow law per `(x_in, g)` cell (1 where the model drew fewer than
+    /// [`ELEMENT_MIN_COUNT`]),
+    /// and its largest value per `x_in` row (the rejection bound).
+    weight: Vec<f64>,
+    row_max: Vec<f64>,
     /// Where the table came from (the `# source:` line of its file).
     pub source: String,
 }
@@ -197,11 +253,54 @@ impl EscapeTable {
                 *v = 1.0;
             }
         }
+        let weight: Vec<f64> = (0..ELEMENT_CELLS)
+            .map(|c| {
+                let m = counts.element_model[c];
+                if m >= ELEMENT_MIN_COUNT {
+                    counts.element_deterministic[c] as f64 / m as f64
+                } else {
+                    1.0
+                }
+            })
+            .collect();
+        let row_max = weight
+            .chunks(G_BINS)
+            .map(|r| r.iter().copied().fold(0.0, f64::max))
+            .collect();
         EscapeTable {
             counts,
             p,
+            weight,
+            row_max,
             source: source.to_string(),
         }
+    }
+
+    /// The first-element weight `w(x_in, g)` (bilinear between cell centres, 1 outside the
+    /// `g` range): the calibrated model accepts a shadow-law draw with `w / bound(x_in)`.
+    #[inline]
+    pub fn element_weight(&self, stage: Stage, x_in: f64, g: f64) -> f64 {
+        if g.is_nan() || !(G_MIN..G_MAX).contains(&g) {
+            return 1.0;
+        }
+        let x_in = if x_in.is_nan() { 0.0 } else { x_in };
+        let (i0, i1, ti) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
+        let (g0, g1, tg) = axis(g, G_MIN, DG, G_BINS);
+        let row = stage as usize * X_IN_BINS;
+        let at = |i: usize, j: usize| self.weight[(row + i) * G_BINS + j];
+        let lo = at(i0, g0) + (at(i0, g1) - at(i0, g0)) * tg;
+        let hi = at(i1, g0) + (at(i1, g1) - at(i1, g0)) * tg;
+        lo + (hi - lo) * ti
+    }
+
+    /// An upper bound of [`Self::element_weight`] at `x_in` (over every `g`; at least 1,
+    /// the weight outside the range).
+    #[inline]
+    pub fn element_bound(&self, stage: Stage, x_in: f64) -> f64 {
+        let x_in = if x_in.is_nan() { 0.0 } else { x_in };
+        let (i0, i1, _) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
+        let row = stage as usize * X_IN_BINS;
+        self.row_max[row + i0].max(self.row_max[row + i1]).max(1.0)
     }
 
     /// The counts the table came from.
@@ -250,6 +349,24 @@ impl EscapeTable {
                         self.counts.collisions[c],
                         self.counts.escaped[c],
                         self.p[c]
+                    ));
+                }
+            }
+        }
+        s.push_str(ELEMENT_HEADER);
+        s.push('\n');
+        for stage in [Stage::First, Stage::Later] {
+            for i_in in 0..X_IN_BINS {
+                for i_g in 0..G_BINS {
+                    let c = (stage as usize * X_IN_BINS + i_in) * G_BINS + i_g;
+                    s.push_str(&format!(
+                        "{},{:.3},{:.3},{},{},{:.6}\n",
+                        stage.name(),
+                        X_IN_MIN + (i_in as f64 + 0.5) * DX_IN,
+                        G_MIN + (i_g as f64 + 0.5) * DG,
+                        self.counts.element_deterministic[c],
+                        self.counts.element_model[c],
+                        self.weight[c]
                     ));
                 }
             }
@@ -335,8 +452,68 @@ impl EscapeTable {
                 }
             }
         }
+        match lines.next() {
+            Some((_, l)) if l == ELEMENT_HEADER => {}
+            Some((n, _)) => {
+                return Err(bad(n, &format!("expected the header `{ELEMENT_HEADER}`")))
+            }
+            None => {
+                return Err(Error::Input(format!(
+                    "{what}: truncated after the {CELLS} escape rows (the first-element block is missing)"
+                )))
+            }
+        }
+        let mut written_w = vec![0.0; ELEMENT_CELLS];
+        for stage in [Stage::First, Stage::Later] {
+            for i_in in 0..X_IN_BINS {
+                for i_g in 0..G_BINS {
+                    let k = (stage as usize * X_IN_BINS + i_in) * G_BINS + i_g;
+                    let (n, l) = lines.next().ok_or_else(|| {
+                        Error::Input(format!(
+                            "{what}: truncated after {k} of {ELEMENT_CELLS} element rows"
+                        ))
+                    })?;
+                    let f: Vec<&str> = l.split(',').collect();
+                    if f.len() != 6 {
+                        return Err(bad(n, &format!("{} fields, expected 6", f.len())));
+                    }
+                    let x_in = X_IN_MIN + (i_in as f64 + 0.5) * DX_IN;
+                    let g = G_MIN + (i_g as f64 + 0.5) * DG;
+                    let num = |j: usize| -> Result<f64> {
+                        f[j].parse::<f64>()
+                            .ok()
+                            .filter(|v| v.is_finite())
+                            .ok_or_else(|| bad(n, &format!("`{}` is not a number", f[j])))
+                    };
+                    if f[0] != stage.name()
+                        || (num(1)? - x_in).abs() > 1e-9
+                        || (num(2)? - g).abs() > 1e-9
+                    {
+                        return Err(bad(
+                            n,
+                            &format!(
+                                "expected the element cell ({}, x_in = {x_in}, g = {g}): the table does not match this version's grid",
+                                stage.name()
+                            ),
+                        ));
+                    }
+                    let int = |j: usize| -> Result<u64> {
+                        f[j].parse::<u64>().map_err(|_| {
+                            bad(n, &format!("`{}` is not a non-negative integer", f[j]))
+                        })
+                    };
+                    counts.element_deterministic[k] = int(3)?;
+                    counts.element_model[k] = int(4)?;
+                    let w = num(5)?;
+                    if w < 0.0 {
+                        return Err(bad(n, &format!("weight = {w} is negative")));
+                    }
+                    written_w[k] = w;
+                }
+            }
+        }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
-            return Err(bad(n, &format!("more than the {CELLS} rows of the grid")));
+            return Err(bad(n, "more rows than the grid has"));
         }
         let table = EscapeTable::from_counts(counts, &source);
         // The written probabilities must be the ones the counts give (a hand-edited or
@@ -348,6 +525,15 @@ impl EscapeTable {
                 k + 1,
                 written[k],
                 table.p[k]
+            )));
+        }
+        if let Some(k) = (0..ELEMENT_CELLS).find(|&k| (written_w[k] - table.weight[k]).abs() > 5e-7)
+        {
+            return Err(Error::Input(format!(
+                "{what}: element row {} gives weight {} but its counts give {:.6} (edited or corrupted)",
+                k + 1,
+                written_w[k],
+                table.weight[k]
             )));
         }
         if table.counts.total() == 0 {
@@ -465,6 +651,8 @@ mod tests {
                 Stage::First
             };
             c.push(stage, &u_in, &u_out, &w, k % 5 != 0);
+            let g = -2.0 + 0.004 * k as f64;
+            c.push_element(stage, -1.2, g, g + 0.3);
         }
         let t = EscapeTable::from_counts(c.clone(), "test");
         let back = EscapeTable::parse(&t.to_csv(), "t").unwrap();
@@ -508,7 +696,7 @@ mod tests {
         let fields: Vec<&str> = row.split(',').collect();
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v1", "v9", 1), "not an escape table"),
+            (good.replacen("v2", "v9", 1), "not an escape table"),
             (edit(1, "source"), "# source"),
             (edit(2, "a,b"), "header"),
             (lines[..100].join("\n"), "truncated after 97"),
@@ -561,12 +749,16 @@ mod tests {
                 ),
                 "`nan` is not a number",
             ),
-            (format!("{good}first,0,0,0,0,0\n"), "more than the"),
+            (
+                format!("{good}first,0,0,0,0,0\n"),
+                "more rows than the grid",
+            ),
         ];
         for (text, needle) in cases {
-            let e = EscapeTable::parse(&text, "`stochastic.escape_table` = \"t.csv\"")
-                .unwrap_err()
-                .to_string();
+            let e = match EscapeTable::parse(&text, "`stochastic.escape_table` = \"t.csv\"") {
+                Ok(_) => panic!("accepted a bad table (wanted {needle})"),
+                Err(e) => e.to_string(),
+            };
             assert!(e.contains(needle), "{e} (wanted {needle})");
             assert!(e.contains("t.csv"), "{e}");
             assert!(!e.contains('\n'), "{e}");
@@ -584,7 +776,41 @@ mod tests {
                 ),
                 "t",
             );
-            assert!(e.unwrap_err().to_string().contains("edited or corrupted"));
+            match e {
+                Ok(_) => panic!("accepted an edited table"),
+                Err(e) => assert!(e.to_string().contains("edited or corrupted"), "{e}"),
+            }
+        }
+    }
+
+    #[test]
+    fn element_weights_are_the_count_ratio_and_bounded() {
+        let mut c = EscapeCounts::default();
+        // Row x_in ∈ [−1.5, −1): the deterministic run saw twice the shadow law's count above
+        // g = 0 and the same below.
+        for k in 0..200 {
+            let g = -2.0 + 0.02 * k as f64 + 0.01;
+            let n = if g > 0.0 {
+                2 * ELEMENT_MIN_COUNT
+            } else {
+                ELEMENT_MIN_COUNT
+            };
+            let cell = element_cell(Stage::First, -1.2, g).unwrap();
+            c.element_deterministic[cell] = n;
+            c.element_model[cell] = ELEMENT_MIN_COUNT;
+        }
+        let t = EscapeTable::from_counts(c, "w");
+        assert!((t.element_weight(Stage::First, -1.25, 1.05) - 2.0).abs() < 1e-12);
+        assert!((t.element_weight(Stage::First, -1.25, -1.05) - 1.0).abs() < 1e-12);
+        // Empty cells and the other stage keep the shadow law; outside the g range too.
+        assert_eq!(t.element_weight(Stage::Later, -1.25, 1.05), 1.0);
+        assert_eq!(t.element_weight(Stage::First, -1.25, 7.0), 1.0);
+        assert!(t.element_bound(Stage::First, -1.25) >= 2.0);
+        for k in 0..400 {
+            let (x, g) = (-3.0 + 0.01 * k as f64, -4.0 + 0.025 * k as f64);
+            assert!(
+                t.element_weight(Stage::First, x, g) <= t.element_bound(Stage::First, x) + 1e-12
+            );
         }
     }
 

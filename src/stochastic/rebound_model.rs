@@ -5,7 +5,7 @@
 //! collision: it needs only the incident state, the wall's two deviations, the
 //! collision law and a random generator — no surface, no tables.
 
-use super::escape_table::{reduced_angle, Stage};
+use super::escape_table::{reduced_angle, EscapeTable, Stage};
 use super::shadow_effect::ShadowSampler;
 use super::variants::{Variant, VariantKind};
 use crate::angles::{
@@ -115,6 +115,37 @@ impl Incidence {
     #[inline]
     fn draw_wall<R: Rng + ?Sized>(&self, rng: &mut R) -> SeenWall {
         let gamma = self.sampler.sample(rng);
+        self.wall_given_gamma(gamma, rng)
+    }
+
+    /// [`Self::draw_wall`] with the first element's `γ` law corrected by the calibrated
+    /// weight `w(x_in, γ/Δγ(β⁻))` of [`EscapeTable::element_weight`]: a shadow-law draw is
+    /// accepted with `w / bound` (rejection sampling: exact for the corrected law).
+    #[inline]
+    fn draw_wall_corrected<R: Rng + ?Sized>(
+        &self,
+        table: &EscapeTable,
+        stage: Stage,
+        x_in: f64,
+        rng: &mut R,
+    ) -> SeenWall {
+        let dg = self.moments.var_a.max(0.0).sqrt();
+        let bound = table.element_bound(stage, x_in);
+        let mut gamma = self.sampler.sample(rng);
+        // The bound makes ~1–2 proposals typical; the cap only guards a degenerate table.
+        for _ in 0..1000 {
+            if dg <= 0.0 || rng.gen::<f64>() * bound < table.element_weight(stage, x_in, gamma / dg)
+            {
+                break;
+            }
+            gamma = self.sampler.sample(rng);
+        }
+        self.wall_given_gamma(gamma, rng)
+    }
+
+    /// Steps 3–4 for a drawn `γ`: `γ*` from Eq. (30), the normal of Eq. (23).
+    #[inline]
+    fn wall_given_gamma<R: Rng + ?Sized>(&self, gamma: f64, rng: &mut R) -> SeenWall {
         let (mean, var) = conditional_gamma_star(&self.moments, gamma);
         let gamma_star = if var > 0.0 {
             let z: f64 = rng.sample(StandardNormal);
@@ -538,7 +569,7 @@ fn rebound_repeated<R: Rng + ?Sized>(
 }
 
 /// The `calibrated` model: the paper's virtual walls (Eqs. 26, 29–33, for the current
-/// direction), the collision law, and then the particle leaves with the calibrated
+/// direction; the first one's `γ` law corrected by the calibrated weight), the collision law, and then the particle leaves with the calibrated
 /// probability `P(escape | stage, α/Δγ(β), α⁺/Δγ(β⁺))` of [`super::escape_table`] — or it
 /// is trapped and meets the wall again *with its rebound velocity* (rising or not: the
 /// shadow law continued to `α > 0`, [`ShadowSampler::rising`]). Radenkovic & Simonin
@@ -564,7 +595,7 @@ fn rebound_calibrated<R: Rng + ?Sized>(
     let mut candidates = 0u32;
     let mut first = SeenWall::FLAT;
     for tries in 1..=MAX_TRIES {
-        let seen = cur.draw_wall(rng);
+        let seen = cur.draw_wall_corrected(table, stage, x_in, rng);
         if u.dot(&seen.normal) >= 0.0 {
             continue;
         }
@@ -720,5 +751,50 @@ mod tests {
             let se = (p * (1.0 - p) / n as f64).sqrt().max(1e-9);
             assert!((f - p).abs() < 5.0 * se + 1e-12, "α⁺={a_deg}: {f} vs {p}");
         }
+    }
+
+    #[test]
+    fn the_element_correction_samples_the_weighted_law() {
+        // A table whose weight is 3 above γ = 0 and 1 below, at the direction's x_in: the
+        // corrected draws must follow 3·P_eff above 0 and P_eff below (renormalised).
+        use crate::stochastic::escape_table::{EscapeCounts, EscapeTable, ELEMENT_MIN_COUNT};
+        let wall = Deviations {
+            delta_xi: 0.05,
+            delta_zeta: 0.05,
+        };
+        let (alpha, beta) = (-0.06, 0.0);
+        let inc = Incidence::with_variant(alpha, beta, &wall, Variant::calibrated(None));
+        let x_in = alpha / 0.05;
+        let mut c = EscapeCounts::default();
+        let mut probe = EscapeCounts::default();
+        for k in 0..100 {
+            let g = -4.0 + 0.1 * k as f64 + 0.05;
+            probe.push_element(Stage::First, x_in, g, g);
+            let cell = probe.element_model.iter().position(|&n| n > 0).unwrap();
+            probe.element_model[cell] = 0;
+            c.element_model[cell] = ELEMENT_MIN_COUNT;
+            c.element_deterministic[cell] = if g > 0.0 { 3 } else { 1 } * ELEMENT_MIN_COUNT;
+        }
+        let table = EscapeTable::from_counts(c, "w");
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
+        let n = 200_000;
+        let plain = (0..n)
+            .filter(|_| inc.draw_wall(&mut rng).gamma > 0.0)
+            .count() as f64
+            / n as f64;
+        let corrected = (0..n)
+            .filter(|_| {
+                inc.draw_wall_corrected(&table, Stage::First, x_in, &mut rng)
+                    .gamma
+                    > 0.0
+            })
+            .count() as f64
+            / n as f64;
+        // Bilinear reading smooths the step over one bin on either side of 0 (±0.1 Δγ).
+        let want = 3.0 * plain / (3.0 * plain + (1.0 - plain));
+        assert!(
+            (corrected - want).abs() < 0.01,
+            "{corrected} vs {want} (plain {plain})"
+        );
     }
 }

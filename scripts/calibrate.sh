@@ -6,7 +6,8 @@
 #     (`radenkovic-simonin-2021`) and `calibrated` — both run with the deviations MEASURED on
 #     the deterministic surface (its run.toml), so that the comparison isolates the model from
 #     the surface's discretisation (the generated surfaces have 1-3 % less slope than nominal).
-#     Two walls the table was not calibrated on: (5°, 5°) and (4°, 1°).
+#     Two walls the table was not calibrated on: (5°, 5°) and (4°, 1°). The deterministic
+#     run's own noise: the same scene on another surface (seed 7) against the first.
 # Writes $REBOUND_RESULTS/calibration/; `rebound report` turns it into a REPORT.md section.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
@@ -32,6 +33,10 @@ for s in $SCENES; do
   stage_start "Calibration: $scene"
   det="$C/$scene/deterministic"
   run deterministic --case "$s.toml" --particles "$N" --out "$det"
+  # The deterministic run's own noise: the same scene on another surface (another seed),
+  # compared with the first; a model is within the noise when it is no farther than this.
+  run deterministic --case "$s.toml" --particles "$N" --seed 7 --out "$C/$scene/noise/deterministic"
+  run compare --a "$det" --b "$C/$scene/noise/deterministic" --out "$C/$scene/noise/compare"
   xi=$(awk -F' = ' '/^measured_delta_xi_deg/{print $2; exit}' "$det/run.toml")
   ze=$(awk -F' = ' '/^measured_delta_zeta_deg/{print $2; exit}' "$det/run.toml")
   [ -n "$xi" ] && [ -n "$ze" ] || { echo "calibrate.sh: no measured deviations in $det/run.toml" >&2; exit 1; }

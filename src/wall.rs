@@ -27,6 +27,11 @@ impl Moments {
             0.0
         }
     }
+
+    /// `Δγ = √Var a`: the roughness angle in the plane of the rotation (Eq. 26's first line).
+    pub fn delta_gamma(&self) -> f64 {
+        self.var_a.max(0.0).sqrt()
+    }
 }
 
 /// Normal-angle deviation from surface parameters, `Δ = √2 h / c_L` (Radenkovic & Simonin 2021, Eq. 15).
@@ -69,7 +74,20 @@ pub fn conditional_gamma_star(m: &Moments, gamma: f64) -> (f64, f64) {
 /// Standard deviation of the wall inclination in the plane of direction `β`,
 /// `Δγ(β) = sqrt(cos²β Δξ² + sin²β Δζ²)` (Radenkovic & Simonin 2021, Eq. 35; root of Eq. 26's first line).
 pub fn delta_gamma(dev: &Deviations, beta: f64) -> f64 {
-    rotated_moments(dev, beta).var_a.sqrt()
+    rotated_moments(dev, beta).delta_gamma()
+}
+
+/// `Δγ(β)²` of Eq. (35) for the direction of a velocity with horizontal components
+/// `(u, w)`: `cos²β = u²/(u² + w²)` from the velocity, no trigonometry; a vertical velocity
+/// takes `β = 0` (physics notes §1).
+#[inline]
+pub fn delta_gamma_sq_of_direction(u: f64, w: f64, dev: &Deviations) -> f64 {
+    let h2 = u * u + w * w;
+    if h2 > 0.0 {
+        (u * u * dev.delta_xi * dev.delta_xi + w * w * dev.delta_zeta * dev.delta_zeta) / h2
+    } else {
+        dev.delta_xi * dev.delta_xi
+    }
 }
 
 #[cfg(test)]

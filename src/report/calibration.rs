@@ -21,7 +21,9 @@ const SCENES: [(&str, &str); 7] = [
     ("test-5-5", "(5°, 5°), elastic — not calibrated on"),
     ("test-4-1", "(4°, 1°), elastic — not calibrated on"),
 ];
-const MODELS: [&str; 2] = ["radenkovic-simonin-2021", "calibrated"];
+/// The two models, and `noise`: `deterministic` on another surface (seed 7) against the
+/// first — the deterministic run's own noise, surface realisation included.
+const MODELS: [&str; 3] = ["radenkovic-simonin-2021", "calibrated", "noise"];
 
 /// Worst case over the conditions with `|α⁻| ≥ min_alpha`.
 #[derive(Clone, Copy, Debug, Default)]
@@ -159,6 +161,21 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
     );
     // Reading, from the numbers above.
     let meets = |w: &Worst| w.ks_alpha <= 0.005 && w.ks_dbeta <= 0.005 && w.bias_alpha <= 0.05;
+    // Within the noise: no farther from `deterministic` than another surface is.
+    let within: Vec<&str> = scores
+        .iter()
+        .filter(|c| c.1 == "calibrated")
+        .filter(|c| {
+            scores.iter().any(|n| {
+                n.0 == c.0
+                    && n.1 == "noise"
+                    && c.2.ks_alpha <= n.2.ks_alpha
+                    && c.2.ks_dbeta <= n.2.ks_dbeta
+                    && c.2.bias_alpha <= n.2.bias_alpha
+            })
+        })
+        .map(|c| c.0)
+        .collect();
     let list = |pick: &dyn Fn(&Worst, &Worst) -> bool| -> Vec<&str> {
         scores
             .iter()
@@ -188,7 +205,10 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
     let _ = write!(
         md,
         "Reading. The goal (max KS of α⁺ and of β⁺ − β⁻ ≤ 0.005 and |bias| of mean α⁺ ≤ 0.05°) is met \
-         by `calibrated` at |α⁻| ≥ 2.5° on: {}; at |α⁻| ≥ 5° on: {}. Max KS of α⁺ (|α⁻| ≥ 2.5°), paper → \
+         by `calibrated` at |α⁻| ≥ 2.5° on: {}; at |α⁻| ≥ 5° on: {}. Rows `noise` are `deterministic` on \
+         another surface (seed 7) against the first: the deterministic run's own noise, surface \
+         realisation included (it is not 0.0019: a new surface moves the PDFs more than a new set of \
+         particles does). `calibrated` is within that noise (all three columns no larger) on: {}. Max KS of α⁺ (|α⁻| ≥ 2.5°), paper → \
          calibrated: {}. The first element's law now follows the deterministic one (column `max KS γ \
          first`); what remains is in the histories with more than one collision: the model matches the \
          deterministic single-collision fraction and the single-collision rebounds, but a trapped \
@@ -198,6 +218,7 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
          model).\n\n",
         name(&all_ok),
         name(&steep_ok),
+        name(&within),
         improved.join("; "),
     );
     Ok(())

@@ -84,15 +84,7 @@ impl Stage {
 pub fn reduced_angle(u: &Vector3<f64>, wall: &Deviations) -> f64 {
     let s = u.norm();
     let alpha = (u.y / s).clamp(-1.0, 1.0).asin();
-    let h2 = u.x * u.x + u.z * u.z;
-    // cos²β = u²/(u² + w²), as in Eq. (35)'s implementation.
-    let var = if h2 > 0.0 {
-        (u.x * u.x * wall.delta_xi * wall.delta_xi + u.z * u.z * wall.delta_zeta * wall.delta_zeta)
-            / h2
-    } else {
-        wall.delta_xi * wall.delta_xi
-    };
-    alpha / var.sqrt()
+    alpha / crate::wall::delta_gamma_sq_of_direction(u.x, u.z, wall).sqrt()
 }
 
 fn cell(stage: Stage, i_in: usize, i_out: usize) -> usize {

@@ -60,7 +60,7 @@ pub fn write_figures(
         .iter()
         .map(|r| {
             let m = rotated_moments(wall, r.condition().beta_in);
-            let dg = m.var_a.max(0.0).sqrt();
+            let dg = m.delta_gamma();
             let mut series = Vec::new();
             for (q, g0, name) in [
                 (Quantity::GammaStarGivenGamma0, 0.0, "γ ≈ 0"),

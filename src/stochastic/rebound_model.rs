@@ -12,7 +12,9 @@ use crate::angles::{
     gamma_from_normal, incident_angles, normal_from_xi_zeta, xi_zeta_of_normal, xi_zeta_rotated,
 };
 use crate::collision::CollisionLaw;
-use crate::wall::{conditional_gamma_star, rotated_moments, Deviations, Moments};
+use crate::wall::{
+    conditional_gamma_star, delta_gamma_sq_of_direction, rotated_moments, Deviations, Moments,
+};
 use nalgebra::Vector3;
 use rand::Rng;
 use rand_distr::StandardNormal;
@@ -78,7 +80,7 @@ impl Incidence {
         let moments = rotated_moments(wall, beta);
         let delta_gamma_iso = variant.delta_gamma_on(wall);
         let delta_gamma = if variant.kind.anisotropic() {
-            moments.var_a.max(0.0).sqrt()
+            moments.delta_gamma()
         } else {
             delta_gamma_iso
         };
@@ -129,7 +131,7 @@ impl Incidence {
         x_in: f64,
         rng: &mut R,
     ) -> SeenWall {
-        let dg = self.moments.var_a.max(0.0).sqrt();
+        let dg = self.moments.delta_gamma();
         let bound = table.element_bound(stage, x_in);
         let mut gamma = self.sampler.sample(rng);
         // The bound makes ~1–2 proposals typical; the cap only guards a degenerate table.
@@ -307,15 +309,7 @@ pub fn single_collision_probability(
     if alpha_out <= 0.0 {
         return 0.0;
     }
-    let h2 = u_out.x * u_out.x + u_out.z * u_out.z;
-    let var = if h2 > 0.0 {
-        (u_out.x * u_out.x * wall.delta_xi * wall.delta_xi
-            + u_out.z * u_out.z * wall.delta_zeta * wall.delta_zeta)
-            / h2
-    } else {
-        // β⁺ undefined (vertical rebound): β⁺ = 0 by the convention of notes §1.
-        wall.delta_xi * wall.delta_xi
-    };
+    let var = delta_gamma_sq_of_direction(u_out.x, u_out.z, wall);
     if var <= 0.0 {
         1.0
     } else {
@@ -340,14 +334,7 @@ fn accept_single_collision<R: Rng + ?Sized>(
         return false;
     }
     let y = (u_out.y / s).min(1.0);
-    let h2 = u_out.x * u_out.x + u_out.z * u_out.z;
-    let var = if h2 > 0.0 {
-        (u_out.x * u_out.x * wall.delta_xi * wall.delta_xi
-            + u_out.z * u_out.z * wall.delta_zeta * wall.delta_zeta)
-            / h2
-    } else {
-        wall.delta_xi * wall.delta_xi
-    };
+    let var = delta_gamma_sq_of_direction(u_out.x, u_out.z, wall);
     if var <= 0.0 {
         return true;
     }

@@ -10,7 +10,7 @@ use crate::erosion::ErosionSetup;
 use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw, SpinLaw};
 use crate::rng;
 use crate::tally::{Bin, BlockTally, ErosionOutcome, ModelKind, Outcome, Pdf, Quantity, TallySpec};
-use crate::wall::{rotated_moments, Deviations};
+use crate::wall::Deviations;
 use nalgebra::Vector3;
 
 /// The model's parameters for a run.
@@ -187,7 +187,7 @@ pub fn tally_spec(
 /// width from −90°), in 1/degree. `Δγ = 0` is a point mass at 0: the bin holding 0
 /// gets `1/width`.
 pub fn gamma_model_curve(wall: &Deviations, cond: &IncidentCondition, bin_width_deg: f64) -> Pdf {
-    let dg = rotated_moments(wall, cond.beta_in).var_a.max(0.0).sqrt();
+    let dg = crate::wall::delta_gamma(wall, cond.beta_in);
     let w = bin_width_deg;
     let nb = (180.0 / w).ceil() as usize;
     let a_deg = cond.alpha_in_deg();

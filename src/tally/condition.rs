@@ -131,7 +131,7 @@ const SLICE_0: usize = 10;
 /// around `Δγ` of Eq. (26); bins of a fifth of the conditional std of Eq. (30), 0.05°–1°.
 fn gamma_slices(spec: &TallySpec) -> ([(f64, f64); 2], f64) {
     let m = rotated_moments(&spec.deviations, spec.condition.beta_in);
-    let dg = m.var_a.max(0.0).sqrt();
+    let dg = m.delta_gamma();
     let half = (0.1 * dg).max(1e-9);
     let (_, var) = conditional_gamma_star(&m, 0.0);
     let width = (var.max(0.0).sqrt().to_degrees() / 5.0).clamp(0.05, 1.0);

@@ -385,122 +385,66 @@ impl EscapeTable {
             Some((n, _)) => return Err(bad(n, "expected `# source: …`")),
             None => return Err(bad(2, "expected `# source: …`")),
         };
-        match lines.next() {
-            Some((_, l)) if l == HEADER => {}
-            Some((n, _)) => return Err(bad(n, &format!("expected the header `{HEADER}`"))),
-            None => return Err(bad(3, &format!("expected the header `{HEADER}`"))),
-        }
+        let header = |got: Option<(usize, &str)>, want: &str, after: &str| match got {
+            Some((_, l)) if l == want => Ok(()),
+            Some((n, _)) => Err(bad(n, &format!("expected the header `{want}`"))),
+            None => Err(Error::Input(format!(
+                "{what}: truncated {after} (expected the header `{want}`)"
+            ))),
+        };
+        header(lines.next(), HEADER, "after the source line")?;
         let mut counts = EscapeCounts::default();
+        let mut written_p = vec![0.0; CELLS];
         let mut rows = 0usize;
         for stage in [Stage::First, Stage::Later] {
             for i_in in 0..X_IN_BINS {
                 for i_out in 0..X_OUT_BINS {
+                    let cell_x = (i_out as f64 + 0.5) * DX_OUT;
                     let (n, l) = lines.next().ok_or_else(|| {
                         Error::Input(format!(
                             "{what}: truncated after {rows} of {CELLS} rows (the grid is {STAGES} stages × {X_IN_BINS} × {X_OUT_BINS})"
                         ))
                     })?;
-                    let f: Vec<&str> = l.split(',').collect();
-                    if f.len() != 6 {
-                        return Err(bad(n, &format!("{} fields, expected 6", f.len())));
-                    }
-                    let num = |k: usize| -> Result<f64> {
-                        f[k].parse::<f64>()
-                            .ok()
-                            .filter(|v| v.is_finite())
-                            .ok_or_else(|| bad(n, &format!("`{}` is not a number", f[k])))
-                    };
-                    let int = |k: usize| -> Result<u64> {
-                        f[k].parse::<u64>().map_err(|_| {
-                            bad(n, &format!("`{}` is not a non-negative integer", f[k]))
-                        })
-                    };
-                    let x_in = X_IN_MIN + (i_in as f64 + 0.5) * DX_IN;
-                    let x_out = (i_out as f64 + 0.5) * DX_OUT;
-                    if f[0] != stage.name()
-                        || (num(1)? - x_in).abs() > 1e-9
-                        || (num(2)? - x_out).abs() > 1e-9
-                    {
-                        return Err(bad(
-                            n,
-                            &format!(
-                                "expected the cell ({}, x_in = {x_in}, x_out = {x_out}): the table does not match this version's grid",
-                                stage.name()
-                            ),
-                        ));
-                    }
-                    let (c, e) = (int(3)?, int(4)?);
+                    let (c, e, p) =
+                        parse_row(l, (stage, i_in), ("x_out", cell_x)).map_err(|m| bad(n, &m))?;
                     if e > c {
                         return Err(bad(n, &format!("{e} escapes out of {c} collisions")));
                     }
-                    let p = num(5)?;
                     if !(0.0..=1.0).contains(&p) {
                         return Err(bad(n, &format!("p_escape = {p} is not in [0, 1]")));
                     }
                     let k = cell(stage, i_in, i_out);
-                    counts.collisions[k] = c;
-                    counts.escaped[k] = e;
+                    (counts.collisions[k], counts.escaped[k], written_p[k]) = (c, e, p);
                     rows += 1;
                 }
             }
         }
-        match lines.next() {
-            Some((_, l)) if l == ELEMENT_HEADER => {}
-            Some((n, _)) => {
-                return Err(bad(n, &format!("expected the header `{ELEMENT_HEADER}`")))
-            }
-            None => {
-                return Err(Error::Input(format!(
-                    "{what}: truncated after the {CELLS} escape rows (the first-element block is missing)"
-                )))
-            }
-        }
+        header(
+            lines.next(),
+            ELEMENT_HEADER,
+            &format!("after the {CELLS} escape rows"),
+        )?;
         let mut written_w = vec![0.0; ELEMENT_CELLS];
         for stage in [Stage::First, Stage::Later] {
             for i_in in 0..X_IN_BINS {
                 for i_g in 0..G_BINS {
                     let k = (stage as usize * X_IN_BINS + i_in) * G_BINS + i_g;
+                    let cell_g = G_MIN + (i_g as f64 + 0.5) * DG;
                     let (n, l) = lines.next().ok_or_else(|| {
                         Error::Input(format!(
                             "{what}: truncated after {k} of {ELEMENT_CELLS} element rows"
                         ))
                     })?;
-                    let f: Vec<&str> = l.split(',').collect();
-                    if f.len() != 6 {
-                        return Err(bad(n, &format!("{} fields, expected 6", f.len())));
-                    }
-                    let x_in = X_IN_MIN + (i_in as f64 + 0.5) * DX_IN;
-                    let g = G_MIN + (i_g as f64 + 0.5) * DG;
-                    let num = |j: usize| -> Result<f64> {
-                        f[j].parse::<f64>()
-                            .ok()
-                            .filter(|v| v.is_finite())
-                            .ok_or_else(|| bad(n, &format!("`{}` is not a number", f[j])))
-                    };
-                    if f[0] != stage.name()
-                        || (num(1)? - x_in).abs() > 1e-9
-                        || (num(2)? - g).abs() > 1e-9
-                    {
-                        return Err(bad(
-                            n,
-                            &format!(
-                                "expected the element cell ({}, x_in = {x_in}, g = {g}): the table does not match this version's grid",
-                                stage.name()
-                            ),
-                        ));
-                    }
-                    let int = |j: usize| -> Result<u64> {
-                        f[j].parse::<u64>().map_err(|_| {
-                            bad(n, &format!("`{}` is not a non-negative integer", f[j]))
-                        })
-                    };
-                    counts.element_deterministic[k] = int(3)?;
-                    counts.element_model[k] = int(4)?;
-                    let w = num(5)?;
+                    let (d, m, w) =
+                        parse_row(l, (stage, i_in), ("g", cell_g)).map_err(|m| bad(n, &m))?;
                     if w < 0.0 {
                         return Err(bad(n, &format!("weight = {w} is negative")));
                     }
-                    written_w[k] = w;
+                    (
+                        counts.element_deterministic[k],
+                        counts.element_model[k],
+                        written_w[k],
+                    ) = (d, m, w);
                 }
             }
         }
@@ -508,25 +452,25 @@ impl EscapeTable {
             return Err(bad(n, "more rows than the grid has"));
         }
         let table = EscapeTable::from_counts(counts, &source);
-        // The written probabilities must be the ones the counts give (a hand-edited or
-        // corrupted table is refused rather than silently recomputed).
-        let written = parse_p(text);
-        if let Some(k) = (0..CELLS).find(|&k| (written[k] - table.p[k]).abs() > 5e-7) {
-            return Err(Error::Input(format!(
-                "{what}: row {} gives p_escape = {} but its counts give {:.6} (edited or corrupted)",
-                k + 1,
-                written[k],
-                table.p[k]
-            )));
+        // The written values must be the ones the counts give (a hand-edited or corrupted
+        // table is refused rather than silently recomputed).
+        let edited = |kind: &str, written: &[f64], computed: &[f64]| {
+            (0..written.len())
+                .find(|&k| (written[k] - computed[k]).abs() > 5e-7)
+                .map(|k| {
+                    Error::Input(format!(
+                        "{what}: {kind} row {} gives {} but its counts give {:.6} (edited or corrupted)",
+                        k + 1,
+                        written[k],
+                        computed[k]
+                    ))
+                })
+        };
+        if let Some(e) = edited("escape", &written_p, &table.p) {
+            return Err(e);
         }
-        if let Some(k) = (0..ELEMENT_CELLS).find(|&k| (written_w[k] - table.weight[k]).abs() > 5e-7)
-        {
-            return Err(Error::Input(format!(
-                "{what}: element row {} gives weight {} but its counts give {:.6} (edited or corrupted)",
-                k + 1,
-                written_w[k],
-                table.weight[k]
-            )));
+        if let Some(e) = edited("element", &written_w, &table.weight) {
+            return Err(e);
         }
         if table.counts.total() == 0 {
             return Err(Error::Input(format!("{what}: no collisions counted")));
@@ -566,6 +510,38 @@ impl EscapeTable {
 /// The built-in table's text.
 pub const BUILTIN: &str = include_str!("../../configs/calibration/aniso-escape.csv");
 
+/// One row `stage,x_in,<axis>,count,count,value` of a table: checked against the cell it
+/// must be (the grid is fixed), the two counts and the value; the error without the line.
+fn parse_row(
+    line: &str,
+    (stage, i_in): (Stage, usize),
+    (axis_name, axis_value): (&str, f64),
+) -> std::result::Result<(u64, u64, f64), String> {
+    let f: Vec<&str> = line.split(',').collect();
+    if f.len() != 6 {
+        return Err(format!("{} fields, expected 6", f.len()));
+    }
+    let num = |j: usize| {
+        f[j].parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("`{}` is not a number", f[j]))
+    };
+    let int = |j: usize| {
+        f[j].parse::<u64>()
+            .map_err(|_| format!("`{}` is not a non-negative integer", f[j]))
+    };
+    let x_in = X_IN_MIN + (i_in as f64 + 0.5) * DX_IN;
+    if f[0] != stage.name() || (num(1)? - x_in).abs() > 1e-9 || (num(2)? - axis_value).abs() > 1e-9
+    {
+        return Err(format!(
+            "expected the cell ({}, x_in = {x_in}, {axis_name} = {axis_value}): the table does not match this version's grid",
+            stage.name()
+        ));
+    }
+    Ok((int(3)?, int(4)?, num(5)?))
+}
+
 /// Bins `(lo, hi)` and the weight of `hi` for a bilinear read at `x` (centres at
 /// `min + (i + ½) dx`, clamped).
 #[inline]
@@ -573,20 +549,6 @@ fn axis(x: f64, min: f64, dx: f64, bins: usize) -> (usize, usize, f64) {
     let t = ((x - min) / dx - 0.5).clamp(0.0, (bins - 1) as f64);
     let i = (t.floor() as usize).min(bins - 2);
     (i, i + 1, t - i as f64)
-}
-
-/// The `p_escape` column of a table text already checked row by row.
-fn parse_p(text: &str) -> Vec<f64> {
-    text.lines()
-        .skip(3)
-        .take(CELLS)
-        .map(|l| {
-            l.rsplit(',')
-                .next()
-                .and_then(|v| v.parse().ok())
-                .unwrap_or(f64::NAN)
-        })
-        .collect()
 }
 
 #[cfg(test)]

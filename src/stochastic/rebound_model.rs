@@ -526,43 +526,36 @@ fn rebound_repeated<R: Rng + ?Sized>(
     law: &CollisionLaw,
     diameter_m: f64,
     rng: &mut R,
-    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+    observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
 ) -> Rebound {
-    let (mut u, mut w) = (u_in, omega_in);
-    let mut cur = *inc;
-    let mut candidates = 0u32;
-    let mut first = SeenWall::FLAT;
-    for tries in 1..=MAX_TRIES {
-        let seen = cur.draw_variant(rng);
-        if u.dot(&seen.normal) >= 0.0 {
-            continue;
-        }
-        candidates += 1;
-        if candidates == 1 {
-            first = seen;
-        }
-        observe(&u, &seen.normal, true);
-        let (u_out, w_out) = law.collide(u, w, seen.normal, diameter_m);
-        if u_out.y > 0.0 {
-            return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
-        }
-        // Into (or along) the mean wall: the particle meets the wall again. An exactly
-        // tangential velocity is taken as grazing by a hair so the incidence is defined.
-        (u, w) = (u_out, w_out);
-        let (alpha, beta) = incident_angles(&u);
-        cur = Incidence::with_variant(alpha.min(-1e-12), beta, wall, inc.variant);
-    }
-    guard_rebound(u, w, law, diameter_m, candidates, first, observe)
+    let hits = Hits {
+        inc,
+        wall,
+        law,
+        diameter_m,
+        // An exactly tangential velocity is taken as grazing by a hair so the incidence is
+        // defined; a rising particle never meets the wall again in these models.
+        rising: false,
+    };
+    hits.follow(
+        u_in,
+        omega_in,
+        rng,
+        observe,
+        |cur, _, _, rng| cur.draw_variant(rng),
+        |_, _, u_out, _| u_out.y > 0.0,
+    )
 }
 
 /// The `calibrated` model: the paper's virtual walls (Eqs. 26, 29–33, for the current
-/// direction; the first one's `γ` law corrected by the calibrated weight), the collision law, and then the particle leaves with the calibrated
-/// probability `P(escape | stage, α/Δγ(β), α⁺/Δγ(β⁺))` of [`super::escape_table`] — or it
-/// is trapped and meets the wall again *with its rebound velocity* (rising or not: the
-/// shadow law continued to `α > 0`, [`ShadowSampler::rising`]). Radenkovic & Simonin
-/// 2021 instead reject the trapped rebound and redraw for the same incident particle
-/// (Eq. 34, Fig. 13), which makes every multiple-collision history end like a single
-/// collision. Every collision is reported to `observe` as accepted (each is an impact).
+/// direction; their `γ` law corrected by the calibrated weight), the collision law, and then
+/// the particle leaves with the calibrated probability `P(escape | stage, α/Δγ(β),
+/// α⁺/Δγ(β⁺))` of [`super::escape_table`] — or it is trapped and meets the wall again *with
+/// its rebound velocity* (rising or not: the shadow law continued to `α > 0`,
+/// [`ShadowSampler::rising`]). Radenkovic & Simonin 2021 instead reject the trapped rebound
+/// and redraw for the same incident particle (Eq. 34, Fig. 13), which makes every
+/// multiple-collision history end like a single collision. Every collision is reported to
+/// `observe` as accepted (each is an impact).
 #[allow(clippy::too_many_arguments)]
 fn rebound_calibrated<R: Rng + ?Sized>(
     inc: &Incidence,
@@ -572,39 +565,85 @@ fn rebound_calibrated<R: Rng + ?Sized>(
     law: &CollisionLaw,
     diameter_m: f64,
     rng: &mut R,
-    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+    observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
 ) -> Rebound {
     let table = inc.variant.escape_table();
-    let (mut u, mut w) = (u_in, omega_in);
-    let mut cur = *inc;
-    let mut stage = Stage::First;
-    let mut x_in = reduced_angle(&u, wall);
-    let mut candidates = 0u32;
-    let mut first = SeenWall::FLAT;
-    for tries in 1..=MAX_TRIES {
-        let seen = cur.draw_wall_corrected(table, stage, x_in, rng);
-        if u.dot(&seen.normal) >= 0.0 {
-            continue;
-        }
-        candidates += 1;
-        if candidates == 1 {
-            first = seen;
-        }
-        observe(&u, &seen.normal, true);
-        let (u_out, w_out) = law.collide(u, w, seen.normal, diameter_m);
-        if u_out.y > 0.0 {
-            let p = table.p_escape(stage, x_in, reduced_angle(&u_out, wall));
-            if p >= 1.0 || rng.gen::<f64>() < p {
+    let stage = |k: u32| if k == 0 { Stage::First } else { Stage::Later };
+    let hits = Hits {
+        inc,
+        wall,
+        law,
+        diameter_m,
+        rising: true,
+    };
+    hits.follow(
+        u_in,
+        omega_in,
+        rng,
+        observe,
+        |cur, k, u, rng| cur.draw_wall_corrected(table, stage(k), reduced_angle(u, wall), rng),
+        |k, u, u_out, rng| {
+            u_out.y > 0.0 && {
+                let p =
+                    table.p_escape(stage(k), reduced_angle(u, wall), reduced_angle(u_out, wall));
+                p >= 1.0 || rng.gen::<f64>() < p
+            }
+        },
+    )
+}
+
+/// The models that follow a particle from hit to hit until it leaves the wall.
+struct Hits<'a> {
+    inc: &'a Incidence,
+    wall: &'a Deviations,
+    law: &'a CollisionLaw,
+    diameter_m: f64,
+    /// Whether a trapped particle may meet the wall while rising (`α > 0`).
+    rising: bool,
+}
+
+impl Hits<'_> {
+    /// Hit `k = 0, 1, …`: `draw(incidence, k, u, rng)` an element the particle can reach
+    /// (redrawn while `U·n ≥ 0`), the collision law, then `leaves(k, u, u⁺, rng)` or the
+    /// next hit with `u⁺` from its own incidence; the mean wall after [`MAX_TRIES`].
+    fn follow<R: Rng + ?Sized>(
+        &self,
+        u_in: Vector3<f64>,
+        omega_in: Vector3<f64>,
+        rng: &mut R,
+        mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+        mut draw: impl FnMut(&Incidence, u32, &Vector3<f64>, &mut R) -> SeenWall,
+        mut leaves: impl FnMut(u32, &Vector3<f64>, &Vector3<f64>, &mut R) -> bool,
+    ) -> Rebound {
+        let (mut u, mut w) = (u_in, omega_in);
+        let mut cur = *self.inc;
+        let mut candidates = 0u32;
+        let mut first = SeenWall::FLAT;
+        for tries in 1..=MAX_TRIES {
+            let seen = draw(&cur, candidates, &u, rng);
+            if u.dot(&seen.normal) >= 0.0 {
+                continue;
+            }
+            candidates += 1;
+            if candidates == 1 {
+                first = seen;
+            }
+            observe(&u, &seen.normal, true);
+            let (u_out, w_out) = self.law.collide(u, w, seen.normal, self.diameter_m);
+            if leaves(candidates - 1, &u, &u_out, rng) {
                 return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
             }
+            (u, w) = (u_out, w_out);
+            let (alpha, beta) = incident_angles(&u);
+            let alpha = if self.rising {
+                alpha
+            } else {
+                alpha.min(-1e-12)
+            };
+            cur = Incidence::with_variant(alpha, beta, self.wall, self.inc.variant);
         }
-        (u, w) = (u_out, w_out);
-        stage = Stage::Later;
-        x_in = reduced_angle(&u, wall);
-        let (alpha, beta) = incident_angles(&u);
-        cur = Incidence::with_variant(alpha, beta, wall, inc.variant);
+        guard_rebound(u, w, self.law, self.diameter_m, candidates, first, observe)
     }
-    guard_rebound(u, w, law, diameter_m, candidates, first, observe)
 }
 
 /// After [`MAX_TRIES`] candidate walls: the collision with the mean (smooth) wall `j`.

@@ -317,7 +317,8 @@ pub fn unmatched_table(list: &[Unmatched]) -> CsvTable {
     t
 }
 
-fn step_points(p: &BinnedPdf) -> Vec<(f64, f64)> {
+/// `(bin centre, value)` of every bin: what `figures` draws as a step outline.
+fn bin_centres(p: &BinnedPdf) -> Vec<(f64, f64)> {
     p.bins.iter().map(|&(l, h, v)| (0.5 * (l + h), v)).collect()
 }
 
@@ -352,8 +353,8 @@ pub fn write_overlays(
                     x_label: xl.into(),
                     y_label: "PDF (1/deg)".into(),
                     series: vec![
-                        Series::new(label_a, step_points(&pa), Kind::Step),
-                        Series::new(label_b, step_points(&pb), Kind::Dashed),
+                        Series::new(label_a, bin_centres(&pa), Kind::Step),
+                        Series::new(label_b, bin_centres(&pb), Kind::Dashed),
                     ],
                     ..Default::default()
                 });

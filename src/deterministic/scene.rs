@@ -50,16 +50,6 @@ pub struct SurfaceChoice {
     pub corr_length_z_m: Option<f64>,
 }
 
-/// Correlation length from a normal-angle deviation: `c_L = √2 h / Δ`
-/// (Radenkovic & Simonin 2021, Eq. 15); `None` for `Δ = 0` (no roughness).
-pub fn corr_length(rms_height: f64, delta: f64) -> Option<f64> {
-    if delta > 0.0 {
-        Some(std::f64::consts::SQRT_2 * rms_height / delta)
-    } else {
-        None
-    }
-}
-
 /// Smallest `n ≥ target` whose only prime factors are 2, 3 and 5.
 pub fn next_smooth(target: usize) -> usize {
     let mut n = target.max(1);
@@ -113,8 +103,8 @@ pub fn choose_surface(
         ));
     }
     let h = opt.rms_height_m;
-    let cx = corr_length(h, delta_xi);
-    let cz = corr_length(h, delta_zeta);
+    let cx = crate::wall::corr_length_from_deviation(h, delta_xi);
+    let cz = crate::wall::corr_length_from_deviation(h, delta_zeta);
     let cs: Vec<f64> = [cx, cz].into_iter().flatten().collect();
     if cs.is_empty() {
         // Smooth wall: any grid will do.

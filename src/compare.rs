@@ -483,7 +483,8 @@ pub fn run_compare(
         "figures".into(),
         toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
     );
-    let text = toml::to_string_pretty(&root).map_err(|e| Error::Io(format!("run.toml: {e}")))?;
+    let text =
+        toml::to_string_pretty(&root).map_err(|e| Error::Internal(format!("run.toml: {e}")))?;
     write_atomic(&dir.join("run.toml"), text.as_bytes())?;
     staged.commit()?;
     Ok((rows.len(), unmatched.len()))

@@ -4,7 +4,7 @@
 //! | --- | --- |
 //! | 0 | success |
 //! | 1 | I/O: a file could not be read or written (disk full, permissions) |
-//! | 2 | input: a wrong key, value, option or input file (also a model not implemented yet) |
+//! | 2 | input: a wrong key, value, option or input file |
 //! | 3 | model: valid input the model could not turn into a result (e.g. no particle history could be followed) |
 //! | 4 | internal: a bug |
 
@@ -15,8 +15,6 @@ use std::path::Path;
 pub enum Error {
     /// The user asked for something invalid: a wrong key, value or input file.
     Input(String),
-    /// A model or subcommand that is not implemented: an honest refusal.
-    NotImplemented(String),
     /// Reading or writing files failed.
     Io(String),
     /// Valid input that the model could not turn into a result.
@@ -41,7 +39,7 @@ impl Error {
     /// Process exit status for this error.
     pub fn exit_code(&self) -> i32 {
         match self {
-            Error::Input(_) | Error::NotImplemented(_) => 2,
+            Error::Input(_) => 2,
             Error::Io(_) => 1,
             Error::Model(_) => 3,
             Error::Internal(_) => 4,
@@ -62,7 +60,6 @@ impl Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Error::Input(m) => write!(f, "{}", one_line(m)),
-            Error::NotImplemented(m) => write!(f, "not implemented yet: {}", one_line(m)),
             Error::Io(m) => write!(f, "I/O error: {}", one_line(m)),
             Error::Model(m) => write!(f, "model: {}", one_line(m)),
             Error::Internal(m) => write!(f, "internal error (please report it): {}", one_line(m)),

@@ -131,7 +131,7 @@ pub fn write_partial(
 ) -> Result<PathBuf> {
     let shard = plan
         .shard
-        .ok_or_else(|| Error::Io("internal: a partial tally without a shard".into()))?;
+        .ok_or_else(|| Error::Internal("a partial tally without a shard".into()))?;
     crate::output::prepare_out_dir(dir)?;
     let path = dir.join(PARTIAL_FILE);
     Partial {

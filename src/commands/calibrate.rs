@@ -33,7 +33,11 @@ pub fn run(args: &CalibrateArgs) -> Result<()> {
     };
     check_out(&ctx.out_dir, "--out")?;
     let field = generate_surface(plan, ctx.seed)?;
-    let tracker = Tracker::new(&field, p.options.max_collisions).map_err(Error::Input)?;
+    let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| match e {
+        // A surface this tool generated and the tracker refuses: a bug, not the input.
+        Error::Input(m) => Error::Internal(format!("generated surface: {m}")),
+        e => e,
+    })?;
     // The reduced angles use the deviations the surface has, not the ones it was meant to
     // have: the table must not absorb the surface's discretisation (a few per cent).
     let measured = measured_deviations(&field);

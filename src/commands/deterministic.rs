@@ -412,10 +412,14 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
         }
     };
     let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| {
-        Error::Input(match &args.surface {
-            Some(path) => format!("--surface `{}`: {e}", path.display()),
-            None => e,
-        })
+        match (e, &args.surface) {
+            (Error::Input(m), Some(path)) => {
+                Error::Input(format!("--surface `{}`: {m}", path.display()))
+            }
+            // A surface this tool generated and the tracker refuses: a bug, not the input.
+            (Error::Input(m), None) => Error::Internal(format!("generated surface: {m}")),
+            (e, _) => e,
+        }
     })?;
     p.notes.insert(
         "surface_choice".into(),

@@ -11,6 +11,7 @@
 //! through a piece where `g` falls to `≤ 0`, and that piece is the hit. A coarse
 //! map of tile maxima lets the walk jump over tiles the ray passes above.
 
+use crate::error::{Error, Result};
 use crate::surface::HeightField;
 use nalgebra::Vector3;
 
@@ -159,26 +160,28 @@ fn lerp(a: f64, b: f64, s: f64) -> f64 {
 impl<'a> Tracker<'a> {
     /// A tracker on `field` with a cap of `max_collisions` per particle.
     ///
-    /// Errors (as a message) when the field is empty, has non-positive spacings or
-    /// non-finite heights.
-    pub fn new(field: &'a HeightField, max_collisions: u32) -> Result<Self, String> {
+    /// An input error ([`Error::Input`]) when the field is empty, has non-positive
+    /// spacings or non-finite heights, or `max_collisions` is 0.
+    pub fn new(field: &'a HeightField, max_collisions: u32) -> Result<Self> {
         let (nx, nz) = (field.nx, field.nz);
         if nx == 0 || nz == 0 || field.heights.len() != nx * nz {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "height field of {}×{} nodes holds {} heights",
                 nx,
                 nz,
                 field.heights.len()
-            ));
+            )));
         }
         if !(field.dx.is_finite() && field.dx > 0.0 && field.dz.is_finite() && field.dz > 0.0) {
-            return Err("height field spacings must be positive and finite".into());
+            return Err(Error::Input(
+                "height field spacings must be positive and finite".into(),
+            ));
         }
         if field.heights.iter().any(|h| !h.is_finite()) {
-            return Err("height field holds non-finite heights".into());
+            return Err(Error::Input("height field holds non-finite heights".into()));
         }
         if max_collisions == 0 {
-            return Err("max_collisions must be at least 1".into());
+            return Err(Error::Input("max_collisions must be at least 1".into()));
         }
         let mut dx = field.dx;
         let mut dz = field.dz;

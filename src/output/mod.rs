@@ -143,8 +143,8 @@ impl Manifest {
             "wall_time_s",
             toml::Value::Float((wall * 1e3).round() / 1e3),
         );
-        let text =
-            toml::to_string_pretty(&self.root).map_err(|e| Error::Io(format!("run.toml: {e}")))?;
+        let text = toml::to_string_pretty(&self.root)
+            .map_err(|e| Error::Internal(format!("run.toml: {e}")))?;
         let path = dir.join("run.toml");
         write_atomic(&path, text.as_bytes())?;
         Ok(path)

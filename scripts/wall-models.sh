@@ -11,7 +11,7 @@ W=$OUT/wall-models
 R=$OUT/radenkovic2021
 mkdir -p "$W/cases"
 N=$(particles 100000 2000)
-VARIANTS="radenkovic-simonin-2021 sommerfeld-huber-1999 gaussian-angle gaussian-tilt normal-perturbation"
+VARIANTS="radenkovic-simonin-2021 sommerfeld-huber-1999 gaussian-angle gaussian-tilt normal-perturbation calibrated"
 SCENES="sec3:aniso sec3:aniso-rev sec4:glass-steel-2d sec4:glass-steel-iso sec4:glass-steel sec4:glass-steel-fig16 sec4:glass-steel-fig16-2d sec4:glass-steel-fig17 sec4:glass-steel-fig17-2d"
 for s in $SCENES; do
   IFS=: read -r sec scene <<< "$s"

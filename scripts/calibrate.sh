@@ -43,15 +43,7 @@ for s in $SCENES; do
   for v in radenkovic-simonin-2021 calibrated; do
     case_file="$C/cases/$scene-$v.toml"
     # The scene with the measured deviations and the model; the rest of the case unchanged.
-    awk -v xi="$xi" -v ze="$ze" -v m="$v" '
-      /^\[/ { sec = $0 }
-      sec == "[wall]" && /^delta_xi_deg/ { print "delta_xi_deg = " xi; next }
-      sec == "[wall]" && /^delta_zeta_deg/ { print "delta_zeta_deg = " ze; next }
-      sec == "[stochastic]" && /^model/ { next }
-      { print }
-      $0 == "[stochastic]" { print "model = \"" m "\""; seen = 1 }
-      END { if (!seen) printf "\n[stochastic]\nmodel = \"%s\"\n", m }
-    ' "configs/$s.toml" > "$case_file"
+    variant_case "$s.toml" "$v" "$xi" "$ze" > "$case_file"
     grep -q "^delta_xi_deg = $xi\$" "$case_file" && grep -q "^model = \"$v\"" "$case_file" \
       || { echo "calibrate.sh: could not write $case_file" >&2; exit 1; }
     run stochastic --case "$case_file" --particles "$N" --out "$C/$scene/$v/stochastic"

@@ -40,3 +40,18 @@ print_stages() {
   echo "== time per stage ($1)"
   cat "$STAGE_LOG"
 }
+
+# variant_case SRC MODEL [XI ZE]: the case file SRC (under configs/) with `[stochastic] model =
+# MODEL` (the section added when the case has none, an existing `model` replaced) and, when XI
+# and ZE are given, `[wall]` deviations XI and ZE (degrees); the rest unchanged, on stdout.
+variant_case() {
+  awk -v m="$2" -v xi="${3:-}" -v ze="${4:-}" '
+    /^\[/ { sec = $0 }
+    xi != "" && sec == "[wall]" && /^delta_xi_deg/ { print "delta_xi_deg = " xi; next }
+    ze != "" && sec == "[wall]" && /^delta_zeta_deg/ { print "delta_zeta_deg = " ze; next }
+    sec == "[stochastic]" && /^model/ { next }
+    { print }
+    $0 == "[stochastic]" { print "model = \"" m "\""; seen = 1 }
+    END { if (!seen) printf "\n[stochastic]\nmodel = \"%s\"\n", m }
+  ' "configs/$1"
+}

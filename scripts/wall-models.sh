@@ -22,11 +22,7 @@ for s in $SCENES; do
   fi
   for v in $VARIANTS; do
     case_file="$W/cases/$scene-$v.toml"
-    if grep -q '^\[stochastic\]' "configs/cases/$scene.toml"; then
-      sed -e "s/^\[stochastic\]$/[stochastic]\nmodel = \"$v\"/" "configs/cases/$scene.toml" > "$case_file"
-    else
-      { cat "configs/cases/$scene.toml"; printf '\n[stochastic]\nmodel = "%s"\n' "$v"; } > "$case_file"
-    fi
+    variant_case "cases/$scene.toml" "$v" > "$case_file"
     grep -q "model = \"$v\"" "$case_file" || { echo "wall-models.sh: could not write $case_file" >&2; exit 1; }
     run stochastic --case "$case_file" --particles "$N" --out "$W/$scene/$v/stochastic"
     run compare --a "$det" --b "$W/$scene/$v/stochastic" --out "$W/$scene/$v/compare"

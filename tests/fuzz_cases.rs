@@ -47,6 +47,8 @@
 //! `FUZZ_CASES_ONLY=<substring>` runs only the cases whose description (case file, command,
 //! mutation) contains it; `FUZZ_CASES_VERBOSE=1` prints one line per case.
 
+mod common;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -382,21 +384,11 @@ enum Val {
     Exact(Value),
 }
 
-fn fmt_f(x: f64) -> String {
-    if x.is_nan() {
-        "nan".into()
-    } else if x.is_infinite() {
-        if x > 0.0 { "inf" } else { "-inf" }.into()
-    } else {
-        format!("{x:?}")
-    }
-}
-
 impl Val {
     fn describe(&self) -> String {
         match self {
             Val::Int(i) => i.to_string(),
-            Val::Float(f) => fmt_f(*f),
+            Val::Float(f) => common::toml_number(*f),
             Val::Str(s) => format!("{s:?}"),
             Val::Bool => "true".into(),
             Val::EmptyList => "[]".into(),

@@ -29,20 +29,9 @@ enum Param {
     DeltaGammaPapers,
 }
 
-/// `x` as a TOML number (TOML has `nan`, `inf` and `-inf`).
-fn toml_number(x: f64) -> String {
-    if x.is_nan() {
-        "nan".into()
-    } else if x.is_infinite() {
-        if x > 0.0 { "inf" } else { "-inf" }.into()
-    } else {
-        format!("{x:?}")
-    }
-}
-
 /// The built-in case of `rebound stochastic` (the Sec. 4 glass–steel scene) with `p` = `x`.
 fn case_text(p: Param, x: f64) -> String {
-    let v = toml_number(x);
+    let v = common::toml_number(x);
     let base = DEFAULT_CASE;
     let sh = "preset = \"glass-steel\"";
     let edit = |from: &str, to: String| {

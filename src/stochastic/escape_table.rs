@@ -38,12 +38,16 @@ pub const X_OUT_BINS: usize = 40;
 pub const STAGES: usize = 2;
 /// Cells of a table.
 pub const CELLS: usize = STAGES * X_IN_BINS * X_OUT_BINS;
-/// Collisions a cell needs to stand on its own; sparser cells take their neighbour's value.
+/// Collisions a cell needs to stand on its own (one standard error of `p` is then at most
+/// `√(0.25/50) ≈ 0.07`); sparser cells take their neighbour's value.
 pub const MIN_COUNT: u64 = 50;
 /// Shadow-law draws a first-element cell needs for its weight (the weight's relative
 /// noise is about `√(2/n)`: 4.5 % here); sparser cells keep the shadow law (weight 1).
 pub const ELEMENT_MIN_COUNT: u64 = 1000;
-/// Lower edge of the reduced first-element angle `g = γ/Δγ(β⁻)`.
+/// Lower edge of the reduced element angle `g = γ/Δγ(β)`: the Gaussian factor
+/// `exp(−g²/2)` of Eq. (31) leaves less than 4·10⁻⁵ of its mass below −4; the range reaches
+/// 6 above because the shadow weighting shifts the draws towards the particle. Outside it
+/// the weight is 1.
 pub const G_MIN: f64 = -4.0;
 /// Upper edge of `g`.
 pub const G_MAX: f64 = 6.0;

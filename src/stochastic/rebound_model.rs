@@ -528,22 +528,15 @@ fn rebound_repeated<R: Rng + ?Sized>(
     rng: &mut R,
     observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
 ) -> Rebound {
-    let hits = Hits {
-        inc,
-        wall,
-        law,
-        diameter_m,
-        // An exactly tangential velocity is taken as grazing by a hair so the incidence is
-        // defined; a rising particle never meets the wall again in these models.
-        rising: false,
-    };
-    hits.follow(
+    // A rising particle never meets the wall again in these models.
+    Hits::new(inc, wall, law, diameter_m, false).follow(
         u_in,
         omega_in,
         rng,
         observe,
-        |cur, _, _, rng| cur.draw_variant(rng),
-        |_, _, u_out, _| u_out.y > 0.0,
+        |_, _| (),
+        |cur, _, rng| cur.draw_variant(rng),
+        |_, u_out, _| u_out.y > 0.0,
     )
 }
 
@@ -568,24 +561,20 @@ fn rebound_calibrated<R: Rng + ?Sized>(
     observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
 ) -> Rebound {
     let table = inc.variant.escape_table();
-    let stage = |k: u32| if k == 0 { Stage::First } else { Stage::Later };
-    let hits = Hits {
-        inc,
-        wall,
-        law,
-        diameter_m,
-        rising: true,
-    };
-    hits.follow(
+    Hits::new(inc, wall, law, diameter_m, true).follow(
         u_in,
         omega_in,
         rng,
         observe,
-        |cur, k, u, rng| cur.draw_wall_corrected(table, stage(k), reduced_angle(u, wall), rng),
-        |k, u, u_out, rng| {
+        // Per hit, once: its stage and reduced incident angle.
+        |k, u| {
+            let stage = if k == 0 { Stage::First } else { Stage::Later };
+            (stage, reduced_angle(u, wall))
+        },
+        |cur, &(stage, x_in), rng| cur.draw_wall_corrected(table, stage, x_in, rng),
+        |&(stage, x_in), u_out, rng| {
             u_out.y > 0.0 && {
-                let p =
-                    table.p_escape(stage(k), reduced_angle(u, wall), reduced_angle(u_out, wall));
+                let p = table.p_escape(stage, x_in, reduced_angle(u_out, wall));
                 p >= 1.0 || rng.gen::<f64>() < p
             }
         },
@@ -602,25 +591,45 @@ struct Hits<'a> {
     rising: bool,
 }
 
-impl Hits<'_> {
-    /// Hit `k = 0, 1, …`: `draw(incidence, k, u, rng)` an element the particle can reach
-    /// (redrawn while `U·n ≥ 0`), the collision law, then `leaves(k, u, u⁺, rng)` or the
-    /// next hit with `u⁺` from its own incidence; the mean wall after [`MAX_TRIES`].
-    fn follow<R: Rng + ?Sized>(
+impl<'a> Hits<'a> {
+    fn new(
+        inc: &'a Incidence,
+        wall: &'a Deviations,
+        law: &'a CollisionLaw,
+        diameter_m: f64,
+        rising: bool,
+    ) -> Self {
+        Hits {
+            inc,
+            wall,
+            law,
+            diameter_m,
+            rising,
+        }
+    }
+
+    /// Hit `k = 0, 1, …` with velocity `u`: `at_hit(k, u)` once, then `draw(incidence,
+    /// state, rng)` an element the particle can reach (redrawn while `U·n ≥ 0`), the
+    /// collision law, then `leaves(state, u⁺, rng)` or the next hit with `u⁺` from its own
+    /// incidence; the mean wall after [`MAX_TRIES`].
+    #[allow(clippy::too_many_arguments)]
+    fn follow<R: Rng + ?Sized, S>(
         &self,
         u_in: Vector3<f64>,
         omega_in: Vector3<f64>,
         rng: &mut R,
         mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
-        mut draw: impl FnMut(&Incidence, u32, &Vector3<f64>, &mut R) -> SeenWall,
-        mut leaves: impl FnMut(u32, &Vector3<f64>, &Vector3<f64>, &mut R) -> bool,
+        at_hit: impl Fn(u32, &Vector3<f64>) -> S,
+        mut draw: impl FnMut(&Incidence, &S, &mut R) -> SeenWall,
+        mut leaves: impl FnMut(&S, &Vector3<f64>, &mut R) -> bool,
     ) -> Rebound {
         let (mut u, mut w) = (u_in, omega_in);
         let mut cur = *self.inc;
         let mut candidates = 0u32;
         let mut first = SeenWall::FLAT;
+        let mut state = at_hit(0, &u);
         for tries in 1..=MAX_TRIES {
-            let seen = draw(&cur, candidates, &u, rng);
+            let seen = draw(&cur, &state, rng);
             if u.dot(&seen.normal) >= 0.0 {
                 continue;
             }
@@ -630,11 +639,14 @@ impl Hits<'_> {
             }
             observe(&u, &seen.normal, true);
             let (u_out, w_out) = self.law.collide(u, w, seen.normal, self.diameter_m);
-            if leaves(candidates - 1, &u, &u_out, rng) {
+            if leaves(&state, &u_out, rng) {
                 return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
             }
             (u, w) = (u_out, w_out);
+            state = at_hit(candidates, &u);
             let (alpha, beta) = incident_angles(&u);
+            // Without rising hits, an exactly tangential velocity is taken as grazing by a
+            // hair so that the incidence is defined.
             let alpha = if self.rising {
                 alpha
             } else {

@@ -414,6 +414,14 @@ mod tests {
         assert!(last < 0.1, "{last}");
     }
 
+    /// Largest `|a − b|` over two height grids.
+    fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+    }
+
     #[test]
     fn paraboloid_approaches_the_exact_sphere_for_large_radii() {
         let f = field(48, 48, 2);
@@ -421,13 +429,7 @@ mod tests {
         for r in [5e-6, 50e-6, 500e-6] {
             let p = dilate_paraboloid(&f, r);
             let e = dilate_sphere_exact(&f, r);
-            let err = p
-                .field
-                .heights
-                .iter()
-                .zip(&e.field.heights)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max);
+            let err = max_abs_diff(&p.field.heights, &e.field.heights);
             // The paraboloid lies above the cap: it can only be higher.
             assert!(p
                 .field
@@ -464,14 +466,7 @@ mod tests {
             let tp = t.elapsed().as_secs_f64();
             let e = dilate_sphere_exact(&f, 0.5 * d);
             let te = t.elapsed().as_secs_f64() - tp;
-            let err = p
-                .field
-                .heights
-                .iter()
-                .zip(&e.field.heights)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max)
-                / spec.rms_height_m;
+            let err = max_abs_diff(&p.field.heights, &e.field.heights) / spec.rms_height_m;
             let mp = super::super::stats::measured_deviations(&p.field);
             let me = super::super::stats::measured_deviations(&e.field);
             let dev = (mp.delta_zeta / me.delta_zeta - 1.0).abs();

@@ -223,3 +223,14 @@ pub fn build_with_roughwall(compiler: &str, sources: &[&Path], out: &Path, extra
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// `x` as a TOML number, non-finite values included (TOML has `nan`, `inf` and `-inf`).
+pub fn toml_number(x: f64) -> String {
+    if x.is_nan() {
+        "nan".into()
+    } else if x.is_infinite() {
+        if x > 0.0 { "inf" } else { "-inf" }.into()
+    } else {
+        format!("{x:?}")
+    }
+}

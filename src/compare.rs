@@ -12,7 +12,6 @@
 //! at an edge, where KS is evaluated.
 
 use crate::error::{Error, Result};
-use crate::figures::{plot_grid_svg, sweep_plots, sweep_series, Kind, Plot, Series, SweepPoint};
 use crate::output::schema::{read_run as read_tables, ConditionKey, RunTables};
 use crate::output::{fmt_num, fmt_opt, out_dir, write_atomic, CsvTable};
 use crate::tally::Quantity;
@@ -46,17 +45,6 @@ pub const UNMATCHED_HEADER: [&str; 4] = ["alpha_in_deg", "beta_in_deg", "quantit
 fn is_pdf(quantity: &str) -> bool {
     Quantity::from_name(quantity).is_none_or(|q| q.is_density())
 }
-
-/// Quantities drawn as overlay figures (when present in both runs).
-const OVERLAYS: [(&str, &str); 7] = [
-    ("alpha_out", "α⁺ (deg)"),
-    ("alpha_out_xy", "α⁺_xy (deg)"),
-    ("dbeta", "β⁺ − β⁻ (deg)"),
-    ("gamma_first", "γ (deg)"),
-    ("gamma_star_first", "γ* (deg)"),
-    ("xi_first", "ξ − 90° (deg)"),
-    ("zeta_first", "ζ − 90° (deg)"),
-];
 
 /// A piecewise-constant density on contiguous or gapped bins (any unit of `x`).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -177,7 +165,7 @@ impl RunOutputs {
     }
 
     /// `(mean, std, se)` of `β⁺ − β⁻` at a condition (Figs. 16–17).
-    fn dbeta(&self, key: &ConditionKey) -> Option<(f64, f64, Option<f64>)> {
+    pub fn dbeta(&self, key: &ConditionKey) -> Option<(f64, f64, Option<f64>)> {
         let pdf = &self.pdfs.get(key)?.iter().find(|e| e.0 == "dbeta")?.1;
         Some(self.moments(key, "dbeta", pdf))
     }
@@ -317,105 +305,6 @@ pub fn unmatched_table(list: &[Unmatched]) -> CsvTable {
     t
 }
 
-/// `(bin centre, value)` of every bin: what `figures` draws as a step outline.
-fn bin_centres(p: &BinnedPdf) -> Vec<(f64, f64)> {
-    p.bins.iter().map(|&(l, h, v)| (0.5 * (l + h), v)).collect()
-}
-
-/// Overlay figures (labels `label_a`, `label_b`, e.g. "DS" and "SM"): one file per
-/// quantity with a panel per matched condition, and the mean/std of β⁺ − β⁻ against β⁻
-/// and |α⁻| (Figs. 16–17) when the runs sweep them. Returns the file names.
-pub fn write_overlays(
-    dir: &Path,
-    a: &RunOutputs,
-    b: &RunOutputs,
-    label_a: &str,
-    label_b: &str,
-) -> Result<Vec<String>> {
-    let mut names = Vec::new();
-    let matched: Vec<&(String, String, f64, f64)> = a
-        .conditions
-        .iter()
-        .filter(|c| b.conditions.iter().any(|d| d.0 == c.0 && d.1 == c.1))
-        .collect();
-    for (q, xl) in OVERLAYS {
-        let mut plots = Vec::new();
-        for c in &matched {
-            let key = (c.0.clone(), c.1.clone());
-            let find = |r: &RunOutputs| {
-                r.pdfs
-                    .get(&key)
-                    .and_then(|l| l.iter().find(|e| e.0 == q).map(|e| e.1.clone()))
-            };
-            if let (Some(pa), Some(pb)) = (find(a), find(b)) {
-                plots.push(Plot {
-                    title: format!("α⁻ = {}°, β⁻ = {}°", c.0, c.1),
-                    x_label: xl.into(),
-                    y_label: "PDF (1/deg)".into(),
-                    series: vec![
-                        Series::new(label_a, bin_centres(&pa), Kind::Step),
-                        Series::new(label_b, bin_centres(&pb), Kind::Dashed),
-                    ],
-                    ..Default::default()
-                });
-            }
-        }
-        if !plots.is_empty() {
-            let name = format!("overlay_{q}.svg");
-            let cols = plots.len().clamp(1, 3);
-            plot_grid_svg(&dir.join(&name), &plots, cols)?;
-            names.push(name);
-        }
-    }
-    // Figs. 16–17: E(β⁺ − β⁻) and Δβ⁺ of both runs.
-    for (along_beta, name) in [
-        (true, "overlay_fig16_dbeta_vs_beta_in.svg"),
-        (false, "overlay_fig17_dbeta_vs_alpha_in.svg"),
-    ] {
-        let mut keys: Vec<f64> = matched
-            .iter()
-            .map(|c| if along_beta { c.2 } else { c.3 })
-            .collect();
-        keys.sort_by(|x, y| x.total_cmp(y));
-        keys.dedup();
-        let mut mean = Vec::new();
-        let mut std = Vec::new();
-        for k in keys {
-            for (r, label, kind) in [(a, label_a, Kind::Line), (b, label_b, Kind::Dashed)] {
-                let pts: Vec<SweepPoint> = matched
-                    .iter()
-                    .filter(|c| (if along_beta { c.2 } else { c.3 }) == k)
-                    .filter_map(|c| {
-                        r.dbeta(&(c.0.clone(), c.1.clone()))
-                            .map(|(mean, std, se)| SweepPoint {
-                                x: if along_beta { c.3 } else { -c.2 },
-                                mean,
-                                std,
-                                se,
-                            })
-                    })
-                    .collect();
-                let key = if along_beta { "α⁻" } else { "β⁻" };
-                if let Some((m, sd)) = sweep_series(label, key, k, pts, kind) {
-                    mean.push(m);
-                    std.push(sd);
-                }
-            }
-        }
-        if mean.is_empty() {
-            continue;
-        }
-        let xl = if along_beta {
-            "β⁻ (deg)"
-        } else {
-            "|α⁻| (deg)"
-        };
-        plot_grid_svg(&dir.join(name), &sweep_plots(mean, std, xl), 2)?;
-        names.push(name.to_string());
-    }
-    Ok(names)
-}
-
 /// Writes `comparison.csv`, `unmatched.csv`, the overlays and a small `run.toml` into
 /// `out`, as a whole (staging directory, lock, swap: [`crate::output::out_dir`]). `out` must
 /// be a new directory or a previous rebound output other than `a_dir` and `b_dir`; both
@@ -464,7 +353,7 @@ pub fn run_compare(
     let dir = staged.path();
     comparison_table(&rows).write(&dir.join("comparison.csv"))?;
     unmatched_table(&unmatched).write(&dir.join("unmatched.csv"))?;
-    let figs = write_overlays(dir, &a, &b, label_a, label_b)?;
+    let figs = crate::figures::compare::write(dir, &a, &b, label_a, label_b)?;
     let mut run = toml::Table::new();
     run.insert("command".into(), "compare".into());
     run.insert("version".into(), crate::BUILD_VERSION.into());

@@ -7,7 +7,7 @@ use crate::cli::DeterministicArgs;
 use crate::commands::Context;
 use crate::deterministic::scene::{choose_surface, SceneOptions, SurfaceChoice};
 use crate::deterministic::{
-    fill_block, plots, tally_spec, LostCounts, ModelSetup, Tracker, DEFAULT_MAX_COLLISIONS,
+    fill_block, tally_spec, LostCounts, ModelSetup, Tracker, DEFAULT_MAX_COLLISIONS,
 };
 use crate::erosion::ErosionSetup;
 use crate::error::{Error, Result};
@@ -521,7 +521,7 @@ pub fn finish(
     }
     prepare_out_dir(dir)?;
     write_tables(dir, &results)?;
-    let figs = plots::write_figures(dir, &results, "DS")?;
+    let figs = crate::figures::deterministic::write(dir, &results, "DS")?;
     for (k, v) in &p.notes {
         manifest.set(k, v.clone());
     }

@@ -10,7 +10,6 @@ use crate::error::{Error, Result};
 use crate::output::schema::write_tables;
 use crate::output::{prepare_out_dir, Manifest, OutputDir};
 use crate::runner::{self, TallyOverrides};
-use crate::stochastic::plots::write_figures;
 use crate::stochastic::simulate::{fill_block, gamma_model_curve, tally_spec, ModelSetup};
 use crate::tally::engine::ConditionStats;
 use crate::tally::{ConditionTally, TallySpec, BLOCK_SIZE};
@@ -335,7 +334,7 @@ pub fn finish(
     }
     prepare_out_dir(dir)?;
     write_tables(dir, &results)?;
-    let figs = write_figures(dir, &results, &wall, "SM")?;
+    let figs = crate::figures::stochastic::write(dir, &results, &wall, "SM")?;
     for (k, v) in &p.notes {
         manifest.set(k, v.clone());
     }

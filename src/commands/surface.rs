@@ -10,16 +10,14 @@
 use crate::cli::SurfaceArgs;
 use crate::commands::Context;
 use crate::error::Result;
-use crate::figures::{plot_grid_svg, Kind, Plot, Series};
+use crate::figures;
 use crate::output::out_dir::{place_file, OutputDir};
 use crate::output::{fmt_num, CsvTable};
 use crate::surface::dilation::{effective_roughness, EffectiveRoughness};
-use crate::surface::figure::height_map_svg;
 use crate::surface::heights_io::write_heights;
-use crate::surface::stats::{surface_stats, HistogramSpec, RotatedStats, SurfaceStats};
+use crate::surface::stats::{surface_stats, HistogramSpec, SurfaceStats};
 use crate::surface::{generate, HeightField};
 use crate::wall::{self, rotated_moments, Deviations};
-use std::path::Path;
 use std::time::Instant;
 
 /// The built-in case: the surface of Table 1 (L = 5 mm, N = 5001, h = 0.37 µm,
@@ -138,7 +136,7 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     let dir = out.path().to_path_buf();
     summary_table(&spec, &target, &stats).write(&dir.join("surface_summary.csv"))?;
     angles_table(&target, &stats).write(&dir.join("normal_angles.csv"))?;
-    height_map_svg(
+    figures::surface::height_map(
         &dir.join("height_map.svg"),
         &field,
         &format!(
@@ -148,12 +146,24 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
             field.nx.max(field.nz).min(256)
         ),
     )?;
-    pdf_figure(&dir.join("normal_angle_pdfs.svg"), &target, &stats)?;
+    let model: Vec<(f64, f64)> = stats
+        .rotated
+        .iter()
+        .map(|r| model_row(&target, r.beta_star))
+        .map(|(x, z, _)| (x, z))
+        .collect();
+    figures::surface::normal_angle_pdfs(&dir.join("normal_angle_pdfs.svg"), &stats, &model)?;
     if !diameters.is_empty() {
         let t1 = Instant::now();
         let eff = effective_roughness(&field, &diameters);
         effective_table(&spec, &stats, &eff).write(&dir.join("effective_roughness.csv"))?;
-        effective_figure(&dir.join("effective_roughness.svg"), &spec, &stats, &eff)?;
+        figures::surface::effective_roughness(
+            &dir.join("effective_roughness.svg"),
+            spec.corr_length_x_m,
+            spec.corr_length_z_m,
+            &stats,
+            &eff,
+        )?;
         ctx.manifest.set_run(
             "effective_roughness_s",
             toml::Value::Float(round_ms(t1.elapsed().as_secs_f64())),
@@ -213,65 +223,6 @@ fn effective_table(
         ]);
     }
     t
-}
-
-/// `Δ_eff/Δ` against `D/c_L` for both axes, and the contact fraction.
-fn effective_figure(
-    path: &Path,
-    spec: &crate::case::SurfaceSpec,
-    s: &SurfaceStats,
-    eff: &[EffectiveRoughness],
-) -> Result<()> {
-    let mut series = Vec::new();
-    for (label, c, base, pick) in [
-        (
-            "Δξ_eff/Δξ against D/c_Lx",
-            spec.corr_length_x_m,
-            s.delta_xi,
-            (|e: &EffectiveRoughness| e.delta_xi) as fn(&EffectiveRoughness) -> f64,
-        ),
-        (
-            "Δζ_eff/Δζ against D/c_Lz",
-            spec.corr_length_z_m,
-            s.delta_zeta,
-            |e: &EffectiveRoughness| e.delta_zeta,
-        ),
-    ] {
-        let (Some(c), true) = (c, base > 0.0) else {
-            continue;
-        };
-        let pts: Vec<(f64, f64)> = eff
-            .iter()
-            .filter(|e| e.diameter_m > 0.0)
-            .map(|e| (e.diameter_m / c, pick(e) / base))
-            .collect();
-        series.push(Series::new(label, pts, Kind::Line));
-    }
-    let contact = Plot {
-        title: "nodes a resting sphere touches".into(),
-        x_label: "D (µm)".into(),
-        y_label: "fraction of nodes".into(),
-        series: vec![Series::new(
-            "",
-            eff.iter()
-                .filter(|e| e.diameter_m > 0.0)
-                .map(|e| (e.diameter_m * 1e6, e.contact_fraction))
-                .collect(),
-            Kind::Line,
-        )],
-        log_x: true,
-        log_y: true,
-        ..Plot::default()
-    };
-    let ratio = Plot {
-        title: "effective roughness of a sphere's centre surface".into(),
-        x_label: "D / c_L".into(),
-        y_label: "Δ_eff / Δ".into(),
-        series,
-        log_x: true,
-        ..Plot::default()
-    };
-    plot_grid_svg(path, &[ratio, contact], 2)
 }
 
 /// Refuses a grid whose generation would not fit in the available memory (Linux:
@@ -355,65 +306,4 @@ fn angles_table(target: &Deviations, s: &SurfaceStats) -> CsvTable {
         ]);
     }
     t
-}
-
-/// Normal density of std `sd` (degrees) on `[-half, half]`, per degree (Eqs. 12–13 for
-/// the fluctuations `ξ* − 90°`, `ζ* − 90°`). Empty for `sd = 0` (a Dirac peak).
-fn normal_curve(sd: f64, half: f64) -> Vec<(f64, f64)> {
-    if sd <= 0.0 {
-        return Vec::new();
-    }
-    let n = 200;
-    (0..=n)
-        .map(|i| {
-            let x = -half + 2.0 * half * i as f64 / n as f64;
-            let y = (-0.5 * (x / sd).powi(2)).exp() / (sd * (2.0 * std::f64::consts::PI).sqrt());
-            (x, y)
-        })
-        .collect()
-}
-
-fn pdf_panel(target: &Deviations, r: &RotatedStats) -> Plot {
-    let (mx, mz, _) = model_row(target, r.beta_star);
-    let per_deg = |h: &crate::surface::stats::Histogram| -> Vec<(f64, f64)> {
-        h.density()
-            .into_iter()
-            .map(|(x, p)| (x.to_degrees(), p.to_radians()))
-            .collect()
-    };
-    let mut series = Vec::new();
-    let mut half = 1.0;
-    if let Some(h) = &r.hist_xi {
-        half = h.half_range.to_degrees();
-        series.push(Series::new("ξ* − 90° (surface)", per_deg(h), Kind::Step));
-    }
-    if let Some(h) = &r.hist_zeta {
-        series.push(Series::new("ζ* − 90° (surface)", per_deg(h), Kind::Step));
-    }
-    series.push(Series::new(
-        "Eq. (12)",
-        normal_curve(mx.to_degrees(), half),
-        Kind::Dashed,
-    ));
-    series.push(Series::new(
-        "Eq. (13)",
-        normal_curve(mz.to_degrees(), half),
-        Kind::Dashed,
-    ));
-    Plot {
-        title: format!("β* = {}°", fmt_num(r.beta_star.to_degrees())),
-        x_label: "angle − 90° (deg)".into(),
-        y_label: "PDF (1/deg)".into(),
-        series,
-        x_range: Some((-half, half)),
-        ..Plot::default()
-    }
-}
-
-fn pdf_figure(path: &Path, target: &Deviations, s: &SurfaceStats) -> Result<()> {
-    let plots: Vec<Plot> = s.rotated.iter().map(|r| pdf_panel(target, r)).collect();
-    if plots.is_empty() {
-        return Ok(());
-    }
-    plot_grid_svg(path, &plots, plots.len().min(2))
 }

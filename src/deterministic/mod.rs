@@ -1,7 +1,6 @@
 //! `rebound deterministic`: particle-centre bouncing on a generated anisotropic
 //! rough wall (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5 and 4; physics notes §5).
 pub mod calibrate;
-pub mod plots;
 pub mod scene;
 pub mod trace;
 

@@ -7,9 +7,7 @@
 //! * [`simulate`]: many rebounds of one incident condition, parallel and reproducible.
 //! * [`variants`]: the simpler rough-wall models CFD codes ship, for the benchmark.
 //! * [`escape_table`]: the calibrated escape law of the `calibrated` model.
-//! * [`plots`]: the figures of `rebound stochastic`.
 pub mod escape_table;
-pub mod plots;
 pub mod rebound_model;
 pub mod shadow_effect;
 pub mod simulate;

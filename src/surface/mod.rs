@@ -1,6 +1,5 @@
 //! Rough walls as generated surfaces (Radenkovic & Simonin 2021, Sec. 2).
 pub mod dilation;
-pub mod figure;
 pub mod generate;
 pub mod height_field;
 pub mod heights_io;

@@ -1,5 +1,5 @@
-//! SVG figures: the one place that talks to `plotters`. Figures are rendered into a
-//! string and written atomically like every other output.
+//! The line-plot renderer: [`Plot`]s of [`Series`] drawn with `plotters` into an SVG string
+//! and written atomically like every other output.
 
 use crate::error::{Error, Result};
 use crate::output::write_atomic;
@@ -168,7 +168,8 @@ pub fn plot_svg(path: &Path, plot: &Plot) -> Result<()> {
     plot_grid_svg(path, std::slice::from_ref(plot), 1)
 }
 
-fn draw_err<E: std::fmt::Debug>(e: E) -> Error {
+/// A `plotters` failure as the crate's error.
+pub(super) fn draw_err<E: std::fmt::Debug>(e: E) -> Error {
     Error::Io(format!("drawing figure: {e:?}"))
 }
 
@@ -351,156 +352,6 @@ fn simplify(pts: Vec<(f64, f64)>, to_pixel: impl Fn((f64, f64)) -> (i32, i32)) -
     keep.into_iter().map(|i| pts[i]).collect()
 }
 
-/// One point of a sweep curve: the swept angle, the mean and std of `β⁺ − β⁻` there, and the
-/// standard error of the mean when known.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SweepPoint {
-    pub x: f64,
-    pub mean: f64,
-    pub std: f64,
-    pub se: Option<f64>,
-}
-
-/// The mean and std curves of one line of a sweep (Radenkovic & Simonin 2021, Figs. 16–17):
-/// `pts` for the conditions where the swept key (`α⁻` or `β⁻`, named by `key`) equals `k`.
-/// The mean carries ±2 standard errors as error bars. `None` when fewer than two points make
-/// no curve.
-pub fn sweep_series(
-    label: &str,
-    key: &str,
-    k: f64,
-    mut pts: Vec<SweepPoint>,
-    kind: Kind,
-) -> Option<(Series, Series)> {
-    if pts.len() < 2 {
-        return None;
-    }
-    pts.sort_by(|a, b| a.x.total_cmp(&b.x));
-    let name = format!("{label}, {key} = {k}°");
-    let err: Vec<f64> = pts.iter().map(|p| 2.0 * p.se.unwrap_or(f64::NAN)).collect();
-    let mean = Series::new(
-        name.clone(),
-        pts.iter().map(|p| (p.x, p.mean)).collect(),
-        kind,
-    );
-    Some((
-        if err.iter().any(|e| e.is_finite()) {
-            mean.with_err(err)
-        } else {
-            mean
-        },
-        Series::new(name, pts.iter().map(|p| (p.x, p.std)).collect(), kind),
-    ))
-}
-
-/// The two panels of Figs. 16–17: mean and std of `β⁺ − β⁻` against the swept angle.
-pub fn sweep_plots(mean: Vec<Series>, std: Vec<Series>, x_label: &str) -> [Plot; 2] {
-    [
-        Plot {
-            title: "mean transverse deviation".into(),
-            x_label: x_label.into(),
-            y_label: "E(β⁺ − β⁻) ± 2 SE (deg)".into(),
-            series: mean,
-            ..Default::default()
-        },
-        Plot {
-            title: "std of the transverse deviation".into(),
-            x_label: x_label.into(),
-            y_label: "Δβ⁺ (deg)".into(),
-            series: std,
-            ..Default::default()
-        },
-    ]
-}
-
-/// The panel title of an incident condition.
-pub fn condition_title(c: &crate::incidence::IncidentCondition) -> String {
-    format!(
-        "α⁻ = {}°, β⁻ = {}°",
-        crate::incidence::fmt_key(c.alpha_in_deg()),
-        crate::incidence::fmt_key(c.beta_in_deg())
-    )
-}
-
-/// Figs. 16–17 of a run (Radenkovic & Simonin 2021): mean (± 2 SE) and std of `β⁺ − β⁻`
-/// against `β⁻`, one line per `α⁻` (file `names[0]`), and against `|α⁻|`, one line per `β⁻`
-/// (file `names[1]`), written when some line has at least `min_points` conditions.
-/// Returns the file names written.
-pub fn dbeta_sweeps(
-    dir: &Path,
-    results: &[crate::tally::ConditionResult],
-    label: &str,
-    min_points: usize,
-    names: [&str; 2],
-) -> Result<Vec<String>> {
-    let mut alphas: Vec<f64> = results
-        .iter()
-        .map(|r| r.condition().alpha_in_deg())
-        .collect();
-    let mut betas: Vec<f64> = results
-        .iter()
-        .map(|r| r.condition().beta_in_deg())
-        .collect();
-    for v in [&mut alphas, &mut betas] {
-        v.sort_by(|a, b| a.total_cmp(b));
-        v.dedup();
-    }
-    let mut written = Vec::new();
-    for (along_beta, keys, name, x_label) in [
-        (true, &alphas, names[0], "β⁻ (deg)"),
-        (false, &betas, names[1], "|α⁻| (deg)"),
-    ] {
-        let (mut mean, mut std) = (Vec::new(), Vec::new());
-        for &k in keys.iter() {
-            let pts: Vec<SweepPoint> = results
-                .iter()
-                .filter(|r| {
-                    let c = r.condition();
-                    (if along_beta {
-                        c.alpha_in_deg()
-                    } else {
-                        c.beta_in_deg()
-                    }) == k
-                })
-                .filter_map(|r| {
-                    let c = r.condition();
-                    let e = r.estimate(crate::tally::Quantity::Dbeta)?;
-                    Some(SweepPoint {
-                        x: if along_beta {
-                            c.beta_in_deg()
-                        } else {
-                            -c.alpha_in_deg()
-                        },
-                        mean: e.mean,
-                        std: e.std,
-                        se: Some(e.se),
-                    })
-                })
-                .collect();
-            if pts.len() < min_points {
-                continue;
-            }
-            let key = if along_beta { "α⁻" } else { "β⁻" };
-            if let Some((m, sd)) = sweep_series(label, key, k, pts, Kind::Line) {
-                mean.push(m);
-                std.push(sd);
-            }
-        }
-        if !mean.is_empty() {
-            plot_grid_svg(&dir.join(name), &sweep_plots(mean, std, x_label), 2)?;
-            written.push(name.to_string());
-        }
-    }
-    Ok(written)
-}
-
-/// `(bin centre, value)` points of a PDF, for a `Step` series.
-pub fn bins_to_points(bins: &[crate::tally::Bin]) -> Vec<(f64, f64)> {
-    bins.iter()
-        .map(|b| (0.5 * (b.lo + b.hi), b.value))
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -522,26 +373,6 @@ mod tests {
         plot_svg(&p, &plot).unwrap();
         let s = std::fs::read_to_string(&p).unwrap();
         assert!(s.starts_with("<svg") && s.contains("DS") && s.contains("SM"));
-    }
-
-    #[test]
-    fn sweep_series_sorts_and_needs_two_points() {
-        let p = |x, mean, std, se| SweepPoint { x, mean, std, se };
-        assert!(
-            sweep_series("DS", "α⁻", -15.0, vec![p(10.0, 1.0, 2.0, None)], Kind::Line).is_none()
-        );
-        let (m, s) = sweep_series(
-            "DS",
-            "α⁻",
-            -15.0,
-            vec![p(20.0, 1.0, 3.0, Some(0.1)), p(10.0, 0.5, 2.0, Some(0.2))],
-            Kind::Line,
-        )
-        .unwrap();
-        assert_eq!(m.points, vec![(10.0, 0.5), (20.0, 1.0)]);
-        assert_eq!(m.err, vec![0.4, 0.2]);
-        assert_eq!(s.points, vec![(10.0, 2.0), (20.0, 3.0)]);
-        assert_eq!(m.label, "DS, α⁻ = -15°");
     }
 
     #[test]

@@ -2,10 +2,8 @@
 //! Figs. 6, 7 (first and final rebound), 8, 9, 12 and, for β⁻ sweeps, Fig. 16.
 //! Panels are laid out with one row per `α⁻` and one column per `β⁻`.
 
+use super::{bins_to_points, condition_title, dbeta_sweeps, plot_grid_svg, Kind, Plot, Series};
 use crate::error::Result;
-use crate::figures::{
-    bins_to_points, condition_title, dbeta_sweeps, plot_grid_svg, Kind, Plot, Series,
-};
 use crate::tally::{ConditionResult, Quantity};
 use std::path::Path;
 
@@ -57,7 +55,7 @@ fn grid(
 type Panel<'a> = (&'a str, &'a str, &'a str, Vec<(Quantity, &'a str, Kind)>);
 
 /// Writes every figure into `dir`; returns the file names.
-pub fn write_figures(dir: &Path, results: &[ConditionResult], label: &str) -> Result<Vec<String>> {
+pub fn write(dir: &Path, results: &[ConditionResult], label: &str) -> Result<Vec<String>> {
     const PDF: &str = "PDF (1/deg)";
     let panels: [Panel; 5] = [
         (

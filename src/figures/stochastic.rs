@@ -2,10 +2,8 @@
 //! the α⁺ and β⁺ − β⁻ panels of Figs. 14–15, and the mean/std of β⁺ − β⁻ against the
 //! incident angles (Figs. 16–17).
 
+use super::{bins_to_points, condition_title, dbeta_sweeps, plot_grid_svg, Kind, Plot, Series};
 use crate::error::Result;
-use crate::figures::{
-    bins_to_points, condition_title, dbeta_sweeps, plot_grid_svg, Kind, Plot, Series,
-};
 use crate::tally::{ConditionResult, Quantity};
 use crate::wall::{conditional_gamma_star, rotated_moments, Deviations};
 use std::path::Path;
@@ -18,7 +16,7 @@ fn cols(n: usize) -> usize {
 const MIN_SLICE: f64 = 50.0;
 
 /// Writes the figures into `dir`; returns their file names.
-pub fn write_figures(
+pub fn write(
     dir: &Path,
     results: &[ConditionResult],
     wall: &Deviations,

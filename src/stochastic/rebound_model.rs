@@ -67,6 +67,9 @@ pub struct Incidence {
     variant: Variant,
     /// The isotropic variants' roughness angle `Δγ` (rad).
     delta_gamma_iso: f64,
+    /// The reduced incident angle `α⁻/Δγ(β⁻)` of the calibrated model's tables
+    /// ([`reduced_angle`]), once per direction rather than once per particle.
+    x_in: f64,
 }
 
 impl Incidence {
@@ -94,6 +97,7 @@ impl Incidence {
             alpha,
             beta,
             sin_cos_beta: beta.sin_cos(),
+            x_in: alpha / moments.delta_gamma(),
             moments,
             sampler,
             variant,
@@ -127,12 +131,10 @@ impl Incidence {
     fn draw_wall_corrected<R: Rng + ?Sized>(
         &self,
         table: &EscapeTable,
-        stage: Stage,
-        x_in: f64,
+        &(stage, bound): &(Stage, f64),
         rng: &mut R,
     ) -> SeenWall {
-        let dg = self.moments.delta_gamma();
-        let bound = table.element_bound(stage, x_in);
+        let (dg, x_in) = (self.sampler.delta_gamma(), self.x_in);
         let mut gamma = self.sampler.sample(rng);
         // The bound makes ~1–2 proposals typical; the cap only guards a degenerate table.
         for _ in 0..1000 {
@@ -536,7 +538,7 @@ fn rebound_repeated<R: Rng + ?Sized>(
         observe,
         |_, _| (),
         |cur, _, rng| cur.draw_variant(rng),
-        |_, u_out, _| u_out.y > 0.0,
+        |_, _, u_out, _| u_out.y > 0.0,
     )
 }
 
@@ -566,15 +568,15 @@ fn rebound_calibrated<R: Rng + ?Sized>(
         omega_in,
         rng,
         observe,
-        // Per hit, once: its stage and reduced incident angle.
-        |k, u| {
+        // Per hit, once: its stage and the element weight's bound at its reduced angle.
+        |k, cur| {
             let stage = if k == 0 { Stage::First } else { Stage::Later };
-            (stage, reduced_angle(u, wall))
+            (stage, table.element_bound(stage, cur.x_in))
         },
-        |cur, &(stage, x_in), rng| cur.draw_wall_corrected(table, stage, x_in, rng),
-        |&(stage, x_in), u_out, rng| {
+        |cur, state, rng| cur.draw_wall_corrected(table, state, rng),
+        |cur, &(stage, _), u_out, rng| {
             u_out.y > 0.0 && {
-                let p = table.p_escape(stage, x_in, reduced_angle(u_out, wall));
+                let p = table.p_escape(stage, cur.x_in, reduced_angle(u_out, wall));
                 p >= 1.0 || rng.gen::<f64>() < p
             }
         },
@@ -608,10 +610,10 @@ impl<'a> Hits<'a> {
         }
     }
 
-    /// Hit `k = 0, 1, …` with velocity `u`: `at_hit(k, u)` once, then `draw(incidence,
-    /// state, rng)` an element the particle can reach (redrawn while `U·n ≥ 0`), the
-    /// collision law, then `leaves(state, u⁺, rng)` or the next hit with `u⁺` from its own
-    /// incidence; the mean wall after [`MAX_TRIES`].
+    /// Hit `k = 0, 1, …` with velocity `u` and its incidence: `at_hit(k, incidence)` once,
+    /// then `draw(incidence, state, rng)` an element the particle can reach (redrawn while
+    /// `U·n ≥ 0`), the collision law, then `leaves(incidence, state, u⁺, rng)` or the next
+    /// hit with `u⁺` from its own incidence; the mean wall after [`MAX_TRIES`].
     #[allow(clippy::too_many_arguments)]
     fn follow<R: Rng + ?Sized, S>(
         &self,
@@ -619,15 +621,15 @@ impl<'a> Hits<'a> {
         omega_in: Vector3<f64>,
         rng: &mut R,
         mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
-        at_hit: impl Fn(u32, &Vector3<f64>) -> S,
+        at_hit: impl Fn(u32, &Incidence) -> S,
         mut draw: impl FnMut(&Incidence, &S, &mut R) -> SeenWall,
-        mut leaves: impl FnMut(&S, &Vector3<f64>, &mut R) -> bool,
+        mut leaves: impl FnMut(&Incidence, &S, &Vector3<f64>, &mut R) -> bool,
     ) -> Rebound {
         let (mut u, mut w) = (u_in, omega_in);
         let mut cur = *self.inc;
         let mut candidates = 0u32;
         let mut first = SeenWall::FLAT;
-        let mut state = at_hit(0, &u);
+        let mut state = at_hit(0, &cur);
         for tries in 1..=MAX_TRIES {
             let seen = draw(&cur, &state, rng);
             if u.dot(&seen.normal) >= 0.0 {
@@ -639,11 +641,10 @@ impl<'a> Hits<'a> {
             }
             observe(&u, &seen.normal, true);
             let (u_out, w_out) = self.law.collide(u, w, seen.normal, self.diameter_m);
-            if leaves(&state, &u_out, rng) {
+            if leaves(&cur, &state, &u_out, rng) {
                 return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
             }
             (u, w) = (u_out, w_out);
-            state = at_hit(candidates, &u);
             let (alpha, beta) = incident_angles(&u);
             // Without rising hits, an exactly tangential velocity is taken as grazing by a
             // hair so that the incidence is defined.
@@ -653,6 +654,7 @@ impl<'a> Hits<'a> {
                 alpha.min(-1e-12)
             };
             cur = Incidence::with_variant(alpha, beta, self.wall, self.inc.variant);
+            state = at_hit(candidates, &cur);
         }
         guard_rebound(u, w, self.law, self.diameter_m, candidates, first, observe)
     }

@@ -1,4 +1,5 @@
 //! `rebound force-sweep` end to end: outputs, shipped cases, bad input.
+use crate::common::*;
 use roughwall::cli::{CommonArgs, ForceSweepArgs};
 use roughwall::commands::force_sweep::{resolve, run, HEADER};
 use roughwall::error::Error;
@@ -21,35 +22,51 @@ fn read(p: &Path) -> String {
 /// Without `--case`: Hu et al. 2021, Fig. 6, for hu2021, hertz-rigid and hertz-dynamic.
 #[test]
 fn default_run_is_fig6() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     run(&args(None, dir.path())).unwrap();
-    let csv = read(&dir.path().join("force_sweep.csv"));
-    let mut lines = csv.lines();
-    assert_eq!(lines.next().unwrap(), HEADER.join(","));
+    let csv = Csv::read(&dir.path().join("force_sweep.csv"));
+    assert_eq!(csv.header, HEADER.to_vec());
     assert_eq!(HEADER.join(","), "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s");
-    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    assert_eq!(rows.len(), 3 * 3 * 91);
-    for r in &rows {
-        assert_eq!(r.len(), 11);
+    assert_eq!(csv.rows.len(), 3 * 3 * 91);
+    for r in csv.records() {
+        assert_eq!(r.cells().len(), 11);
         assert_eq!(
-            (r[3], r[4], r[5], r[6], r[7]),
+            (
+                &r["u_n_m_s"],
+                &r["diameter_um"],
+                &r["density_kg_m3"],
+                &r["youngs_pa"],
+                &r["poisson"]
+            ),
             ("0.0457", "2.45", "2500", "64000000000", "0.24")
         );
-        assert!(r[8].parse::<f64>().unwrap() > 0.0 && r[9].parse::<f64>().unwrap() > 0.0);
+        assert!(r.num("f_max_n") > 0.0 && r.num("xi") > 0.0);
         // Contact time: empty for hu2021 only.
-        assert_eq!(r[10].is_empty(), r[0] == "hu2021", "{r:?}");
+        assert_eq!(
+            r["contact_time_s"].is_empty(),
+            &r["model"] == "hu2021",
+            "{r:?}"
+        );
     }
     // ξ of hu2021 at λ = 2, β = 0 is Eq. (8)'s constant term.
-    assert!(rows
-        .iter()
-        .any(|r| r[0] == "hu2021" && r[1] == "2" && r[2] == "0" && r[9] == "0.82837"));
-    let acc = read(&dir.path().join("accuracy.csv"));
-    assert_eq!(acc.lines().count(), 1 + 6);
-    assert!(acc
-        .lines()
-        .nth(1)
-        .unwrap()
-        .starts_with("hertz-rigid,1.5,2.45,0.0457,91,0,90,"));
+    assert!(csv
+        .records()
+        .any(|r| (&r["model"], &r["lambda"], &r["beta_deg"], &r["xi"])
+            == ("hu2021", "2", "0", "0.82837")));
+    let acc = Csv::read(&dir.path().join("accuracy.csv"));
+    assert_eq!(acc.rows.len(), 6);
+    let first = acc.row(0);
+    for (column, value) in [
+        ("model", "hertz-rigid"),
+        ("lambda", "1.5"),
+        ("diameter_um", "2.45"),
+        ("u_n_m_s", "0.0457"),
+        ("points", "91"),
+        ("beta_min_deg", "0"),
+        ("beta_max_deg", "90"),
+    ] {
+        assert_eq!(&first[column], value, "{column}");
+    }
     assert!(
         read(&dir.path().join("dynamic_convergence.csv"))
             .lines()
@@ -90,7 +107,7 @@ fn shipped_cases() {
         let (p, s) = resolve(&case).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(p.validate().is_ok() && !s.is_empty(), "{name}");
     }
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     run(&args(Some("cases/hu-fig12.toml".into()), dir.path())).unwrap();
     let csv = read(&dir.path().join("force_sweep.csv"));
     assert_eq!(csv.lines().count(), 1 + 3 * 12);
@@ -98,7 +115,7 @@ fn shipped_cases() {
 }
 
 fn case_err(body: &str) -> String {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     let case = dir.path().join("c.toml");
     std::fs::write(&case, format!("name = \"bad\"\n{body}")).unwrap();
     let out = dir.path().join("out");
@@ -132,7 +149,7 @@ fn bad_input_is_one_line_input_error() {
 /// U_N = 0: zero force, empty contact time, no NaN.
 #[test]
 fn zero_speed_rows() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     let case = dir.path().join("c.toml");
     std::fs::write(
         &case,
@@ -141,12 +158,13 @@ fn zero_speed_rows() {
     .unwrap();
     let out = dir.path().join("out");
     run(&args(Some(case), &out)).unwrap();
-    let csv = read(&out.join("force_sweep.csv"));
-    assert_eq!(csv.lines().count(), 1 + 12);
-    for l in csv.lines().skip(1) {
-        let r: Vec<&str> = l.split(',').collect();
-        assert_eq!((r[8], r[10]), ("0", ""), "{l}");
-        assert!(r[9].parse::<f64>().unwrap() > 0.0);
+    let text = read(&out.join("force_sweep.csv"));
+    assert_eq!(text.lines().count(), 1 + 12);
+    let csv = Csv::read(&out.join("force_sweep.csv"));
+    assert_eq!(csv.header, HEADER.to_vec());
+    for r in csv.records() {
+        assert_eq!((&r["f_max_n"], &r["contact_time_s"]), ("0", ""), "{r:?}");
+        assert!(r.num("xi") > 0.0);
     }
-    assert!(!csv.to_lowercase().contains("nan"));
+    assert!(!text.to_lowercase().contains("nan"));
 }

@@ -2,6 +2,7 @@
 //! header, so a script cannot rot silently. Runs `scripts/reproduce-all.sh` with
 //! `REBOUND_QUICK=1` into a temporary directory, using the binary under test.
 
+use crate::common::{rebound_bin, repo_root};
 use std::path::Path;
 use std::process::Command;
 
@@ -12,12 +13,12 @@ fn header(path: &Path) -> String {
 
 #[test]
 fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = repo_root();
     let out = tempfile::tempdir().unwrap();
     let status = Command::new("bash")
         .arg(root.join("scripts/reproduce-all.sh"))
         .env("REBOUND_QUICK", "1")
-        .env("REBOUND_BIN", env!("CARGO_BIN_EXE_rebound"))
+        .env("REBOUND_BIN", rebound_bin())
         .env("REBOUND_RESULTS", out.path())
         .status()
         .unwrap();

@@ -4,6 +4,7 @@
 //! a timing, is only in `REPORT.md`); every number is read from the runs' `compare` outputs
 //! and manifests.
 
+use super::paths::{COMPARE, STOCHASTIC, WALL_MODELS};
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
@@ -41,7 +42,7 @@ struct Score {
 }
 
 fn score(dir: &Path) -> Result<Option<Score>> {
-    let Some(c) = Rows::read(&dir.join("compare/comparison.csv"))? else {
+    let Some(c) = Rows::read(&dir.join(COMPARE).join("comparison.csv"))? else {
         return Ok(None);
     };
     let mut s = Score::default();
@@ -74,7 +75,7 @@ fn score(dir: &Path) -> Result<Option<Score>> {
             _ => {}
         }
     }
-    let sm = dir.join("stochastic");
+    let sm = dir.join(STOCHASTIC);
     s.ns_per_rebound = run_toml(&sm).and_then(|t| {
         let run = t.get("run")?;
         let secs = run.get("compute_s")?.as_float()?;
@@ -89,7 +90,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
     md.push_str(
         "## Which rough-wall model to trust: the models CFD codes ship against `deterministic`\n\n",
     );
-    let dir = results.join("wall-models");
+    let dir = results.join(WALL_MODELS);
     let mut table = CsvTable::new(&[
         "scene",
         "model",

@@ -1,9 +1,10 @@
 //! `rebound force-sweep` end to end: outputs, shipped cases, bad input.
-use crate::common::*;
 use roughwall::cli::{CommonArgs, ForceSweepArgs};
 use roughwall::commands::force_sweep::{resolve, run, HEADER};
 use roughwall::error::Error;
 use std::path::{Path, PathBuf};
+
+use crate::common::Csv;
 
 fn args(case: Option<PathBuf>, out: &Path) -> ForceSweepArgs {
     ForceSweepArgs {
@@ -22,9 +23,10 @@ fn read(p: &Path) -> String {
 /// Without `--case`: Hu et al. 2021, Fig. 6, for hu2021, hertz-rigid and hertz-dynamic.
 #[test]
 fn default_run_is_fig6() {
-    let dir = Dir::new();
+    let dir = tempfile::tempdir().unwrap();
     run(&args(None, dir.path())).unwrap();
-    let csv = Csv::read(&dir.path().join("force_sweep.csv"));
+    let csv = read(&dir.path().join("force_sweep.csv"));
+    let csv = Csv::parse(&csv);
     assert_eq!(csv.header, HEADER.to_vec());
     assert_eq!(HEADER.join(","), "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s");
     assert_eq!(csv.rows.len(), 3 * 3 * 91);
@@ -107,7 +109,7 @@ fn shipped_cases() {
         let (p, s) = resolve(&case).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(p.validate().is_ok() && !s.is_empty(), "{name}");
     }
-    let dir = Dir::new();
+    let dir = tempfile::tempdir().unwrap();
     run(&args(Some("cases/hu-fig12.toml".into()), dir.path())).unwrap();
     let csv = read(&dir.path().join("force_sweep.csv"));
     assert_eq!(csv.lines().count(), 1 + 3 * 12);
@@ -115,7 +117,7 @@ fn shipped_cases() {
 }
 
 fn case_err(body: &str) -> String {
-    let dir = Dir::new();
+    let dir = tempfile::tempdir().unwrap();
     let case = dir.path().join("c.toml");
     std::fs::write(&case, format!("name = \"bad\"\n{body}")).unwrap();
     let out = dir.path().join("out");
@@ -149,7 +151,7 @@ fn bad_input_is_one_line_input_error() {
 /// U_N = 0: zero force, empty contact time, no NaN.
 #[test]
 fn zero_speed_rows() {
-    let dir = Dir::new();
+    let dir = tempfile::tempdir().unwrap();
     let case = dir.path().join("c.toml");
     std::fs::write(
         &case,
@@ -158,13 +160,13 @@ fn zero_speed_rows() {
     .unwrap();
     let out = dir.path().join("out");
     run(&args(Some(case), &out)).unwrap();
-    let text = read(&out.join("force_sweep.csv"));
-    assert_eq!(text.lines().count(), 1 + 12);
-    let csv = Csv::read(&out.join("force_sweep.csv"));
-    assert_eq!(csv.header, HEADER.to_vec());
-    for r in csv.records() {
+    let csv = read(&out.join("force_sweep.csv"));
+    assert_eq!(csv.lines().count(), 1 + 12);
+    let table = Csv::parse(&csv);
+    assert_eq!(table.header, HEADER.to_vec());
+    for r in table.records() {
         assert_eq!((&r["f_max_n"], &r["contact_time_s"]), ("0", ""), "{r:?}");
         assert!(r.num("xi") > 0.0);
     }
-    assert!(!text.to_lowercase().contains("nan"));
+    assert!(!csv.to_lowercase().contains("nan"));
 }

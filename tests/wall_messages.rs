@@ -5,7 +5,8 @@
 //!   as `rebound stochastic` resolves it (`commands::stochastic::prepare`), and
 //! * what `rebound stochastic --case` prints (`error: ` and the message, one line, exit 2).
 
-use crate::common::*;
+use crate::common;
+use common::*;
 use roughwall::commands::stochastic::{prepare, DEFAULT_CASE};
 use roughwall::commands::Context;
 use roughwall::ffi::*;
@@ -30,7 +31,7 @@ enum Param {
 
 /// The built-in case of `rebound stochastic` (the Sec. 4 glass–steel scene) with `p` = `x`.
 fn case_text(p: Param, x: f64) -> String {
-    let v = toml_number(x);
+    let v = common::toml_number(x);
     let base = DEFAULT_CASE;
     let sh = "preset = \"glass-steel\"";
     let edit = |from: &str, to: String| {

@@ -212,9 +212,15 @@ pub struct Csv {
 }
 
 impl Csv {
+    /// Reads the CSV file at `path`.
     pub fn read(path: &Path) -> Csv {
         let text =
             std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        Csv::parse(&text)
+    }
+
+    /// The CSV in `text`.
+    pub fn parse(text: &str) -> Csv {
         let mut lines = text.lines();
         let header = lines
             .next()

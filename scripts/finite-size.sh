@@ -10,7 +10,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 F=$OUT/$P_FINITE_SIZE
 mkdir -p "$F/cases"
 N=$(particles 100000 2000)
-for d in 50 100 250 500; do
+for d in $P_FINITE_SIZE_DIAMETERS_UM; do
   stage_start "Finite size D = $d um"
   sphere="$F/cases/d$d.toml"
   sed -e "s/^name = .*/name = \"finite-size-d$d\"/" -e "s/^diameter_um = .*/diameter_um = $d.0/" \

@@ -12,10 +12,11 @@ R=$OUT/$P_RADENKOVIC2021
 mkdir -p "$W/cases"
 N=$(particles 100000 2000)
 VARIANTS="radenkovic-simonin-2021 sommerfeld-huber-1999 gaussian-angle gaussian-tilt normal-perturbation calibrated"
-SCENES="sec3:aniso sec3:aniso-rev sec4:glass-steel-2d sec4:glass-steel-iso sec4:glass-steel sec4:glass-steel-fig16 sec4:glass-steel-fig16-2d sec4:glass-steel-fig17 sec4:glass-steel-fig17-2d"
-for s in $SCENES; do
-  IFS=: read -r sec scene <<< "$s"
-  det="$R/$sec-$scene/$P_DETERMINISTIC"
+# The scenes are directories under $R (sec3-aniso, …); a scene's name drops the prefix.
+for sdir in $P_WALL_MODELS_SCENES; do
+  scene=${sdir#"$P_SEC3"}
+  scene=${scene#"$P_SEC4"}
+  det="$R/$sdir/$P_DETERMINISTIC"
   stage_start "Wall models $scene"
   if [ ! -f "$det/summary.csv" ] || [ "$(awk -F, 'NR==2{print $5}' "$det/summary.csv")" -lt "$((N / 2))" ]; then
     run deterministic --case "cases/$scene.toml" --particles "$N" --out "$det"

@@ -5,15 +5,14 @@
 
 use super::paths::{
     COMPARE, COMPARE_EFFECTIVE, COMPARE_NOMINAL, FINITE_SIZE, FINITE_SIZE_DIAMETER,
-    FINITE_SIZE_GRID, FINITE_SIZE_LAW, RADENKOVIC2021, SEC4_GLASS_STEEL, STOCHASTIC_EFFECTIVE,
+    FINITE_SIZE_DIAMETERS_UM, FINITE_SIZE_GRID, FINITE_SIZE_LAW, RADENKOVIC2021, SEC4_GLASS_STEEL,
+    STOCHASTIC_EFFECTIVE,
 };
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
 use std::fmt::Write;
 use std::path::Path;
-
-const DIAMETERS: [u32; 4] = [50, 100, 250, 500];
 
 /// Largest KS of `alpha_out` and `dbeta` and largest |bias| of mean α⁺ in a comparison.
 fn worst(dir: &Path) -> Result<Option<(f64, f64, f64)>> {
@@ -55,7 +54,7 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
         "max_abs_bias_alpha_out_nominal_deg",
     ]);
     let mut rows = Vec::new();
-    for d in DIAMETERS {
+    for d in FINITE_SIZE_DIAMETERS_UM {
         let run = dir.join(format!("{FINITE_SIZE_DIAMETER}{d}"));
         let Some(t) = run_toml(&run.join(STOCHASTIC_EFFECTIVE)) else {
             continue;

@@ -62,6 +62,28 @@ pub const HU2021_FIGS: [&str; 9] = [
     HU_FIG4, HU_FIG6, "fig8", HU_FIG9, "fig10", "fig10b", "fig11", HU_FIG11B, "fig12",
 ];
 
+/// The scenes of Radenkovic & Simonin 2021 (directories under [`RADENKOVIC2021`]) on which
+/// every stochastic variant runs against their `deterministic` run; under [`WALL_MODELS`] each
+/// has a directory named without its `sec3-`/`sec4-` prefix ([`scene_name`]).
+pub const WALL_MODELS_SCENES: [&str; 9] = [
+    "sec3-aniso",
+    "sec3-aniso-rev",
+    "sec4-glass-steel-2d",
+    "sec4-glass-steel-iso",
+    "sec4-glass-steel",
+    "sec4-glass-steel-fig16",
+    "sec4-glass-steel-fig16-2d",
+    "sec4-glass-steel-fig17",
+    "sec4-glass-steel-fig17-2d",
+];
+
+/// A scene's name: its directory under [`RADENKOVIC2021`] without the [`SEC3`]/[`SEC4`] prefix.
+pub fn scene_name(dir: &str) -> &str {
+    dir.strip_prefix(SEC3)
+        .or_else(|| dir.strip_prefix(SEC4))
+        .unwrap_or(dir)
+}
+
 /// Speed against error: the reference run.
 pub const SPEED_REFERENCE: &str = "reference";
 /// Speed against error: prefix of the deterministic runs (`det-n1000-s8`, `det-t0.1-s8`).
@@ -76,6 +98,8 @@ pub const CALIBRATION_TABLE: &str = "table";
 /// Calibration: `deterministic` on another surface, compared with the first.
 pub const CALIBRATION_NOISE: &str = "noise";
 
+/// Finite size: the sphere diameters (µm), one run directory each.
+pub const FINITE_SIZE_DIAMETERS_UM: [&str; 4] = ["50", "100", "250", "500"];
 /// Finite size: prefix of the runs of one diameter (`d50`, …).
 pub const FINITE_SIZE_DIAMETER: &str = "d";
 /// Finite size: `stochastic` with the deviations the sphere sees.
@@ -93,7 +117,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 37] = [
+pub const SHELL: [(&str, &[&str]); 39] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -118,12 +142,14 @@ pub const SHELL: [(&str, &[&str]); 37] = [
     ("HU_FIG9", &[HU_FIG9]),
     ("HU_FIG11B", &[HU_FIG11B]),
     ("HU2021_FIGS", &HU2021_FIGS),
+    ("WALL_MODELS_SCENES", &WALL_MODELS_SCENES),
     ("SPEED_REFERENCE", &[SPEED_REFERENCE]),
     ("SPEED_DETERMINISTIC", &[SPEED_DETERMINISTIC]),
     ("SPEED_STOCHASTIC", &[SPEED_STOCHASTIC]),
     ("VS_REFERENCE", &[VS_REFERENCE]),
     ("CALIBRATION_TABLE", &[CALIBRATION_TABLE]),
     ("CALIBRATION_NOISE", &[CALIBRATION_NOISE]),
+    ("FINITE_SIZE_DIAMETERS_UM", &FINITE_SIZE_DIAMETERS_UM),
     ("FINITE_SIZE_DIAMETER", &[FINITE_SIZE_DIAMETER]),
     ("STOCHASTIC_EFFECTIVE", &[STOCHASTIC_EFFECTIVE]),
     ("STOCHASTIC_NOMINAL", &[STOCHASTIC_NOMINAL]),
@@ -150,6 +176,18 @@ pub fn shell_script() -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn wall_model_scenes_are_sec3_or_sec4_scenes() {
+        for dir in WALL_MODELS_SCENES {
+            assert!(dir.starts_with(SEC3) || dir.starts_with(SEC4), "{dir}");
+            assert!(
+                !scene_name(dir).is_empty() && scene_name(dir) != dir,
+                "{dir}"
+            );
+        }
+        assert_eq!(scene_name("sec4-glass-steel-2d"), "glass-steel-2d");
+    }
 
     #[test]
     fn shell_names_are_unique_and_values_are_plain_words() {

@@ -11,19 +11,19 @@
 # Writes $REBOUND_RESULTS/calibration/; `rebound report` turns it into a REPORT.md section.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-C=$OUT/calibration
+C=$OUT/$P_CALIBRATION
 mkdir -p "$C/cases"
 stage_start "Calibration: escape table"
 if [ "$QUICK" = 1 ]; then
-  run calibrate --case calibration/aniso.toml --particles 2000 --out "$C/table"
+  run calibrate --case calibration/aniso.toml --particles 2000 --out "$C/$P_CALIBRATION_TABLE"
 else
-  run calibrate --case calibration/aniso.toml --out "$C/table"
-  if cmp -s "$C/table/escape_table.csv" configs/calibration/aniso-escape.csv; then
-    echo "shipped table: byte-identical" > "$C/table/shipped.txt"
+  run calibrate --case calibration/aniso.toml --out "$C/$P_CALIBRATION_TABLE"
+  if cmp -s "$C/$P_CALIBRATION_TABLE/escape_table.csv" configs/calibration/aniso-escape.csv; then
+    echo "shipped table: byte-identical" > "$C/$P_CALIBRATION_TABLE/shipped.txt"
   else
-    echo "shipped table: DIFFERENT from configs/calibration/aniso-escape.csv" > "$C/table/shipped.txt"
+    echo "shipped table: DIFFERENT from configs/calibration/aniso-escape.csv" > "$C/$P_CALIBRATION_TABLE/shipped.txt"
   fi
-  cat "$C/table/shipped.txt"
+  cat "$C/$P_CALIBRATION_TABLE/shipped.txt"
 fi
 stage_end
 N=$(particles 1000000 2000)
@@ -31,12 +31,12 @@ SCENES="cases/aniso cases/aniso-rev cases/glass-steel cases/glass-steel-2d cases
 for s in $SCENES; do
   scene=$(basename "$s")
   stage_start "Calibration: $scene"
-  det="$C/$scene/deterministic"
+  det="$C/$scene/$P_DETERMINISTIC"
   run deterministic --case "$s.toml" --particles "$N" --out "$det"
   # The deterministic run's own noise: the same scene on another surface (another seed),
   # compared with the first; a model is within the noise when it is no farther than this.
-  run deterministic --case "$s.toml" --particles "$N" --seed 7 --out "$C/$scene/noise/deterministic"
-  run compare --a "$det" --b "$C/$scene/noise/deterministic" --out "$C/$scene/noise/compare"
+  run deterministic --case "$s.toml" --particles "$N" --seed 7 --out "$C/$scene/$P_CALIBRATION_NOISE/$P_DETERMINISTIC"
+  run compare --a "$det" --b "$C/$scene/$P_CALIBRATION_NOISE/$P_DETERMINISTIC" --out "$C/$scene/$P_CALIBRATION_NOISE/$P_COMPARE"
   xi=$(awk -F' = ' '/^measured_delta_xi_deg/{print $2; exit}' "$det/run.toml")
   ze=$(awk -F' = ' '/^measured_delta_zeta_deg/{print $2; exit}' "$det/run.toml")
   [ -n "$xi" ] && [ -n "$ze" ] || { echo "calibrate.sh: no measured deviations in $det/run.toml" >&2; exit 1; }
@@ -46,8 +46,8 @@ for s in $SCENES; do
     variant_case "$s.toml" "$v" "$xi" "$ze" > "$case_file"
     grep -q "^delta_xi_deg = $xi\$" "$case_file" && grep -q "^model = \"$v\"" "$case_file" \
       || { echo "calibrate.sh: could not write $case_file" >&2; exit 1; }
-    run stochastic --case "$case_file" --particles "$N" --out "$C/$scene/$v/stochastic"
-    run compare --a "$det" --b "$C/$scene/$v/stochastic" --out "$C/$scene/$v/compare"
+    run stochastic --case "$case_file" --particles "$N" --out "$C/$scene/$v/$P_STOCHASTIC"
+    run compare --a "$det" --b "$C/$scene/$v/$P_STOCHASTIC" --out "$C/$scene/$v/$P_COMPARE"
   done
   stage_end
 done

@@ -6,6 +6,8 @@
 #   REBOUND_QUICK=1  reduced mode: few particles, small surfaces (used by the tests)
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+# The names of the directories under results/ (the P_… variables), shared with `rebound report`.
+source "$ROOT/scripts/paths.sh"
 OUT=${REBOUND_RESULTS:-$ROOT/results}
 QUICK=${REBOUND_QUICK:-0}
 if [ -z "${REBOUND_BIN:-}" ]; then

@@ -7,7 +7,7 @@
 # `rebound report` aggregates them (erosion.csv, erosion.svg, REPORT.md section).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-E=$OUT/erosion
+E=$OUT/$P_EROSION
 mkdir -p "$E/cases"
 N=$(particles 100000 1000)
 if [ "$QUICK" = 1 ]; then
@@ -29,8 +29,8 @@ for w in $WALLS; do
       configs/cases/erosion-glass-steel.toml > "$case_file"
   grep -q "delta_xi_deg = $dxi" "$case_file" || { echo "erosion.sh: could not write $case_file" >&2; exit 1; }
   stage_start "Erosion $name: deterministic + stochastic"
-  run deterministic --case "$case_file" --particles "$N" --out "$E/$name/deterministic"
-  run stochastic --case "$case_file" --particles "$N" --out "$E/$name/stochastic"
+  run deterministic --case "$case_file" --particles "$N" --out "$E/$name/$P_DETERMINISTIC"
+  run stochastic --case "$case_file" --particles "$N" --out "$E/$name/$P_STOCHASTIC"
   stage_end
 done
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "erosion"

@@ -7,10 +7,10 @@
 # `rebound report` aggregates them (finite_size.csv, REPORT.md section).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-F=$OUT/finite-size
+F=$OUT/$P_FINITE_SIZE
 mkdir -p "$F/cases"
 N=$(particles 100000 2000)
-for d in 50 100 250 500; do
+for d in $P_FINITE_SIZE_DIAMETERS_UM; do
   stage_start "Finite size D = $d um"
   sphere="$F/cases/d$d.toml"
   sed -e "s/^name = .*/name = \"finite-size-d$d\"/" -e "s/^diameter_um = .*/diameter_um = $d.0/" \
@@ -19,11 +19,12 @@ for d in 50 100 250 500; do
   sed -e "s/^effective_for_diameter = true$/effective_for_diameter = false/" "$sphere" > "$nominal"
   grep -q "diameter_um = $d.0" "$sphere" && grep -q "effective_for_diameter = false" "$nominal" \
     || { echo "finite-size.sh: could not write the cases" >&2; exit 1; }
-  run deterministic --case "$sphere" --particles "$N" --out "$F/d$d/deterministic"
-  run stochastic --case "$sphere" --particles "$N" --out "$F/d$d/stochastic-effective"
-  run stochastic --case "$nominal" --particles "$N" --out "$F/d$d/stochastic-nominal"
-  run compare --a "$F/d$d/deterministic" --b "$F/d$d/stochastic-effective" --out "$F/d$d/compare-effective"
-  run compare --a "$F/d$d/deterministic" --b "$F/d$d/stochastic-nominal" --out "$F/d$d/compare-nominal"
+  D=$F/$P_FINITE_SIZE_DIAMETER$d
+  run deterministic --case "$sphere" --particles "$N" --out "$D/$P_DETERMINISTIC"
+  run stochastic --case "$sphere" --particles "$N" --out "$D/$P_STOCHASTIC_EFFECTIVE"
+  run stochastic --case "$nominal" --particles "$N" --out "$D/$P_STOCHASTIC_NOMINAL"
+  run compare --a "$D/$P_DETERMINISTIC" --b "$D/$P_STOCHASTIC_EFFECTIVE" --out "$D/$P_COMPARE_EFFECTIVE"
+  run compare --a "$D/$P_DETERMINISTIC" --b "$D/$P_STOCHASTIC_NOMINAL" --out "$D/$P_COMPARE_NOMINAL"
   stage_end
 done
 # Grid convergence of the sphere's centre surface (its kinks): D = 100 µm at three spacings.
@@ -34,7 +35,7 @@ for spc in 4 8 16; do
       -e "s/^contact = \"sphere\"$/contact = \"sphere\"\nspacing_per_corr_length = $spc.0\nside_per_corr_length = 40.0/" \
       configs/cases/glass-steel-sphere.toml > "$c"
   grep -q "spacing_per_corr_length = $spc.0" "$c" || { echo "finite-size.sh: could not write $c" >&2; exit 1; }
-  run deterministic --case "$c" --particles "$N" --out "$F/grid-s$spc"
+  run deterministic --case "$c" --particles "$N" --out "$F/$P_FINITE_SIZE_GRID$spc"
 done
 stage_end
 
@@ -53,6 +54,6 @@ corr_length_z_um = 4.0
 [stats]
 diameter_um = [$DS]
 TOML
-run surface --case "$F/cases/law.toml" --out "$F/law"
+run surface --case "$F/cases/law.toml" --out "$F/$P_FINITE_SIZE_LAW"
 stage_end
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "finite size"

@@ -3,11 +3,12 @@
 # Writes into $REBOUND_RESULTS/hu2021/. Safe to re-run.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-H=$OUT/hu2021
+H=$OUT/$P_HU2021
 mkdir -p "$H"
-for fig in hu-fig4 hu-fig6 hu-fig8 hu-fig9 hu-fig10 hu-fig10b hu-fig11 hu-fig11b hu-fig12; do
-  stage_start "$fig"
-  run force-sweep --case "cases/$fig.toml" --out "$H/${fig#hu-}"
+# One run per figure, from configs/cases/hu-<figure>.toml.
+for fig in $P_HU2021_FIGS; do
+  stage_start "hu-$fig"
+  run force-sweep --case "cases/hu-$fig.toml" --out "$H/$fig"
   stage_end
 done
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "Hu et al."

@@ -3,7 +3,7 @@
 # Writes into $REBOUND_RESULTS/radenkovic2021/. Safe to re-run: every output is rewritten.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-R=$OUT/radenkovic2021
+R=$OUT/$P_RADENKOVIC2021
 mkdir -p "$R"
 
 # --- Table 1 and Fig. 1: the paper's surface (N = 5001, L = 5 mm) -----------------------
@@ -22,18 +22,18 @@ corr_length_z_um = 4.0
 [stats]
 beta_star_deg = [0.0, 30.0, 60.0, 90.0]
 TOML
-  run surface --case "$R/cases/table1-quick.toml" --out "$R/table1"
+  run surface --case "$R/cases/table1-quick.toml" --out "$R/$P_TABLE1"
 else
-  run surface --case cases/table1.toml --out "$R/table1"
+  run surface --case cases/table1.toml --out "$R/$P_TABLE1"
 fi
 stage_end
 
 # --- Fig. 4: rms slope and Δξ, Δζ against h/c_L -------------------------------------------
 stage_start "Fig. 4 (surface sweep)"
-mkdir -p "$R/fig4/cases"
+mkdir -p "$R/$P_FIG4/cases"
 if [ "$QUICK" = 1 ]; then NODES=256; LEN=256.0; HS="0.2 0.8"; else NODES=2048; LEN=1024.0; HS="0.05 0.1 0.2 0.3 0.4 0.5 0.6 0.8 1.0"; fi
 for h in $HS; do
-  cat > "$R/fig4/cases/h$h.toml" <<TOML
+  cat > "$R/$P_FIG4/cases/h$h.toml" <<TOML
 name = "fig4-h$h"
 seed = 4
 [surface]
@@ -43,7 +43,7 @@ rms_height_um = $h
 corr_length_x_um = 8.0
 corr_length_z_um = 4.0
 TOML
-  run surface --case "$R/fig4/cases/h$h.toml" --out "$R/fig4/h$h"
+  run surface --case "$R/$P_FIG4/cases/h$h.toml" --out "$R/$P_FIG4/$P_FIG4_RUN$h"
 done
 stage_end
 
@@ -51,11 +51,12 @@ stage_end
 N3=$(particles 100000 2000)
 for wall in aniso aniso-rev; do
   stage_start "Sec. 3 $wall: deterministic"
-  run deterministic --case "cases/$wall.toml" --particles "$N3" --out "$R/sec3-$wall/deterministic"
+  D=$R/$P_SEC3$wall
+  run deterministic --case "cases/$wall.toml" --particles "$N3" --out "$D/$P_DETERMINISTIC"
   stage_end
   stage_start "Sec. 3 $wall: stochastic + compare"
-  run stochastic --case "cases/$wall.toml" --particles "$N3" --out "$R/sec3-$wall/stochastic"
-  run compare --a "$R/sec3-$wall/deterministic" --b "$R/sec3-$wall/stochastic" --out "$R/sec3-$wall/compare"
+  run stochastic --case "cases/$wall.toml" --particles "$N3" --out "$D/$P_STOCHASTIC"
+  run compare --a "$D/$P_DETERMINISTIC" --b "$D/$P_STOCHASTIC" --out "$D/$P_COMPARE"
   stage_end
 done
 
@@ -64,9 +65,10 @@ N4=$(particles 100000 2000)
 for scene in glass-steel-2d glass-steel-iso glass-steel glass-steel-fig16 glass-steel-fig16-2d glass-steel-fig17 glass-steel-fig17-2d; do
   [ -f "configs/cases/$scene.toml" ] || { echo "missing configs/cases/$scene.toml" >&2; exit 1; }
   stage_start "Sec. 4 $scene"
-  run deterministic --case "cases/$scene.toml" --particles "$N4" --out "$R/sec4-$scene/deterministic"
-  run stochastic --case "cases/$scene.toml" --particles "$N4" --out "$R/sec4-$scene/stochastic"
-  run compare --a "$R/sec4-$scene/deterministic" --b "$R/sec4-$scene/stochastic" --out "$R/sec4-$scene/compare"
+  D=$R/$P_SEC4$scene
+  run deterministic --case "cases/$scene.toml" --particles "$N4" --out "$D/$P_DETERMINISTIC"
+  run stochastic --case "cases/$scene.toml" --particles "$N4" --out "$D/$P_STOCHASTIC"
+  run compare --a "$D/$P_DETERMINISTIC" --b "$D/$P_STOCHASTIC" --out "$D/$P_COMPARE"
   stage_end
 done
 

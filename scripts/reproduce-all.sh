@@ -24,9 +24,9 @@ if [ -s "$BEFORE" ]; then
     echo "byte-identical after re-running with the same seeds: $((total - changed))"
     echo "different: $changed"
     sed 's/^/  /' "$OUT/.changed"
-  } > "$OUT/reproducibility.txt"
+  } > "$OUT/$P_REPRODUCIBILITY"
   rm -f "$OUT/.changed"
-  cat "$OUT/reproducibility.txt"
+  cat "$OUT/$P_REPRODUCIBILITY"
 fi
 echo "=== report"
 run report --results "$OUT"

@@ -5,7 +5,7 @@
 # Writes into $REBOUND_RESULTS/speed-vs-error/. Safe to re-run.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-S=$OUT/speed-vs-error
+S=$OUT/$P_SPEED_VS_ERROR
 mkdir -p "$S/cases"
 
 case_file() { # spacing_per_corr_length -> case path
@@ -33,29 +33,29 @@ if [ "$QUICK" = 1 ]; then REF_N=4000; REF_S=8; COUNTS="1000 2000"; SPACINGS="4 8
 else REF_N=1000000; REF_S=16; COUNTS="1000 10000 100000 1000000"; SPACINGS="4 8 16"; TARGETS="0.1 0.05 0.02 0.01"; CAP=10000000; fi
 
 stage_start "speed-vs-error: reference"
-run deterministic --case "$(case_file $REF_S)" --particles "$REF_N" --seed 99 --out "$S/reference"
+run deterministic --case "$(case_file $REF_S)" --particles "$REF_N" --seed 99 --out "$S/$P_SPEED_REFERENCE"
 stage_end
 
 stage_start "speed-vs-error: particle counts"
 for n in $COUNTS; do
-  run deterministic --case "$(case_file 8)" --particles "$n" --out "$S/det-n$n-s8"
-  run compare --a "$S/reference" --b "$S/det-n$n-s8" --out "$S/det-n$n-s8/vs-reference" --label-a REF --label-b DS
+  run deterministic --case "$(case_file 8)" --particles "$n" --out "$S/${P_SPEED_DETERMINISTIC}n$n-s8"
+  run compare --a "$S/$P_SPEED_REFERENCE" --b "$S/${P_SPEED_DETERMINISTIC}n$n-s8" --out "$S/${P_SPEED_DETERMINISTIC}n$n-s8/$P_VS_REFERENCE" --label-a REF --label-b DS
 done
 stage_end
 
 stage_start "speed-vs-error: grid spacings"
 for s in $SPACINGS; do
   n=$(particles 100000 2000)
-  [ -d "$S/det-n$n-s$s/vs-reference" ] && [ "$s" = 8 ] && continue
-  run deterministic --case "$(case_file "$s")" --particles "$n" --out "$S/det-n$n-s$s"
-  run compare --a "$S/reference" --b "$S/det-n$n-s$s" --out "$S/det-n$n-s$s/vs-reference" --label-a REF --label-b DS
+  [ -d "$S/${P_SPEED_DETERMINISTIC}n$n-s$s/$P_VS_REFERENCE" ] && [ "$s" = 8 ] && continue
+  run deterministic --case "$(case_file "$s")" --particles "$n" --out "$S/${P_SPEED_DETERMINISTIC}n$n-s$s"
+  run compare --a "$S/$P_SPEED_REFERENCE" --b "$S/${P_SPEED_DETERMINISTIC}n$n-s$s" --out "$S/${P_SPEED_DETERMINISTIC}n$n-s$s/$P_VS_REFERENCE" --label-a REF --label-b DS
 done
 stage_end
 
 stage_start "speed-vs-error: stochastic model"
 for n in $COUNTS; do
-  run stochastic --case "$(case_file 8)" --particles "$n" --out "$S/sm-n$n"
-  run compare --a "$S/reference" --b "$S/sm-n$n" --out "$S/sm-n$n/vs-reference" --label-a REF --label-b SM
+  run stochastic --case "$(case_file 8)" --particles "$n" --out "$S/${P_SPEED_STOCHASTIC}n$n"
+  run compare --a "$S/$P_SPEED_REFERENCE" --b "$S/${P_SPEED_STOCHASTIC}n$n" --out "$S/${P_SPEED_STOCHASTIC}n$n/$P_VS_REFERENCE" --label-a REF --label-b SM
 done
 stage_end
 
@@ -63,10 +63,10 @@ stage_end
 # mean α⁺ and mean β⁺ − β⁻ reach the target (at most CAP particles per condition).
 stage_start "speed-vs-error: target standard errors"
 for t in $TARGETS; do
-  run deterministic --case "$(case_file 8)" --target-se "$t" --particles "$CAP" --out "$S/det-t$t-s8"
-  run compare --a "$S/reference" --b "$S/det-t$t-s8" --out "$S/det-t$t-s8/vs-reference" --label-a REF --label-b DS
-  run stochastic --case "$(case_file 8)" --target-se "$t" --particles "$CAP" --out "$S/sm-t$t"
-  run compare --a "$S/reference" --b "$S/sm-t$t" --out "$S/sm-t$t/vs-reference" --label-a REF --label-b SM
+  run deterministic --case "$(case_file 8)" --target-se "$t" --particles "$CAP" --out "$S/${P_SPEED_DETERMINISTIC}t$t-s8"
+  run compare --a "$S/$P_SPEED_REFERENCE" --b "$S/${P_SPEED_DETERMINISTIC}t$t-s8" --out "$S/${P_SPEED_DETERMINISTIC}t$t-s8/$P_VS_REFERENCE" --label-a REF --label-b DS
+  run stochastic --case "$(case_file 8)" --target-se "$t" --particles "$CAP" --out "$S/${P_SPEED_STOCHASTIC}t$t"
+  run compare --a "$S/$P_SPEED_REFERENCE" --b "$S/${P_SPEED_STOCHASTIC}t$t" --out "$S/${P_SPEED_STOCHASTIC}t$t/$P_VS_REFERENCE" --label-a REF --label-b SM
 done
 stage_end
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "speed vs error"

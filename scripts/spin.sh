@@ -6,7 +6,7 @@
 # aggregates them (spin.csv, spin.svg, REPORT.md section).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-S=$OUT/spin
+S=$OUT/$P_SPIN
 mkdir -p "$S/cases"
 N=$(particles 50000 1000)
 if [ "$QUICK" = 1 ]; then VALUES="-20000 0 20000"; else VALUES="-40000 -20000 -10000 -5000 0 5000 10000 20000 40000"; fi
@@ -34,8 +34,8 @@ diameter_um = 500.0
 model = "sommerfeld-huber"
 preset = "glass-steel"
 TOML
-    run deterministic --case "$c" --out "$S/$axis$w/deterministic"
-    run stochastic --case "$c" --out "$S/$axis$w/stochastic"
+    run deterministic --case "$c" --out "$S/$axis$w/$P_DETERMINISTIC"
+    run stochastic --case "$c" --out "$S/$axis$w/$P_STOCHASTIC"
   done
 done
 stage_end

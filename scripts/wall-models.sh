@@ -7,15 +7,16 @@
 # aggregates them into wall_models.csv and a REPORT.md table.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
-W=$OUT/wall-models
-R=$OUT/radenkovic2021
+W=$OUT/$P_WALL_MODELS
+R=$OUT/$P_RADENKOVIC2021
 mkdir -p "$W/cases"
 N=$(particles 100000 2000)
 VARIANTS="radenkovic-simonin-2021 sommerfeld-huber-1999 gaussian-angle gaussian-tilt normal-perturbation calibrated"
-SCENES="sec3:aniso sec3:aniso-rev sec4:glass-steel-2d sec4:glass-steel-iso sec4:glass-steel sec4:glass-steel-fig16 sec4:glass-steel-fig16-2d sec4:glass-steel-fig17 sec4:glass-steel-fig17-2d"
-for s in $SCENES; do
-  IFS=: read -r sec scene <<< "$s"
-  det="$R/$sec-$scene/deterministic"
+# The scenes are directories under $R (sec3-aniso, …); a scene's name drops the prefix.
+for sdir in $P_WALL_MODELS_SCENES; do
+  scene=${sdir#"$P_SEC3"}
+  scene=${scene#"$P_SEC4"}
+  det="$R/$sdir/$P_DETERMINISTIC"
   stage_start "Wall models $scene"
   if [ ! -f "$det/summary.csv" ] || [ "$(awk -F, 'NR==2{print $5}' "$det/summary.csv")" -lt "$((N / 2))" ]; then
     run deterministic --case "cases/$scene.toml" --particles "$N" --out "$det"
@@ -24,8 +25,8 @@ for s in $SCENES; do
     case_file="$W/cases/$scene-$v.toml"
     variant_case "cases/$scene.toml" "$v" > "$case_file"
     grep -q "model = \"$v\"" "$case_file" || { echo "wall-models.sh: could not write $case_file" >&2; exit 1; }
-    run stochastic --case "$case_file" --particles "$N" --out "$W/$scene/$v/stochastic"
-    run compare --a "$det" --b "$W/$scene/$v/stochastic" --out "$W/$scene/$v/compare"
+    run stochastic --case "$case_file" --particles "$N" --out "$W/$scene/$v/$P_STOCHASTIC"
+    run compare --a "$det" --b "$W/$scene/$v/$P_STOCHASTIC" --out "$W/$scene/$v/$P_COMPARE"
   done
   stage_end
 done

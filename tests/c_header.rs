@@ -1,27 +1,28 @@
 //! `include/roughwall.h` is what cbindgen generates from `src/ffi.rs` (with `cbindgen.toml`),
 //! so the C header and the Rust declarations cannot drift. After changing `src/ffi.rs`,
-//! regenerate it with `ROUGHWALL_BLESS=1 cargo test --test c_header`.
+//! regenerate it with `ROUGHWALL_BLESS=1 cargo test --test integration c_header`.
+
+use crate::common::repo_root;
 
 #[test]
 fn the_header_is_what_cbindgen_generates_from_the_ffi_module() {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let config =
-        cbindgen::Config::from_file(format!("{root}/cbindgen.toml")).expect("cbindgen.toml");
+    let root = repo_root();
+    let config = cbindgen::Config::from_file(root.join("cbindgen.toml")).expect("cbindgen.toml");
     let mut generated = Vec::new();
     cbindgen::Builder::new()
         .with_config(config)
-        .with_src(format!("{root}/src/ffi.rs"))
+        .with_src(root.join("src/ffi.rs"))
         .generate()
         .expect("cbindgen parses src/ffi.rs")
         .write(&mut generated);
-    let path = format!("{root}/include/roughwall.h");
+    let path = root.join("include/roughwall.h");
     if std::env::var_os("ROUGHWALL_BLESS").is_some() {
         std::fs::write(&path, &generated).unwrap();
     }
     let committed = std::fs::read(&path).unwrap_or_default();
     assert!(
         committed == generated,
-        "include/roughwall.h differs from what cbindgen generates from src/ffi.rs; regenerate: ROUGHWALL_BLESS=1 cargo test --test c_header"
+        "include/roughwall.h differs from what cbindgen generates from src/ffi.rs; regenerate: ROUGHWALL_BLESS=1 cargo test --test integration c_header"
     );
     let text = String::from_utf8(generated).unwrap();
     for name in [

@@ -6,8 +6,7 @@
 //!   angles whose PDFs match `rebound stochastic` on the same scene within KS 0.01.
 //! * A single call starts no thread (`tests/c/threads.c`).
 
-mod common;
-use common::*;
+use crate::common::*;
 use roughwall::case::CollisionSection;
 use roughwall::compare::{distances, BinnedPdf};
 use roughwall::output::schema::read_run;
@@ -57,8 +56,8 @@ fn run(cmd: &Path, args: &[&str]) -> String {
 #[test]
 fn the_c_example_gives_the_rust_rebounds_and_the_stochastic_statistics() {
     ensure_tools(&[("cc", "gcc")]);
-    let tmp = tempfile::tempdir().unwrap();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let tmp = Dir::new();
+    let root = repo_root();
     let exe = tmp.path().join("rotated_scene");
     build_with_roughwall(
         "cc",
@@ -161,8 +160,8 @@ preset = "glass-steel"
 #[test]
 fn a_single_call_starts_no_thread() {
     ensure_tools(&[("cc", "gcc")]);
-    let tmp = tempfile::tempdir().unwrap();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let tmp = Dir::new();
+    let root = repo_root();
     let exe = tmp.path().join("threads");
     build_with_roughwall(
         "cc",
@@ -180,8 +179,8 @@ fn a_single_call_starts_no_thread() {
 #[test]
 fn the_fortran_example_gives_the_rust_rebounds() {
     ensure_tools(&[("gfortran", "gfortran")]);
-    let tmp = tempfile::tempdir().unwrap();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let tmp = Dir::new();
+    let root = repo_root();
     let exe = tmp.path().join("hits");
     let module_dir = tmp.path().to_str().unwrap().to_string();
     build_with_roughwall(

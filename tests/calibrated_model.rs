@@ -1,7 +1,7 @@
 //! The `calibrated` wall model: `rebound calibrate` writes an escape table that reads back
 //! equal to its source run, the stochastic model takes it by case key (or the built-in one),
 //! and malformed or mismatched tables are one-line errors.
-mod common;
+use crate::common;
 
 use roughwall::stochastic::escape_table::{EscapeTable, Stage};
 use std::path::Path;

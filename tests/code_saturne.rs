@@ -9,12 +9,10 @@
 //!   β⁻ = 60° in the wall's frame) rebound with angles whose PDFs match `rebound
 //!   stochastic` on the same scene within KS 0.03.
 
-mod common;
-use common::*;
+use crate::common::*;
 use roughwall::compare::{distances, BinnedPdf};
 use roughwall::output::schema::read_run;
 use roughwall::tally::histogram::Histogram;
-use std::path::Path;
 use std::process::Command;
 
 /// `install.sh` checks and installs under the lock that `ensure_tools` takes around
@@ -22,7 +20,7 @@ use std::process::Command;
 #[test]
 fn install_sh_waits_for_the_apt_lock() {
     use std::io::BufRead;
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = repo_root();
     let hold = std::time::Duration::from_secs(3);
     let mut holder = Command::new("flock")
         .args(["/tmp/roughwall-apt.lock", "sh", "-c"])
@@ -55,7 +53,7 @@ fn install_sh_waits_for_the_apt_lock() {
 
 #[test]
 fn code_saturne_calls_roughwall_at_every_wall_hit() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = repo_root();
     let tmp = tempfile::Builder::new()
         .prefix("cs")
         .tempdir_in("/tmp")

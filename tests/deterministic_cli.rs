@@ -1,20 +1,8 @@
 //! `rebound deterministic` through the binary: bad input is a one-line error naming
 //! the key or file, exit status 2, and nothing is written.
 
+use crate::common::*;
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn rebound(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_rebound"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 const GOOD: &str = r#"
 name = "t"
@@ -38,16 +26,14 @@ fn case_with(dir: &Path, replace: &[(&str, &str)]) -> PathBuf {
         assert!(text.contains(a), "{a}");
         text = text.replace(a, b);
     }
-    let p = dir.join("case.toml");
-    std::fs::write(&p, text).unwrap();
-    p
+    write_case(dir, "case.toml", &text)
 }
 
 /// Runs `deterministic` on a modified case and checks the refusal.
 fn refuses(replace: &[(&str, &str)], extra: &[&str], needle: &str) {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     let case = case_with(dir.path(), replace);
-    let out = dir.path().join("out");
+    let out = dir.join("out");
     let mut args = vec![
         "deterministic",
         "--case",
@@ -56,10 +42,7 @@ fn refuses(replace: &[(&str, &str)], extra: &[&str], needle: &str) {
         out.to_str().unwrap(),
     ];
     args.extend_from_slice(extra);
-    let (code, _, err) = rebound(&args);
-    assert_eq!(code, 2, "{replace:?} {extra:?}: {err}");
-    assert_eq!(err.trim().lines().count(), 1, "not one line: {err}");
-    assert!(err.contains(needle), "`{needle}` not in: {err}");
+    rebound(&args).refused(needle);
     assert!(
         !out.exists(),
         "something was written for {replace:?} {extra:?}"
@@ -143,34 +126,32 @@ fn bad_deterministic_section() {
 
 #[test]
 fn bad_surface_files() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     let missing = dir.path().join("no-such-surface.bin");
     refuses(
         &[],
         &["--surface", missing.to_str().unwrap()],
         "no-such-surface.bin",
     );
-    let garbage = dir.path().join("garbage.bin");
+    let garbage = dir.join("garbage.bin");
     std::fs::write(&garbage, b"this is not a height field at all, just text\n").unwrap();
     refuses(
         &[],
         &["--surface", garbage.to_str().unwrap()],
         "garbage.bin",
     );
-    let empty = dir.path().join("empty.bin");
+    let empty = dir.join("empty.bin");
     std::fs::write(&empty, b"").unwrap();
     refuses(&[], &["--surface", empty.to_str().unwrap()], "empty.bin");
 }
 
 fn run_ok(args: &[&str]) -> String {
-    let (code, _, err) = rebound(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    err
+    rebound(args).ok().stderr
 }
 
 #[test]
 fn outputs_are_byte_identical_for_one_and_two_threads() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     let case = case_with(
         dir.path(),
         &[(
@@ -198,15 +179,13 @@ fn outputs_are_byte_identical_for_one_and_two_threads() {
         let b = std::fs::read(outs[1].join(f)).unwrap();
         assert!(a == b, "{f} differs between --threads 1 and 2");
     }
-    let summary = std::fs::read_to_string(outs[0].join("summary.csv")).unwrap();
-    let rows: Vec<&str> = summary.lines().collect();
-    assert_eq!(rows.len(), 3);
-    let lost = rows[0].split(',').position(|c| c == "lost").unwrap();
-    for row in &rows[1..] {
-        assert_eq!(row.split(',').nth(lost), Some("0"), "lost must be 0: {row}");
+    let summary = Csv::read(&outs[0].join("summary.csv"));
+    assert_eq!(summary.rows.len(), 2);
+    for row in summary.records() {
+        assert_eq!(&row["lost"], "0", "lost must be 0: {row:?}");
         assert!(
-            !row.contains(",,") && !row.ends_with(','),
-            "empty cell: {row}"
+            row.cells().iter().all(|c| !c.is_empty()),
+            "empty cell: {row:?}"
         );
     }
     let manifest = std::fs::read_to_string(outs[0].join("run.toml")).unwrap();
@@ -231,7 +210,7 @@ fn outputs_are_byte_identical_for_one_and_two_threads() {
 
 #[test]
 fn a_saved_surface_is_reused_and_a_damaged_one_refused() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Dir::new();
     let surf_case = dir.path().join("surf.toml");
     std::fs::write(
         &surf_case,

@@ -1,8 +1,7 @@
 //! Hard cases of physics notes §9 for the deterministic tracker, the shipped case
 //! files, and thread-count independence of the outputs.
 
-mod deterministic_support;
-use deterministic_support::*;
+use crate::common::deterministic::*;
 use roughwall::case::SpeedLaw;
 use roughwall::collision::{CollisionLaw, ShParams};
 use roughwall::deterministic::{ConditionRun, Tracker};

@@ -1,9 +1,8 @@
-//! Paper-scale runs (ignored in CI): `cargo test --release --test deterministic_paper
-//! -- --ignored --nocapture` prints the Sec. 3 statistics of both walls on the surfaces
+//! Paper-scale runs (ignored in CI): `cargo test --release --test integration
+//! deterministic_paper -- --ignored --nocapture` prints the Sec. 3 statistics of both walls on the surfaces
 //! `deterministic` chooses, at 10⁵ particles per condition.
 
-mod deterministic_support;
-use deterministic_support::*;
+use crate::common::deterministic::*;
 use roughwall::collision::CollisionLaw;
 use roughwall::deterministic::Tracker;
 use roughwall::tally::Quantity;

@@ -2,8 +2,7 @@
 //! invariants, symmetries and the paper's findings on the two walls of Sec. 3.
 //! CI-sized: walls of ~40 correlation lengths, 10⁴ particles per condition.
 
-mod deterministic_support;
-use deterministic_support::*;
+use crate::common::deterministic::*;
 use roughwall::collision::{CollisionLaw, ShParams};
 use roughwall::deterministic::{ConditionRun, Tracker};
 use roughwall::wall::delta_gamma;

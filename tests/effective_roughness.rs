@@ -2,8 +2,7 @@
 //! `rebound surface` with `[stats] diameter_um` writes `effective_roughness.csv` and its
 //! figure, from the centre surfaces of the spheres (paraboloid dilation).
 
-mod common;
-use common::*;
+use crate::common::*;
 
 /// The surface of the issue's own brute-force check: h = 0.37 µm, Δξ = 3.8°, Δζ = 7.5°
 /// (c_Lz ≈ 4 µm), L = 512 µm.
@@ -21,7 +20,7 @@ diameter_um = [0.001, 5.0, 50.0, 100.0, 500.0]
 
 #[test]
 fn spheres_see_a_smoother_wall_as_the_issue_measured() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "c.toml", CASE);
     let out = run_case("surface", &case, &tmp.path().join("out"), &[]);
     let c = Csv::read(&out.join("effective_roughness.csv"));
@@ -80,7 +79,7 @@ fn spheres_see_a_smoother_wall_as_the_issue_measured() {
 
 #[test]
 fn diameters_beyond_the_side_or_out_of_range_are_refused() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     for (list, needle) in [
         ("[600.0]", "at most the surface side"),
         ("[-1.0]", "stats.diameter_um"),

@@ -2,8 +2,7 @@
 //! appended columns, the local impact-angle PDFs, the hard cases (normal and grazing
 //! incidence), the refusals, and byte-identical outputs for any thread count and shard split.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::{Path, PathBuf};
 
 const BASE: &str = r#"name = "erosion"
@@ -34,7 +33,7 @@ fn run(dir: &Path, command: &str, case: &Path, name: &str, extra: &[&str]) -> Pa
 
 #[test]
 fn without_erosion_nothing_is_computed_and_the_outputs_do_not_change() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let plain = write_case(tmp.path(), "plain.toml", BASE);
     let eroding = write_case(tmp.path(), "eroding.toml", &format!("{BASE}{FINNIE}"));
     for command in ["stochastic", "deterministic"] {
@@ -81,7 +80,7 @@ fn without_erosion_nothing_is_computed_and_the_outputs_do_not_change() {
 
 #[test]
 fn erosion_columns_pdfs_and_their_meaning() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "c.toml", &format!("{BASE}{FINNIE}"));
     let d = run(tmp.path(), "deterministic", &case, "d", &[]);
     let s = run(tmp.path(), "stochastic", &case, "s", &[]);
@@ -155,7 +154,7 @@ fn erosion_columns_pdfs_and_their_meaning() {
 
 #[test]
 fn normal_and_grazing_incidence_give_finite_erosion() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let body = BASE
         .replace("alpha_deg = [-5.0, -30.0]", "alpha_deg = [-90.0, -0.01]")
         .replace("count = 3000", "count = 400");
@@ -187,7 +186,7 @@ fn normal_and_grazing_incidence_give_finite_erosion() {
 
 #[test]
 fn bad_erosion_input_is_refused_in_one_line() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     for (section, key) in [
         (
             "model = \"finnie\"\nflow_stress_pa = 0",
@@ -233,7 +232,7 @@ fn bad_erosion_input_is_refused_in_one_line() {
 
 #[test]
 fn erosion_outputs_are_byte_identical_across_threads_and_shards() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let body = BASE
         .replace("count = 3000", "count = 70000")
         .replace("alpha_deg = [-5.0, -30.0]", "alpha_deg = [-5.0]")

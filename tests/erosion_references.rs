@@ -11,9 +11,7 @@
 //!   test runs it, checks the committed `tests/data/dnv_pysand*.csv`, and checks
 //!   `model = "dnv"` against them to 1e-9 relative.
 
-mod common;
-
-use common::{run_case, write_case, Csv};
+use crate::common::{repo_root, run_case, write_case, Csv};
 use roughwall::erosion::dnv::{AngleDependency, Dnv};
 use roughwall::erosion::finnie::Finnie;
 use roughwall::erosion::ErosionModel;
@@ -21,7 +19,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    repo_root().to_path_buf()
 }
 
 /// Runs a reference script for real; panics with its output when it fails.

@@ -4,6 +4,8 @@ use roughwall::commands::force_sweep::{resolve, run, HEADER};
 use roughwall::error::Error;
 use std::path::{Path, PathBuf};
 
+use crate::common::Csv;
+
 fn args(case: Option<PathBuf>, out: &Path) -> ForceSweepArgs {
     ForceSweepArgs {
         common: CommonArgs {
@@ -24,32 +26,49 @@ fn default_run_is_fig6() {
     let dir = tempfile::tempdir().unwrap();
     run(&args(None, dir.path())).unwrap();
     let csv = read(&dir.path().join("force_sweep.csv"));
-    let mut lines = csv.lines();
-    assert_eq!(lines.next().unwrap(), HEADER.join(","));
+    let csv = Csv::parse(&csv);
+    assert_eq!(csv.header, HEADER.to_vec());
     assert_eq!(HEADER.join(","), "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s");
-    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    assert_eq!(rows.len(), 3 * 3 * 91);
-    for r in &rows {
-        assert_eq!(r.len(), 11);
+    assert_eq!(csv.rows.len(), 3 * 3 * 91);
+    for r in csv.records() {
+        assert_eq!(r.cells().len(), 11);
         assert_eq!(
-            (r[3], r[4], r[5], r[6], r[7]),
+            (
+                &r["u_n_m_s"],
+                &r["diameter_um"],
+                &r["density_kg_m3"],
+                &r["youngs_pa"],
+                &r["poisson"]
+            ),
             ("0.0457", "2.45", "2500", "64000000000", "0.24")
         );
-        assert!(r[8].parse::<f64>().unwrap() > 0.0 && r[9].parse::<f64>().unwrap() > 0.0);
+        assert!(r.num("f_max_n") > 0.0 && r.num("xi") > 0.0);
         // Contact time: empty for hu2021 only.
-        assert_eq!(r[10].is_empty(), r[0] == "hu2021", "{r:?}");
+        assert_eq!(
+            r["contact_time_s"].is_empty(),
+            &r["model"] == "hu2021",
+            "{r:?}"
+        );
     }
     // ξ of hu2021 at λ = 2, β = 0 is Eq. (8)'s constant term.
-    assert!(rows
-        .iter()
-        .any(|r| r[0] == "hu2021" && r[1] == "2" && r[2] == "0" && r[9] == "0.82837"));
-    let acc = read(&dir.path().join("accuracy.csv"));
-    assert_eq!(acc.lines().count(), 1 + 6);
-    assert!(acc
-        .lines()
-        .nth(1)
-        .unwrap()
-        .starts_with("hertz-rigid,1.5,2.45,0.0457,91,0,90,"));
+    assert!(csv
+        .records()
+        .any(|r| (&r["model"], &r["lambda"], &r["beta_deg"], &r["xi"])
+            == ("hu2021", "2", "0", "0.82837")));
+    let acc = Csv::read(&dir.path().join("accuracy.csv"));
+    assert_eq!(acc.rows.len(), 6);
+    let first = acc.row(0);
+    for (column, value) in [
+        ("model", "hertz-rigid"),
+        ("lambda", "1.5"),
+        ("diameter_um", "2.45"),
+        ("u_n_m_s", "0.0457"),
+        ("points", "91"),
+        ("beta_min_deg", "0"),
+        ("beta_max_deg", "90"),
+    ] {
+        assert_eq!(&first[column], value, "{column}");
+    }
     assert!(
         read(&dir.path().join("dynamic_convergence.csv"))
             .lines()
@@ -143,10 +162,11 @@ fn zero_speed_rows() {
     run(&args(Some(case), &out)).unwrap();
     let csv = read(&out.join("force_sweep.csv"));
     assert_eq!(csv.lines().count(), 1 + 12);
-    for l in csv.lines().skip(1) {
-        let r: Vec<&str> = l.split(',').collect();
-        assert_eq!((r[8], r[10]), ("0", ""), "{l}");
-        assert!(r[9].parse::<f64>().unwrap() > 0.0);
+    let table = Csv::parse(&csv);
+    assert_eq!(table.header, HEADER.to_vec());
+    for r in table.records() {
+        assert_eq!((&r["f_max_n"], &r["contact_time_s"]), ("0", ""), "{r:?}");
+        assert!(r.num("xi") > 0.0);
     }
     assert!(!csv.to_lowercase().contains("nan"));
 }

@@ -332,7 +332,7 @@ fn shrink(kind: Kind, t: &mut Table) -> Vec<String> {
 }
 
 fn load_bases() -> Vec<Base> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("configs/cases");
+    let dir = common::repo_root().join("configs/cases");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -1386,7 +1386,7 @@ fn shorten(s: &str, n: usize) -> String {
 #[test]
 fn every_mutated_case_exits_cleanly() {
     let t0 = Instant::now();
-    let bin = PathBuf::from(env!("CARGO_BIN_EXE_rebound"));
+    let bin = common::rebound_bin().to_path_buf();
     let bases = load_bases();
     assert!(!bases.is_empty(), "no shipped cases under configs/cases");
     let mut rng = SplitMix64(SEED);

@@ -1,9 +1,7 @@
 //! Output directories are written as a whole (issue "Hard to break", items 8–10): every
 //! output path is checked before computing, a failed, killed (`kill -9`) or concurrent run
 //! never leaves `--out` mixed, and a previous result is never damaged.
-mod common;
-
-use common::{rebound, write_case, Run};
+use crate::common::{rebound, rebound_in, write_case, Run, TestCommand};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -79,20 +77,6 @@ fn names(dir: &Path) -> BTreeSet<String> {
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect()
-}
-
-/// `rebound ARGS…` run in directory `cwd`.
-fn rebound_in(cwd: &Path, args: &[&str]) -> Run {
-    let o = Command::new(env!("CARGO_BIN_EXE_rebound"))
-        .current_dir(cwd)
-        .args(args)
-        .output()
-        .unwrap();
-    Run {
-        code: o.status.code().unwrap_or(-1),
-        stdout: String::from_utf8_lossy(&o.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&o.stderr).into_owned(),
-    }
 }
 
 fn surface(case: &Path, out: &Path, seed: &str, extra: &[&str]) -> Run {
@@ -386,7 +370,7 @@ fn clock_seed() -> u64 {
 }
 
 fn spawn_stochastic(case: &Path, out: &Path, seed: &str, stderr: Stdio) -> std::process::Child {
-    Command::new(env!("CARGO_BIN_EXE_rebound"))
+    TestCommand::new()
         .args([
             "stochastic",
             "--case",
@@ -396,6 +380,7 @@ fn spawn_stochastic(case: &Path, out: &Path, seed: &str, stderr: Stdio) -> std::
             "--seed",
             seed,
         ])
+        .cmd()
         .stdout(Stdio::null())
         .stderr(stderr)
         .spawn()

@@ -2,6 +2,7 @@
 //! header, so a script cannot rot silently. Runs `scripts/reproduce-all.sh` with
 //! `REBOUND_QUICK=1` into a temporary directory, using the binary under test.
 
+use crate::common::{rebound_bin, repo_root};
 use std::path::Path;
 use std::process::Command;
 
@@ -12,12 +13,12 @@ fn header(path: &Path) -> String {
 
 #[test]
 fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = repo_root();
     let out = tempfile::tempdir().unwrap();
     let status = Command::new("bash")
         .arg(root.join("scripts/reproduce-all.sh"))
         .env("REBOUND_QUICK", "1")
-        .env("REBOUND_BIN", env!("CARGO_BIN_EXE_rebound"))
+        .env("REBOUND_BIN", rebound_bin())
         .env("REBOUND_RESULTS", out.path())
         .status()
         .unwrap();
@@ -132,4 +133,49 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         !report.contains("*Not run"),
         "a stage did not run:\n{report}"
     );
+}
+
+/// `scripts/paths.sh` (the names of the results directories, for the scripts) is what
+/// `roughwall::report::paths` generates, so the scripts and `rebound report` cannot drift.
+/// After changing `src/report/paths.rs`, regenerate it with
+/// `ROUGHWALL_BLESS=1 cargo test --test integration paths_sh`.
+#[test]
+fn paths_sh_is_generated_from_the_rust_constants() {
+    let path = repo_root().join("scripts/paths.sh");
+    let generated = roughwall::report::paths::shell_script();
+    if std::env::var_os("ROUGHWALL_BLESS").is_some() {
+        std::fs::write(&path, &generated).unwrap();
+    }
+    let committed = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        committed == generated,
+        "scripts/paths.sh differs from src/report/paths.rs; regenerate: ROUGHWALL_BLESS=1 cargo test --test integration paths_sh"
+    );
+    // Every script that writes under results/ takes its directory names from it.
+    let common = std::fs::read_to_string(repo_root().join("scripts/common.sh")).unwrap();
+    assert!(common.contains("source \"$ROOT/scripts/paths.sh\""));
+    // A variable the scripts use is one paths.sh defines (a misspelt `$P_…` would be empty).
+    let defined: std::collections::BTreeSet<String> = generated
+        .lines()
+        .filter_map(|l| l.split_once('=').map(|(n, _)| n.to_string()))
+        .collect();
+    for e in std::fs::read_dir(repo_root().join("scripts")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "sh") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&p).unwrap();
+        for (i, _) in text.match_indices("$P_").chain(text.match_indices("${P_")) {
+            let start = i + if text[i..].starts_with("${") { 2 } else { 1 };
+            let name: String = text[start..]
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            assert!(
+                defined.contains(&name),
+                "{}: ${name} is not in scripts/paths.sh",
+                p.display()
+            );
+        }
+    }
 }

@@ -2,8 +2,7 @@
 //! standard error, `--shard K/N` and `rebound merge` giving the bytes of one process,
 //! and the refusals of bad shards.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::{Path, PathBuf};
 
 /// Two conditions, counts that are not multiples of the 65 536-particle block, both models.
@@ -77,7 +76,7 @@ fn one_and_merged(dir: &Path, case: &Path, command: &str, n: u32) -> (PathBuf, P
 
 #[test]
 fn shards_merged_are_byte_identical_to_one_process_for_both_models() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "c.toml", CASE);
     for command in ["stochastic", "deterministic"] {
         let (one, merged) = one_and_merged(tmp.path(), &case, command, 3);
@@ -105,7 +104,7 @@ fn shards_merged_are_byte_identical_to_one_process_for_both_models() {
 
 #[test]
 fn summary_has_standard_errors_that_match_the_spread() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "c.toml", CASE);
     let o = out(tmp.path(), "o");
     rebound(&[
@@ -190,7 +189,7 @@ fn summary_has_standard_errors_that_match_the_spread() {
 
 #[test]
 fn a_target_error_stops_at_whole_blocks_and_is_recorded() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(
         tmp.path(),
         "c.toml",
@@ -253,7 +252,7 @@ fn a_target_error_stops_at_whole_blocks_and_is_recorded() {
 
 #[test]
 fn bad_shards_targets_and_merges_are_one_line_errors_and_write_nothing() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "c.toml", CASE);
     let c = case.to_str().unwrap();
     let never = out(tmp.path(), "never");
@@ -401,7 +400,7 @@ fn partial_version(text: &str) -> String {
 
 #[test]
 fn shards_of_another_build_are_refused_naming_the_shard_and_both_versions() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "c.toml", CASE);
     let shard = |k: u32| {
         let d = out(tmp.path(), &format!("s{k}"));

@@ -4,14 +4,14 @@
 //! dependent merge job, checks the merged CSVs byte for byte against one process and that a
 //! failing shard cancels the merge, and stops the daemons by their process ids.
 
+use crate::common::{rebound_bin, repo_root};
 use std::process::Command;
 
 #[test]
 fn four_shards_on_a_local_slurm_cluster_merge_to_the_bytes_of_one_process() {
-    let root = env!("CARGO_MANIFEST_DIR");
     let out = Command::new("bash")
-        .arg(format!("{root}/scripts/slurm/test-local-cluster.sh"))
-        .env("REBOUND_BIN", env!("CARGO_BIN_EXE_rebound"))
+        .arg(repo_root().join("scripts/slurm/test-local-cluster.sh"))
+        .env("REBOUND_BIN", rebound_bin())
         .output()
         .expect("run scripts/slurm/test-local-cluster.sh");
     let stdout = String::from_utf8_lossy(&out.stdout);

@@ -4,8 +4,7 @@
 //! its diameter, D beyond the surface side is refused, 2-D roughness stays 2-D, grazing
 //! incidence runs, and larger spheres see a smoother wall.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::path::Path;
 
 fn case(d_um: &str, extra: &str) -> String {
@@ -40,7 +39,7 @@ fn run(dir: &Path, name: &str, body: &str) -> std::path::PathBuf {
 
 #[test]
 fn a_vanishing_sphere_is_the_centre_contact_byte_for_byte() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let centre = run(tmp.path(), "centre", &case("0.001", ""));
     let sphere = run(tmp.path(), "tiny", &case("0.001", "contact = \"sphere\""));
     assert_eq!(csv_files(&centre), csv_files(&sphere));
@@ -53,7 +52,7 @@ fn a_vanishing_sphere_is_the_centre_contact_byte_for_byte() {
 
 #[test]
 fn larger_spheres_see_a_smoother_wall() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let mut last_std = f64::INFINITY;
     let mut last_dev = f64::INFINITY;
     for d in ["0.001", "50", "250"] {
@@ -84,7 +83,7 @@ fn larger_spheres_see_a_smoother_wall() {
 
 #[test]
 fn two_dimensional_roughness_stays_two_dimensional_and_grazing_runs() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let body = case("100", "contact = \"sphere\"")
         .replace("delta_zeta_deg = 7.5", "delta_zeta_deg = 0.0")
         .replace("alpha_deg = [-5.0, -25.0]", "alpha_deg = [-0.5, -25.0]")
@@ -101,7 +100,7 @@ fn two_dimensional_roughness_stays_two_dimensional_and_grazing_runs() {
 
 #[test]
 fn a_sphere_needs_its_scale_and_size_and_must_fit() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     for (body, needle) in [
         (
             case("100", "contact = \"sphere\"").replace("rms_height_um = 0.37", ""),
@@ -124,7 +123,7 @@ fn a_sphere_needs_its_scale_and_size_and_must_fit() {
 
 #[test]
 fn the_stochastic_model_takes_the_deviations_a_sphere_sees() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let body = case(
         "250",
         "contact = \"sphere\"\n[stochastic]\neffective_for_diameter = true",

@@ -4,8 +4,7 @@
 //! closed-form Sommerfeld–Huber solution says; mirror symmetry with the spin mirrored;
 //! kinetic energy (translation + rotation) never grows; 10⁵ rad/s runs.
 
-mod common;
-use common::*;
+use crate::common::*;
 use nalgebra::Vector3;
 use rand::SeedableRng;
 use rand_xoshiro::Xoshiro256PlusPlus;
@@ -49,7 +48,7 @@ fn run(dir: &std::path::Path, command: &str, name: &str, body: &str) -> std::pat
 
 #[test]
 fn zero_spin_is_todays_output_byte_for_byte() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     for command in ["stochastic", "deterministic"] {
         let a = run(tmp.path(), command, "none", &base((3.8, 7.5), ""));
         let b = run(
@@ -93,7 +92,7 @@ fn closed_form_alpha_out(omega_z: f64) -> f64 {
 
 #[test]
 fn on_a_smooth_wall_spin_acts_as_the_closed_form_says() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let u = 5.0 * 30f64.to_radians().cos();
     let r = 0.5 * D;
     for (name, spin, omega_z) in [
@@ -195,7 +194,7 @@ fn mirror_symmetry_with_the_spin_mirrored_and_no_energy_gain() {
 
 #[test]
 fn very_large_spins_run_and_bad_spins_are_refused() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let body = base(
         (3.8, 7.5),
         "spin_rad_s = [1e5, -1e5, 1e5]\nspin_std_rad_s = [1e5, 0.0, 1e5]",

@@ -1,19 +1,11 @@
 //! `rebound stochastic` through the binary: outputs, reproducibility across thread
 //! counts, Eq. (15) conversion, and the bad-input rules of issue 4.
+use crate::common::*;
 use std::path::Path;
-use std::process::Command;
 
-fn rebound(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_rebound"))
-        .args(args)
-        .output()
-        .expect("run rebound")
-}
-
-fn write_case(dir: &Path, name: &str, body: &str) -> String {
-    let p = dir.join(name);
-    std::fs::write(&p, body).unwrap();
-    p.display().to_string()
+/// Writes the case file `name` into `dir`; its path as a string.
+fn case_in(dir: &Dir, name: &str, body: &str) -> String {
+    dir.write_case(name, body).display().to_string()
 }
 
 const BASE: &str = r#"name = "t"
@@ -42,12 +34,12 @@ fn read(p: &Path) -> String {
 
 #[test]
 fn outputs_are_byte_identical_for_one_and_two_threads() {
-    let tmp = tempfile::tempdir().unwrap();
-    let case = write_case(tmp.path(), "c.toml", BASE);
+    let tmp = Dir::new();
+    let case = case_in(&tmp, "c.toml", BASE);
     let mut files = Vec::new();
     for t in ["1", "2"] {
-        let out = tmp.path().join(format!("t{t}"));
-        let o = rebound(&[
+        let out = tmp.join(format!("t{t}"));
+        rebound(&[
             "stochastic",
             "--case",
             &case,
@@ -55,8 +47,8 @@ fn outputs_are_byte_identical_for_one_and_two_threads() {
             t,
             "--out",
             out.to_str().unwrap(),
-        ]);
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        ])
+        .ok();
         files.push((read(&out.join("summary.csv")), read(&out.join("pdfs.csv"))));
     }
     assert_eq!(files[0], files[1]);
@@ -64,27 +56,24 @@ fn outputs_are_byte_identical_for_one_and_two_threads() {
 
 #[test]
 fn default_run_has_the_shared_schema_model_curve_and_figures() {
-    let tmp = tempfile::tempdir().unwrap();
-    let out = tmp.path().join("o");
-    let o = rebound(&[
+    let tmp = Dir::new();
+    let out = tmp.join("o");
+    rebound(&[
         "stochastic",
         "--particles",
         "4000",
         "--out",
         out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let summary = read(&out.join("summary.csv"));
-    let mut lines = summary.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    assert_eq!(header, roughwall::output::schema::SUMMARY_HEADER.to_vec());
-    let rows: Vec<Vec<String>> = lines
-        .map(|l| l.split(',').map(String::from).collect())
-        .collect();
+    ])
+    .ok();
+    let summary = Csv::read(&out.join("summary.csv"));
+    assert_eq!(
+        summary.header,
+        roughwall::output::schema::SUMMARY_HEADER.to_vec()
+    );
     // Built-in default: Sec. 4 scene, α⁻ ∈ {−5, −15, −25}, β⁻ ∈ {0, 60}.
-    assert_eq!(rows.len(), 6);
-    let col = |n: &str| header.iter().position(|h| *h == n).unwrap();
-    for r in &rows {
+    assert_eq!(summary.rows.len(), 6);
+    for r in summary.records() {
         for empty in [
             "mean_dbeta_first_deg",
             "std_dbeta_first_deg",
@@ -92,32 +81,30 @@ fn default_run_has_the_shared_schema_model_curve_and_figures() {
             "max_collisions",
             "lost",
         ] {
-            assert_eq!(r[col(empty)], "", "{empty}");
+            assert_eq!(&r[empty], "", "{empty}");
         }
-        let p: f64 = r[col("p_single")].parse().unwrap();
+        let p = r.num("p_single");
         assert!(p > 0.5 && p <= 1.0, "{p}");
-        assert_eq!(r[col("delta_xi_deg")], "3.8");
-        assert_eq!(r[col("delta_zeta_deg")], "7.5");
-        let speed: f64 = r[col("mean_speed_ratio")].parse().unwrap();
+        assert_eq!(&r["delta_xi_deg"], "3.8");
+        assert_eq!(&r["delta_zeta_deg"], "7.5");
+        let speed = r.num("mean_speed_ratio");
         assert!(speed > 0.0 && speed < 1.0, "{speed}");
-        assert!(!r.iter().any(|c| c.contains("NaN") || c.contains("inf")));
+        assert!(!r
+            .cells()
+            .iter()
+            .any(|c| c.contains("NaN") || c.contains("inf")));
     }
     let pdfs = read(&out.join("pdfs.csv"));
     assert!(pdfs.starts_with("alpha_in_deg,beta_in_deg,quantity,bin_lo,bin_hi,value,se\n"));
     // gamma_model integrates to ~1 (per degree, on 1° bins) for each condition.
+    let pdfs = Csv::read(&out.join("pdfs.csv"));
     for (a, b) in [("-5", "0"), ("-25", "60")] {
         let total: f64 = pdfs
-            .lines()
-            .filter(|l| l.starts_with(&format!("{a},{b},gamma_model,")))
-            .map(|l| {
-                let f: Vec<f64> = l
-                    .split(',')
-                    .skip(3)
-                    .take(3)
-                    .map(|x| x.parse().unwrap())
-                    .collect();
-                f[2] * (f[1] - f[0])
+            .records()
+            .filter(|r| {
+                (&r["alpha_in_deg"], &r["beta_in_deg"], &r["quantity"]) == (a, b, "gamma_model")
             })
+            .map(|r| r.num("value") * (r.num("bin_hi") - r.num("bin_lo")))
             .sum();
         assert!((total - 1.0).abs() < 0.02, "{a},{b}: {total}");
     }
@@ -134,10 +121,10 @@ fn default_run_has_the_shared_schema_model_curve_and_figures() {
 
 #[test]
 fn surface_parameters_are_converted_with_eq15_without_building_a_surface() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     // Table 1's surface: h = 0.37 µm, c_Lx = 12 µm, c_Lz = 4 µm → Δξ = 2.498°, Δζ = 7.495°.
-    let case = write_case(
-        tmp.path(),
+    let case = case_in(
+        &tmp,
         "s.toml",
         r#"name = "s"
 [surface]
@@ -152,38 +139,31 @@ alpha_deg = [-12.5]
 count = 1000
 "#,
     );
-    let out = tmp.path().join("o");
+    let out = tmp.join("o");
     let t = std::time::Instant::now();
-    let o = rebound(&[
+    rebound(&[
         "stochastic",
         "--case",
         &case,
         "--out",
         out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    ])
+    .ok();
     // A 5001² surface would take seconds; the model needs none.
     assert!(t.elapsed().as_secs_f64() < 5.0);
-    let s = read(&out.join("summary.csv"));
-    let row: Vec<&str> = s.lines().nth(1).unwrap().split(',').collect();
-    assert!(
-        (row[2].parse::<f64>().unwrap() - 2.498).abs() < 0.001,
-        "{}",
-        row[2]
-    );
-    assert!(
-        (row[3].parse::<f64>().unwrap() - 7.495).abs() < 0.001,
-        "{}",
-        row[3]
-    );
+    let s = Csv::read(&out.join("summary.csv"));
+    let row = s.row(0);
+    let (xi, zeta) = (row.num("delta_xi_deg"), row.num("delta_zeta_deg"));
+    assert!((xi - 2.498).abs() < 0.001, "{xi}");
+    assert!((zeta - 7.495).abs() < 0.001, "{zeta}");
     assert!(read(&out.join("run.toml")).contains("wall_from_surface"));
 }
 
 /// Runs a bad case: exit status 2, one stderr line naming `key`, no output directory.
 fn bad(case_body: &str, key: &str, extra: &[&str]) {
-    let tmp = tempfile::tempdir().unwrap();
-    let case = write_case(tmp.path(), "bad.toml", case_body);
-    let out = tmp.path().join("never");
+    let tmp = Dir::new();
+    let case = case_in(&tmp, "bad.toml", case_body);
+    let out = tmp.join("never");
     let mut args = vec![
         "stochastic",
         "--case",
@@ -193,8 +173,8 @@ fn bad(case_body: &str, key: &str, extra: &[&str]) {
     ];
     args.extend_from_slice(extra);
     let o = rebound(&args);
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{key}: {err}");
+    let err = &o.stderr;
+    assert_eq!(o.code, 2, "{key}: {err}");
     let lines: Vec<&str> = err.lines().filter(|l| !l.starts_with("warning")).collect();
     assert_eq!(lines.len(), 1, "{key}: {err}");
     assert!(lines[0].contains(key), "{key}: {err}");
@@ -248,22 +228,22 @@ fn bad_input_is_one_line_naming_the_key_with_exit_2_and_nothing_written() {
 
 #[test]
 fn roughness_beyond_the_low_roughness_range_warns_but_runs() {
-    let tmp = tempfile::tempdir().unwrap();
-    let case = write_case(
-        tmp.path(),
+    let tmp = Dir::new();
+    let case = case_in(
+        &tmp,
         "w.toml",
         &BASE.replace("delta_zeta_deg = 7.5", "delta_zeta_deg = 12.0"),
     );
-    let out = tmp.path().join("o");
-    let o = rebound(&[
+    let out = tmp.join("o");
+    let err = rebound(&[
         "stochastic",
         "--case",
         &case,
         "--out",
         out.to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success(), "{err}");
+    ])
+    .ok()
+    .stderr;
     assert!(
         err.contains("warning") && err.contains("delta_zeta_deg"),
         "{err}"

@@ -1,5 +1,6 @@
 //! The stochastic rebound model (Radenkovic & Simonin 2021, Sec. 3.4–3.6, 4; notes §3)
 //! against its analytic limits, the paper's findings and the hard cases of notes §9.
+use crate::common::dev;
 use nalgebra::Vector3;
 use rand::SeedableRng;
 use rand_xoshiro::Xoshiro256PlusPlus;
@@ -9,13 +10,6 @@ use roughwall::stochastic::{rebound, Rebound, MAX_TRIES};
 use roughwall::wall::{rotated_moments, Deviations};
 
 const D: f64 = 500e-6;
-
-fn dev(xi_deg: f64, zeta_deg: f64) -> Deviations {
-    Deviations {
-        delta_xi: xi_deg.to_radians(),
-        delta_zeta: zeta_deg.to_radians(),
-    }
-}
 
 fn sh() -> CollisionLaw {
     CollisionLaw::SommerfeldHuber(ShParams::glass_steel())

@@ -2,7 +2,7 @@
 //! variant's defining property, mirror symmetry, energy, the smooth-wall limit, and the
 //! case-file and C entry points.
 
-mod common;
+use crate::common::{self, dev};
 
 use nalgebra::Vector3;
 use rand::SeedableRng;
@@ -14,13 +14,6 @@ use roughwall::stochastic::{rebound_variant, Rebound, Variant, VariantKind};
 use roughwall::wall::Deviations;
 
 const D: f64 = 500e-6;
-
-fn dev(xi_deg: f64, zeta_deg: f64) -> Deviations {
-    Deviations {
-        delta_xi: xi_deg.to_radians(),
-        delta_zeta: zeta_deg.to_radians(),
-    }
-}
 
 fn variant(kind: VariantKind) -> Variant {
     Variant {

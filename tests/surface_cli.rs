@@ -1,7 +1,7 @@
 //! `rebound surface` end to end: outputs, reproducibility, special walls, bad input.
+use crate::common::*;
 use roughwall::surface::heights_io::read_heights;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 const SMALL: &str = r#"
 name = "small"
@@ -16,20 +16,7 @@ corr_length_z_um = 4.0
 beta_star_deg = [0.0, 30.0, 60.0, 90.0]
 "#;
 
-fn rebound(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rebound"))
-        .args(args)
-        .output()
-        .expect("run rebound")
-}
-
-fn write_case(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn run_ok(case: &Path, out: &Path, extra: &[&str]) -> Output {
+fn run_ok(case: &Path, out: &Path, extra: &[&str]) -> Run {
     let mut args = vec![
         "surface",
         "--case",
@@ -38,13 +25,7 @@ fn run_ok(case: &Path, out: &Path, extra: &[&str]) -> Output {
         out.to_str().unwrap(),
     ];
     args.extend_from_slice(extra);
-    let o = rebound(&args);
-    assert!(
-        o.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    o
+    rebound(&args).ok()
 }
 
 fn csv(out: &Path, name: &str) -> String {
@@ -53,7 +34,7 @@ fn csv(out: &Path, name: &str) -> String {
 
 #[test]
 fn writes_every_output_with_the_exact_columns_reproducibly_for_any_thread_count() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "small.toml", SMALL);
     let (a, b) = (tmp.path().join("a"), tmp.path().join("b"));
     let (ha, hb) = (tmp.path().join("a.rbhf"), tmp.path().join("b.rbhf"));
@@ -101,7 +82,7 @@ fn writes_every_output_with_the_exact_columns_reproducibly_for_any_thread_count(
 fn generated_surface_is_periodic() {
     // Height differences across the periodic boundary have the same spread as those
     // between interior neighbours (a non-periodic field would jump by ~√2 h there).
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let case = write_case(tmp.path(), "small.toml", SMALL);
     let h = tmp.path().join("h.rbhf");
     run_ok(
@@ -132,7 +113,7 @@ fn generated_surface_is_periodic() {
 
 #[test]
 fn two_d_roughness_and_flat_walls_are_exact_with_finite_statistics() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let two_d = SMALL.replace("corr_length_z_um = 4.0", "delta_zeta_deg = 0.0");
     let case = write_case(tmp.path(), "2d.toml", &two_d);
     let h = tmp.path().join("2d.rbhf");
@@ -142,20 +123,26 @@ fn two_d_roughness_and_flat_walls_are_exact_with_finite_statistics() {
     // Stored with nz = 1: exactly constant along z by construction.
     assert_eq!((f.nx, f.nz), (256, 1));
     assert!(f.heights.iter().any(|&y| y != 0.0));
-    let summary = csv(&out, "surface_summary.csv");
-    let row: Vec<&str> = summary.lines().nth(1).unwrap().split(',').collect();
-    assert_eq!(row[7], "0"); // rms_slope_z
-    assert_eq!(row[8], "0"); // target_rms_slope_z
-    assert_eq!(row[11], "0"); // delta_zeta_deg
-    assert!(row.iter().all(|c| !c.is_empty()));
+    let summary = Csv::read(&out.join("surface_summary.csv"));
+    assert_eq!(summary.rows.len(), 1);
+    let row = summary.row(0);
+    assert_eq!(&row["rms_slope_z"], "0");
+    assert_eq!(&row["target_rms_slope_z"], "0");
+    assert_eq!(&row["delta_zeta_deg"], "0");
+    assert!(row.cells().iter().all(|c| !c.is_empty()));
     // Δξ* at β* = 90° is the (zero) ζ deviation. With Δζ = 0, Eq. (9) gives
     // Cov = sin β* cos β* Δξ², so ρ = +1 at β* = 30°: ξ* and ζ* both follow ξ exactly.
-    let angles = csv(&out, "normal_angles.csv");
-    let r90: Vec<&str> = angles.lines().nth(4).unwrap().split(',').collect();
-    assert_eq!(r90[1], "0");
-    let r30: Vec<&str> = angles.lines().nth(2).unwrap().split(',').collect();
-    let rho: f64 = r30[3].parse().unwrap();
-    let model: f64 = r30[8].parse().unwrap();
+    let angles = Csv::read(&out.join("normal_angles.csv"));
+    let at = |beta: &str| {
+        angles
+            .records()
+            .find(|r| &r["beta_star_deg"] == beta)
+            .unwrap_or_else(|| panic!("no β* = {beta}"))
+    };
+    assert_eq!(&at("90")["delta_xi_star_deg"], "0");
+    let r30 = at("30");
+    let rho = r30.num("rho_xi_zeta");
+    let model = r30.num("model_rho_xi_zeta");
     assert!(
         (rho - model).abs() < 1e-6 && (model - 1.0).abs() < 1e-12,
         "{rho} {model}"
@@ -169,20 +156,35 @@ fn two_d_roughness_and_flat_walls_are_exact_with_finite_statistics() {
     let out = tmp.path().join("flat");
     run_ok(&case, &out, &["--heights", h.to_str().unwrap()]);
     assert!(read_heights(&h).unwrap().heights.iter().all(|&y| y == 0.0));
-    let summary = csv(&out, "surface_summary.csv");
-    let row: Vec<&str> = summary.lines().nth(1).unwrap().split(',').collect();
-    assert_eq!(
-        &row[3..],
-        &["0", "0.37", "0", "0", "0", "0", "0", "0", "0", "0", "0"]
-    );
-    for line in csv(&out, "normal_angles.csv").lines().skip(1) {
-        assert!(line.split(',').skip(1).all(|c| c == "0"), "{line}");
+    let summary = Csv::read(&out.join("surface_summary.csv"));
+    let row = summary.row(0);
+    for (column, value) in [
+        ("rms_height_um", "0"),
+        ("target_rms_height_um", "0.37"),
+        ("rms_slope_x", "0"),
+        ("target_rms_slope_x", "0"),
+        ("rms_slope_z", "0"),
+        ("target_rms_slope_z", "0"),
+        ("delta_xi_deg", "0"),
+        ("target_delta_xi_deg", "0"),
+        ("delta_zeta_deg", "0"),
+        ("target_delta_zeta_deg", "0"),
+        ("max_height_um", "0"),
+    ] {
+        assert_eq!(&row[column], value, "{column}");
+    }
+    assert_eq!(row.cells().len(), 3 + 11);
+    let angles = Csv::read(&out.join("normal_angles.csv"));
+    for r in angles.records() {
+        for column in angles.header.iter().filter(|h| *h != "beta_star_deg") {
+            assert_eq!(&r[column.as_str()], "0", "{column}: {r:?}");
+        }
     }
 }
 
 #[test]
 fn bad_cases_fail_with_one_line_and_exit_2_writing_nothing() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let mut cases: Vec<(&str, String, &str)> = vec![
         (
             "unknown key",
@@ -260,8 +262,8 @@ fn bad_cases_fail_with_one_line_and_exit_2_writing_nothing() {
             "--out",
             out.to_str().unwrap(),
         ]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{what}: {err}");
+        let err = &o.stderr;
+        assert_eq!(o.code, 2, "{what}: {err}");
         assert_eq!(err.trim_end().lines().count(), 1, "{what}: {err}");
         assert!(err.contains(key), "{what}: `{key}` not in {err}");
         assert!(!out.exists(), "{what}: wrote {}", out.display());
@@ -270,14 +272,13 @@ fn bad_cases_fail_with_one_line_and_exit_2_writing_nothing() {
 
 #[test]
 fn a_small_domain_warns_but_runs() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     // L = 64 µm < 20 c_Lx = 240 µm.
     let text = SMALL
         .replace("length_um = 256.0", "length_um = 64.0")
         .replace("nodes = 256", "nodes = 64");
     let case = write_case(tmp.path(), "tiny.toml", &text);
-    let o = run_ok(&case, &tmp.path().join("o"), &[]);
-    let err = String::from_utf8_lossy(&o.stderr);
+    let err = run_ok(&case, &tmp.path().join("o"), &[]).stderr;
     assert!(
         err.contains("warning") && err.contains("corr_length_x_um"),
         "{err}"
@@ -286,7 +287,7 @@ fn a_small_domain_warns_but_runs() {
 
 #[test]
 fn a_foreign_or_truncated_heights_file_is_rejected() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     let p = tmp.path().join("x.rbhf");
     std::fs::write(&p, b"P6\n2 2\n255\n0123456789ab").unwrap();
     let e = read_heights(&p).unwrap_err();

@@ -78,12 +78,11 @@ fn table1_statistics_at_ci_size() {
 }
 
 /// The full Table 1 surface (N = 5001, L = 5 mm); about 1 s in release mode:
-/// `cargo test --release --test surface_table1 -- --ignored`.
+/// `cargo test --release --test integration table1_statistics_full_size -- --ignored`.
 #[test]
 #[ignore]
 fn table1_statistics_full_size() {
-    let dir = env!("CARGO_MANIFEST_DIR");
-    let path = std::path::Path::new(dir).join("configs/cases/table1.toml");
+    let path = crate::common::shipped_case("cases/table1.toml");
     let case = case::load(Some(&path), "").unwrap();
     let spec = case.surface_spec().unwrap();
     assert_eq!(spec.nodes, 5001);

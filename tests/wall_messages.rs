@@ -5,7 +5,7 @@
 //!   as `rebound stochastic` resolves it (`commands::stochastic::prepare`), and
 //! * what `rebound stochastic --case` prints (`error: ` and the message, one line, exit 2).
 
-mod common;
+use crate::common;
 use common::*;
 use roughwall::commands::stochastic::{prepare, DEFAULT_CASE};
 use roughwall::commands::Context;
@@ -135,7 +135,7 @@ fn bad_values() -> Vec<(Param, f64)> {
 
 #[test]
 fn rw_wall_new_gives_the_case_files_message_for_every_bad_value() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     // The base wall is valid on both sides (the Δζ = 7.5° warning aside).
     let (s, _) = c_message(&c_params(Param::Psi, 2.0));
     assert_eq!(s, RW_OK);
@@ -168,7 +168,7 @@ fn rw_wall_new_gives_the_case_files_message_for_every_bad_value() {
 
 #[test]
 fn rebound_stochastic_prints_the_same_line_as_rw_wall_new() {
-    let tmp = tempfile::tempdir().unwrap();
+    let tmp = Dir::new();
     for (k, (p, x)) in bad_values().into_iter().enumerate().step_by(3) {
         let case = write_case(tmp.path(), &format!("bad{k}.toml"), &case_text(p, x));
         let (_, from_c) = c_message(&c_params(p, x));

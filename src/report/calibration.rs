@@ -3,6 +3,7 @@
 //! surface, against `deterministic` at 10⁶ particles per condition; writes
 //! `calibration/calibration.csv`. Every number is read from the runs' `compare` outputs.
 
+use super::paths::{CALIBRATION, CALIBRATION_NOISE, CALIBRATION_TABLE, COMPARE, STOCHASTIC};
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
@@ -23,7 +24,7 @@ const SCENES: [(&str, &str); 7] = [
 ];
 /// The two models, and `noise`: `deterministic` on another surface (seed 7) against the
 /// first — the deterministic run's own noise, surface realisation included.
-const MODELS: [&str; 3] = ["radenkovic-simonin-2021", "calibrated", "noise"];
+const MODELS: [&str; 3] = ["radenkovic-simonin-2021", "calibrated", CALIBRATION_NOISE];
 
 /// Worst case over the conditions with `|α⁻| ≥ min_alpha`.
 #[derive(Clone, Copy, Debug, Default)]
@@ -71,7 +72,7 @@ fn ns_per_rebound(dir: &Path) -> Option<f64> {
 
 pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## A model within the deterministic noise? The calibrated escape law\n\n");
-    let dir = results.join("calibration");
+    let dir = results.join(CALIBRATION);
     let mut table = CsvTable::new(&[
         "scene",
         "model",
@@ -89,11 +90,11 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
     for (scene, label) in SCENES {
         for model in MODELS {
             let run = dir.join(scene).join(model);
-            let Some(c) = Rows::read(&run.join("compare/comparison.csv"))? else {
+            let Some(c) = Rows::read(&run.join(COMPARE).join("comparison.csv"))? else {
                 continue;
             };
             particles = particles.or_else(|| {
-                run_toml(&run.join("stochastic"))
+                run_toml(&run.join(STOCHASTIC))
                     .and_then(|t| t.get("run")?.get("particles_per_condition")?.as_integer())
             });
             let all = worst(&c, 2.5);
@@ -121,7 +122,7 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
                 all.bias_alpha,
                 steep.bias_alpha,
                 steep.ks_gamma_first,
-                ns_per_rebound(&run.join("stochastic")).map_or("–".into(), |x| format!("{x:.0}")),
+                ns_per_rebound(&run.join(STOCHASTIC)).map_or("–".into(), |x| format!("{x:.0}")),
             );
         }
     }
@@ -134,7 +135,8 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
         return Ok(());
     }
     table.write(&dir.join("calibration.csv"))?;
-    let shipped = std::fs::read_to_string(dir.join("table/shipped.txt")).unwrap_or_default();
+    let shipped = std::fs::read_to_string(dir.join(CALIBRATION_TABLE).join("shipped.txt"))
+        .unwrap_or_default();
     let n = particles.unwrap_or(0);
     let noise = if n > 0 {
         1.36 * (2.0 / n as f64).sqrt()
@@ -168,7 +170,7 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
         .filter(|c| {
             scores.iter().any(|n| {
                 n.0 == c.0
-                    && n.1 == "noise"
+                    && n.1 == CALIBRATION_NOISE
                     && c.2.ks_alpha <= n.2.ks_alpha
                     && c.2.ks_dbeta <= n.2.ks_dbeta
                     && c.2.bias_alpha <= n.2.bias_alpha

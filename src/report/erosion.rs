@@ -3,6 +3,7 @@
 //! models. Writes `erosion/erosion.csv`, `erosion/erosion.svg` and
 //! `erosion/erosion_ratios.svg`; every number is read from the runs' `summary.csv`.
 
+use super::paths::{DETERMINISTIC, EROSION, STOCHASTIC};
 use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, run_toml, Rows};
@@ -13,7 +14,7 @@ use std::path::Path;
 /// The walls of the study, in the order the script runs them.
 const WALLS: [&str; 5] = ["smooth", "iso", "2d", "aniso", "aniso-rev"];
 const BETAS: [f64; 3] = [0.0, 45.0, 90.0];
-const MODELS: [&str; 2] = ["deterministic", "stochastic"];
+const MODELS: [&str; 2] = [DETERMINISTIC, STOCHASTIC];
 /// mm³ in m³: the figures' unit.
 const MM3: f64 = 1e-9;
 
@@ -135,7 +136,7 @@ fn ratio(x: f64, y: f64) -> String {
 
 pub fn erosion(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Erosion on rough walls (beyond the papers)\n\n");
-    let dir = results.join("erosion");
+    let dir = results.join(EROSION);
     let mut walls = Vec::new();
     for name in WALLS {
         let mut points: [Vec<Point>; 2] = [Vec::new(), Vec::new()];
@@ -164,7 +165,7 @@ pub fn erosion(results: &Path, md: &mut String) -> Result<()> {
         return Ok(());
     };
     // The law and the particles, from a run's manifest.
-    let manifest = run_toml(&dir.join("smooth/deterministic"));
+    let manifest = run_toml(&dir.join("smooth").join(DETERMINISTIC));
     let law = manifest
         .as_ref()
         .and_then(|t| t.get("erosion")?.as_table().cloned());

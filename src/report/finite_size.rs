@@ -3,13 +3,16 @@
 //! stochastic model with those deviations (and with the nominal ones) matches the
 //! deterministic sphere. Writes `finite-size/finite_size.csv`.
 
+use super::paths::{
+    COMPARE, COMPARE_EFFECTIVE, COMPARE_NOMINAL, FINITE_SIZE, FINITE_SIZE_DIAMETER,
+    FINITE_SIZE_DIAMETERS_UM, FINITE_SIZE_GRID, FINITE_SIZE_LAW, RADENKOVIC2021, SEC4_GLASS_STEEL,
+    STOCHASTIC_EFFECTIVE,
+};
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
 use std::fmt::Write;
 use std::path::Path;
-
-const DIAMETERS: [u32; 4] = [50, 100, 250, 500];
 
 /// Largest KS of `alpha_out` and `dbeta` and largest |bias| of mean α⁺ in a comparison.
 fn worst(dir: &Path) -> Result<Option<(f64, f64, f64)>> {
@@ -35,7 +38,7 @@ fn worst(dir: &Path) -> Result<Option<(f64, f64, f64)>> {
 
 pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Finite spheres: the roughness a particle sees (beyond the papers)\n\n");
-    let dir = results.join("finite-size");
+    let dir = results.join(FINITE_SIZE);
     let mut table = CsvTable::new(&[
         "diameter_um",
         "surface_delta_xi_deg",
@@ -51,9 +54,9 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
         "max_abs_bias_alpha_out_nominal_deg",
     ]);
     let mut rows = Vec::new();
-    for d in DIAMETERS {
-        let run = dir.join(format!("d{d}"));
-        let Some(t) = run_toml(&run.join("stochastic-effective")) else {
+    for d in FINITE_SIZE_DIAMETERS_UM {
+        let run = dir.join(format!("{FINITE_SIZE_DIAMETER}{d}"));
+        let Some(t) = run_toml(&run.join(STOCHASTIC_EFFECTIVE)) else {
             continue;
         };
         let Some(e) = t.get("effective_for_diameter").and_then(|e| e.as_table()) else {
@@ -67,8 +70,8 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
             g("effective_delta_zeta_deg"),
             g("contact_fraction"),
         ];
-        let eff = worst(&run.join("compare-effective"))?;
-        let nom = worst(&run.join("compare-nominal"))?;
+        let eff = worst(&run.join(COMPARE_EFFECTIVE))?;
+        let nom = worst(&run.join(COMPARE_NOMINAL))?;
         let (Some(eff), Some(nom)) = (eff, nom) else {
             continue;
         };
@@ -139,9 +142,9 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
     // The same comparison for the particle centre on the same wall (radenkovic2021.sh).
     let centre = worst(
         &results
-            .join("radenkovic2021")
-            .join("sec4-glass-steel")
-            .join("compare"),
+            .join(RADENKOVIC2021)
+            .join(SEC4_GLASS_STEEL)
+            .join(COMPARE),
     )?
     .map(|c| c.0.max(c.1));
     let _ = writeln!(
@@ -159,7 +162,7 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
         centre.map_or("–".into(), |c| format!("{c:.3}")),
     );
     grid(&dir, md)?;
-    law(&dir.join("law"), md)?;
+    law(&dir.join(FINITE_SIZE_LAW), md)?;
     Ok(())
 }
 
@@ -168,7 +171,7 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
 fn grid(dir: &Path, md: &mut String) -> Result<()> {
     let mut rows = Vec::new();
     for spc in [4, 8, 16] {
-        let run = dir.join(format!("grid-s{spc}"));
+        let run = dir.join(format!("{FINITE_SIZE_GRID}{spc}"));
         let (Some(t), Some(s)) = (run_toml(&run), Rows::read(&run.join("summary.csv"))?) else {
             continue;
         };

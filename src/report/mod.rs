@@ -5,10 +5,13 @@
 //! Every number in the report is read from a file in `results/`; a missing run is said so.
 
 pub mod calibration;
+mod common;
 pub mod erosion;
 pub mod finite_size;
-pub mod paper;
-pub mod sections;
+pub mod hu2021;
+pub mod paths;
+pub mod radenkovic2021;
+pub mod speed_vs_error;
 pub mod spin;
 pub mod wall_models;
 
@@ -25,18 +28,32 @@ pub fn write_report(results: &Path) -> Result<()> {
          writes; every number below is read from those files. Paper values are quoted with their source. \
          \"–\" marks a value a run did not produce.\n\n",
     );
-    sections::reproducibility(results, &mut md);
-    sections::table1(results, &mut md)?;
-    sections::fig4(results, &mut md)?;
-    sections::sec3(results, &mut md)?;
-    sections::ds_vs_sm(results, &mut md)?;
-    sections::sec4(results, &mut md)?;
-    sections::hu(results, &mut md)?;
+    reproducibility(results, &mut md);
+    radenkovic2021::table1(results, &mut md)?;
+    radenkovic2021::fig4(results, &mut md)?;
+    radenkovic2021::sec3(results, &mut md)?;
+    radenkovic2021::ds_vs_sm(results, &mut md)?;
+    radenkovic2021::sec4(results, &mut md)?;
+    hu2021::hu(results, &mut md)?;
     wall_models::wall_models(results, &mut md)?;
     calibration::calibration(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
     finite_size::finite_size(results, &mut md)?;
     spin::spin(results, &mut md)?;
-    sections::speed_vs_error(results, &mut md)?;
+    speed_vs_error::speed_vs_error(results, &mut md)?;
     write_atomic(&results.join("REPORT.md"), md.as_bytes())
+}
+
+/// Whether re-running gave the same bytes (`reproducibility.txt`, written by
+/// `scripts/reproduce-all.sh`).
+fn reproducibility(results: &Path, md: &mut String) {
+    md.push_str("## Reproducibility\n\n");
+    match std::fs::read_to_string(results.join(paths::REPRODUCIBILITY)) {
+        Ok(t) => {
+            md.push_str("`scripts/reproduce-all.sh` compares every CSV it rewrites with the one it replaces:\n\n```\n");
+            md.push_str(t.trim_end());
+            md.push_str("\n```\n\n");
+        }
+        Err(_) => md.push_str("*No previous results were present when this report was made, so no byte-for-byte check was possible.*\n\n"),
+    }
 }

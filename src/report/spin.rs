@@ -3,6 +3,7 @@
 //! Sec. 4 glass–steel scene, from both models (`scripts/spin.sh`). Writes `spin/spin.csv`
 //! and `spin/spin.svg`.
 
+use super::paths::SPIN;
 use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, Rows};
@@ -50,7 +51,7 @@ fn values(dir: &Path, axis: char) -> Vec<i64> {
 
 pub fn spin(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Incident spin (beyond the papers)\n\n");
-    let dir = results.join("spin");
+    let dir = results.join(SPIN);
     let mut table = CsvTable::new(&[
         "axis",
         "omega_rad_s",

@@ -4,6 +4,7 @@
 //! a timing, is only in `REPORT.md`); every number is read from the runs' `compare` outputs
 //! and manifests.
 
+use super::paths::{scene_name, COMPARE, STOCHASTIC, WALL_MODELS, WALL_MODELS_SCENES};
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
@@ -11,17 +12,10 @@ use crate::stochastic::VariantKind;
 use std::fmt::Write;
 use std::path::Path;
 
-const SCENES: [&str; 9] = [
-    "aniso",
-    "aniso-rev",
-    "glass-steel-2d",
-    "glass-steel-iso",
-    "glass-steel",
-    "glass-steel-fig16",
-    "glass-steel-fig16-2d",
-    "glass-steel-fig17",
-    "glass-steel-fig17-2d",
-];
+/// The scenes, by name (the directories under `wall-models/`).
+fn scene_names() -> [&'static str; 9] {
+    WALL_MODELS_SCENES.map(scene_name)
+}
 
 /// One variant on one scene against `deterministic`.
 #[derive(Clone, Copy, Debug, Default)]
@@ -41,7 +35,7 @@ struct Score {
 }
 
 fn score(dir: &Path) -> Result<Option<Score>> {
-    let Some(c) = Rows::read(&dir.join("compare/comparison.csv"))? else {
+    let Some(c) = Rows::read(&dir.join(COMPARE).join("comparison.csv"))? else {
         return Ok(None);
     };
     let mut s = Score::default();
@@ -74,7 +68,7 @@ fn score(dir: &Path) -> Result<Option<Score>> {
             _ => {}
         }
     }
-    let sm = dir.join("stochastic");
+    let sm = dir.join(STOCHASTIC);
     s.ns_per_rebound = run_toml(&sm).and_then(|t| {
         let run = t.get("run")?;
         let secs = run.get("compute_s")?.as_float()?;
@@ -89,7 +83,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
     md.push_str(
         "## Which rough-wall model to trust: the models CFD codes ship against `deterministic`\n\n",
     );
-    let dir = results.join("wall-models");
+    let dir = results.join(WALL_MODELS);
     let mut table = CsvTable::new(&[
         "scene",
         "model",
@@ -103,7 +97,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
         "max_abs_bias_mean_alpha_out_steep_deg",
     ]);
     let mut all: Vec<(&str, VariantKind, Score)> = Vec::new();
-    for scene in SCENES {
+    for scene in scene_names() {
         for v in VariantKind::ALL {
             if let Some(s) = score(&dir.join(scene).join(v.name()))? {
                 table.push(vec![
@@ -162,7 +156,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("Over the scenes (mean of the per-scene maxima, and on how many scenes the variant has the smallest max KS of α⁺ and of β⁺ − β⁻):\n\n\
                  | model | mean max KS α⁺ | mean max KS β⁺−β⁻ | mean max \\|bias\\| α⁺ (°) | best KS α⁺ | best KS β⁺−β⁻ | mean ns/rebound |\n\
                  |---|---|---|---|---|---|---|\n");
-    let scenes: Vec<&str> = SCENES
+    let scenes: Vec<&str> = scene_names()
         .iter()
         .copied()
         .filter(|s| all.iter().any(|a| a.0 == *s))

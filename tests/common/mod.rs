@@ -1,10 +1,42 @@
-//! The integration tests' harness: run the binary, write cases, read its CSVs by column.
+//! The integration tests' harness (ripgrep's `tests/util.rs` is the model): run the binary
+//! ([`rebound`], [`rebound_in`], [`TestCommand`]) and check how it ended ([`Run`]), write
+//! cases into a temporary directory ([`Dir`], [`write_case`]), find the shipped cases under
+//! `configs/` ([`shipped_case`]), read output CSVs by column name ([`Csv`], [`Row`]), build
+//! C programs against the C library, and the deterministic tests' own surfaces and angle
+//! helpers ([`deterministic`]).
 #![allow(dead_code)]
 
+pub mod deterministic;
+
+use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// The repository's root (where `Cargo.toml` is).
+pub fn repo_root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The `rebound` binary under test.
+pub fn rebound_bin() -> &'static Path {
+    Path::new(env!("CARGO_BIN_EXE_rebound"))
+}
+
+/// A shipped case file: `rel` under `configs/` (e.g. `cases/aniso.toml`).
+pub fn shipped_case(rel: &str) -> PathBuf {
+    let p = repo_root().join("configs").join(rel);
+    assert!(p.is_file(), "no shipped case {}", p.display());
+    p
+}
+
+/// The text of a shipped case file (`rel` under `configs/`).
+pub fn read_shipped_case(rel: &str) -> String {
+    let p = shipped_case(rel);
+    std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
 /// What a run of the binary gave: exit status (−1 for a signal), stdout, stderr.
+#[derive(Debug)]
 pub struct Run {
     pub code: i32,
     pub stdout: String,
@@ -27,16 +59,113 @@ impl Run {
     }
 }
 
+/// A `rebound` command line to build up and run (ripgrep's `TestCommand`).
+pub struct TestCommand {
+    cmd: Command,
+}
+
+impl TestCommand {
+    /// `rebound` with no arguments yet, in the test's working directory.
+    pub fn new() -> TestCommand {
+        TestCommand {
+            cmd: Command::new(rebound_bin()),
+        }
+    }
+
+    pub fn arg<S: AsRef<OsStr>>(&mut self, arg: S) -> &mut TestCommand {
+        self.cmd.arg(arg);
+        self
+    }
+
+    pub fn args<I: IntoIterator<Item = S>, S: AsRef<OsStr>>(
+        &mut self,
+        args: I,
+    ) -> &mut TestCommand {
+        self.cmd.args(args);
+        self
+    }
+
+    /// Runs in `dir` instead of the test's working directory.
+    pub fn current_dir(&mut self, dir: &Path) -> &mut TestCommand {
+        self.cmd.current_dir(dir);
+        self
+    }
+
+    pub fn env<K: AsRef<OsStr>, V: AsRef<OsStr>>(&mut self, key: K, value: V) -> &mut TestCommand {
+        self.cmd.env(key, value);
+        self
+    }
+
+    /// The underlying command, e.g. to spawn it.
+    pub fn cmd(&mut self) -> &mut Command {
+        &mut self.cmd
+    }
+
+    /// Runs to the end and collects what it gave.
+    pub fn run(&mut self) -> Run {
+        let out = self.cmd.output().expect("run rebound");
+        Run {
+            code: out.status.code().unwrap_or(-1),
+            stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+            stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+        }
+    }
+}
+
+impl Default for TestCommand {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 /// Runs `rebound ARGS…`.
-pub fn rebound<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> Run {
-    let out = Command::new(env!("CARGO_BIN_EXE_rebound"))
-        .args(args)
-        .output()
-        .expect("run rebound");
-    Run {
-        code: out.status.code().unwrap_or(-1),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+pub fn rebound<S: AsRef<OsStr>>(args: &[S]) -> Run {
+    TestCommand::new().args(args).run()
+}
+
+/// Runs `rebound ARGS…` in directory `cwd`.
+pub fn rebound_in<S: AsRef<OsStr>>(cwd: &Path, args: &[S]) -> Run {
+    TestCommand::new().current_dir(cwd).args(args).run()
+}
+
+/// A temporary directory for one test: cases are written into it and runs write below it.
+/// Removed when dropped.
+pub struct Dir {
+    tmp: tempfile::TempDir,
+}
+
+impl Dir {
+    pub fn new() -> Dir {
+        Dir {
+            tmp: tempfile::tempdir().expect("temporary directory"),
+        }
+    }
+
+    pub fn path(&self) -> &Path {
+        self.tmp.path()
+    }
+
+    /// `name` inside the directory (not created).
+    pub fn join<P: AsRef<Path>>(&self, name: P) -> PathBuf {
+        self.tmp.path().join(name)
+    }
+
+    /// Writes `body` as the case file `name` and returns its path.
+    pub fn write_case(&self, name: &str, body: &str) -> PathBuf {
+        write_case(self.path(), name, body)
+    }
+
+    /// `rebound` to be run with this directory as its working directory.
+    pub fn command(&self) -> TestCommand {
+        let mut c = TestCommand::new();
+        c.current_dir(self.path());
+        c
+    }
+}
+
+impl Default for Dir {
+    fn default() -> Self {
+        Self::new()
     }
 }
 
@@ -83,9 +212,15 @@ pub struct Csv {
 }
 
 impl Csv {
+    /// Reads the CSV file at `path`.
     pub fn read(path: &Path) -> Csv {
         let text =
             std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        Csv::parse(&text)
+    }
+
+    /// The CSV in `text`.
+    pub fn parse(text: &str) -> Csv {
         let mut lines = text.lines();
         let header = lines
             .next()
@@ -117,6 +252,57 @@ impl Csv {
         let c = self.cell(row, name);
         c.parse()
             .unwrap_or_else(|_| panic!("{name} = {c:?} is not a number"))
+    }
+
+    /// Row `i` (0: the first after the header), its cells keyed by column name.
+    pub fn row(&self, i: usize) -> Row<'_> {
+        Row {
+            csv: self,
+            cells: self
+                .rows
+                .get(i)
+                .unwrap_or_else(|| panic!("no row {i} (of {})", self.rows.len())),
+        }
+    }
+
+    /// The rows, their cells keyed by column name.
+    pub fn records(&self) -> impl Iterator<Item = Row<'_>> {
+        self.rows.iter().map(move |cells| Row { csv: self, cells })
+    }
+}
+
+/// One row of a [`Csv`]: `row["alpha_in_deg"]` is its cell in that column, `row.num(..)` the
+/// cell as a number. Panics on an unknown column.
+#[derive(Clone, Copy)]
+pub struct Row<'a> {
+    csv: &'a Csv,
+    cells: &'a [String],
+}
+
+impl<'a> Row<'a> {
+    /// The cell in column `name` as a number.
+    pub fn num(&self, name: &str) -> f64 {
+        self.csv.num(self.cells, name)
+    }
+
+    /// The cells in file order.
+    pub fn cells(&self) -> &'a [String] {
+        self.cells
+    }
+}
+
+impl std::ops::Index<&str> for Row<'_> {
+    type Output = str;
+    fn index(&self, name: &str) -> &str {
+        &self.cells[self.csv.col(name)]
+    }
+}
+
+impl std::fmt::Debug for Row<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_map()
+            .entries(self.csv.header.iter().zip(self.cells))
+            .finish()
     }
 }
 
@@ -179,7 +365,7 @@ pub fn ensure_tools(tools: &[(&str, &str)]) {
 /// `cargo test` writes it to `deps/` and leaves the copy next to the binary (made by an
 /// earlier `cargo build`) as it was, possibly from older sources: the newer of the two.
 pub fn c_library_dir() -> PathBuf {
-    let bin = Path::new(env!("CARGO_BIN_EXE_rebound"));
+    let bin = rebound_bin();
     let dir = bin.parent().unwrap();
     let modified = |d: &Path| {
         std::fs::metadata(d.join("libroughwall.so"))
@@ -222,6 +408,14 @@ pub fn build_with_roughwall(compiler: &str, sources: &[&Path], out: &Path, extra
         "{compiler} failed: {}",
         String::from_utf8_lossy(&o.stderr)
     );
+}
+
+/// Wall deviations `(Δξ, Δζ)` given in degrees.
+pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> roughwall::wall::Deviations {
+    roughwall::wall::Deviations {
+        delta_xi: dxi_deg.to_radians(),
+        delta_zeta: dzeta_deg.to_radians(),
+    }
 }
 
 /// `x` as a TOML number, non-finite values included (TOML has `nan`, `inf` and `-inf`).

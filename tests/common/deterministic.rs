@@ -1,6 +1,5 @@
-//! Shared helpers of the deterministic tests: a small Gaussian-surface synthesiser
+//! The deterministic tests' helpers: a small Gaussian-surface synthesiser
 //! (independent of `crate::surface::generate`) and angle helpers.
-#![allow(dead_code)]
 
 use rand::SeedableRng;
 use rand_distr::{Distribution, StandardNormal};
@@ -136,12 +135,9 @@ pub fn wall(dxi_deg: f64, dzeta_deg: f64, per_c: f64, side: f64, seed: u64) -> H
     gaussian_surface(n, d, 1.0, cx, cz, seed)
 }
 
-pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> Deviations {
-    Deviations {
-        delta_xi: dxi_deg.to_radians(),
-        delta_zeta: dzeta_deg.to_radians(),
-    }
-}
+/// `dev` belongs to the whole harness; re-exported for the deterministic tests.
+#[allow(unused_imports)] // unused in the binaries without deterministic tests
+pub use super::dev;
 
 /// Runs one condition (angles in degrees) with 1-degree bins and ψ = 2.
 #[allow(clippy::too_many_arguments)]

@@ -1,51 +1,28 @@
-//! The sections of `REPORT.md`, one function each.
+//! Radenkovic & Simonin 2021: Table 1 and Fig. 4 (the generated surface), Sec. 3 (elastic
+//! bouncing, Figs. 6–9, 12), the deterministic simulation against the stochastic model on every
+//! scene (Figs. 10–11, 14–17) and Sec. 4.2 (Figs. 16–17).
 
-use super::paper;
+use super::common::{f, missing, pct, rel, subdirs, summary, yes};
+use super::paths::{
+    COMPARE, DETERMINISTIC, FIG4, FIG4_RUN, RADENKOVIC2021, SEC3, SEC4, SEC4_FIGS_16_17,
+    STOCHASTIC, TABLE1,
+};
 use crate::error::Result;
-use crate::figures::{plot_grid_svg, plot_svg, Kind, Plot, Series};
-use crate::output::csv::{num, run_toml, wall_time_s, Rows};
+use crate::figures::{plot_grid_svg, Kind, Plot, Series};
+use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
 use std::fmt::Write;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-fn f(x: Option<f64>, digits: usize) -> String {
-    x.filter(|v| v.is_finite())
-        .map_or("–".into(), |v| format!("{v:.digits$}"))
-}
-
-fn pct(x: Option<f64>) -> String {
-    x.filter(|v| v.is_finite())
-        .map_or("–".into(), |v| format!("{:.2} %", 100.0 * v))
-}
-
-fn missing(md: &mut String, what: &str, path: &Path) {
-    let _ = writeln!(md, "*Not run: `{}` is missing ({what}).*\n", path.display());
-}
-
-fn rel(path: &Path, root: &Path) -> String {
-    path.strip_prefix(root)
-        .unwrap_or(path)
-        .display()
-        .to_string()
-}
-
-/// Subdirectories of `dir` whose names start with `prefix`, sorted.
-fn subdirs(dir: &Path, prefix: &str) -> Vec<PathBuf> {
-    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map(|rd| {
-            rd.filter_map(|e| e.ok())
-                .map(|e| e.path())
-                .filter(|p| {
-                    p.is_dir()
-                        && p.file_name()
-                            .is_some_and(|n| n.to_string_lossy().starts_with(prefix))
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    v.sort();
-    v
-}
+/// The paper's Table 1, quoted so the report can set ours beside it: `β*`, then the
+/// numerically generated surface's `Δξ*`, `Δζ*` (deg), `ρ_ξ*ζ*`, `ρ_ξ*η*`, `ρ_η*ζ*`, then the
+/// statistical model's `Δξ*`, `Δζ*`, `ρ_ξ*ζ*`.
+pub const PAPER_TABLE1: [[f64; 9]; 4] = [
+    [0.0, 2.32, 7.59, 0.05, 0.03, -0.02, 2.50, 7.50, 0.00],
+    [30.0, 4.38, 6.09, -0.73, 0.02, 0.04, 4.53, 6.53, -0.76],
+    [60.0, 6.66, 4.30, -0.73, -0.06, 0.00, 6.53, 4.53, -0.76],
+    [90.0, 7.67, 2.45, -0.08, 0.00, 0.03, 7.50, 2.50, 0.00],
+];
 
 /// Mean and std (deg) of a binned PDF in `pdfs.csv`.
 fn binned_moments(pdfs: &Rows, alpha: f64, beta: f64, quantity: &str) -> Option<(f64, f64)> {
@@ -69,21 +46,10 @@ fn binned_moments(pdfs: &Rows, alpha: f64, beta: f64, quantity: &str) -> Option<
     Some((m, v.sqrt()))
 }
 
-pub fn reproducibility(results: &Path, md: &mut String) {
-    md.push_str("## Reproducibility\n\n");
-    match std::fs::read_to_string(results.join("reproducibility.txt")) {
-        Ok(t) => {
-            md.push_str("`scripts/reproduce-all.sh` compares every CSV it rewrites with the one it replaces:\n\n```\n");
-            md.push_str(t.trim_end());
-            md.push_str("\n```\n\n");
-        }
-        Err(_) => md.push_str("*No previous results were present when this report was made, so no byte-for-byte check was possible.*\n\n"),
-    }
-}
-
+/// Table 1: the normal-angle statistics of the generated surface against the paper's.
 pub fn table1(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Radenkovic & Simonin 2021, Table 1 (normal-angle statistics of the generated surface)\n\n");
-    let dir = results.join("radenkovic2021/table1");
+    let dir = results.join(RADENKOVIC2021).join(TABLE1);
     let Some(angles) = Rows::read(&dir.join("normal_angles.csv"))? else {
         missing(
             md,
@@ -110,7 +76,7 @@ pub fn table1(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("| β* | Δξ* paper | ours | Δζ* paper | ours | ρξ*ζ* paper | ours | ρξ*η* paper | ours | ρη*ζ* paper | ours | model Δξ* (Eq. 9) | model Δζ* | model ρ | paper's model Δξ*, Δζ*, ρ |\n");
     md.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     let (mut worst_d, mut worst_r) = (0.0f64, 0.0f64);
-    for p in paper::TABLE1 {
+    for p in PAPER_TABLE1 {
         let rows = angles.filter(&[("beta_star_deg", p[0])]);
         let r = rows.first();
         let g = |k: &str| r.and_then(|r| num(r, k));
@@ -152,10 +118,11 @@ pub fn table1(results: &Path, md: &mut String) -> Result<()> {
     Ok(())
 }
 
+/// Fig. 4: rms slope and Δξ, Δζ against h/c_L (writes `fig4.csv` and `fig4.svg`).
 pub fn fig4(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Radenkovic & Simonin 2021, Fig. 4 (rms slope and Δξ, Δζ against h/c_L)\n\n");
-    let dir = results.join("radenkovic2021/fig4");
-    let runs = subdirs(&dir, "h");
+    let dir = results.join(RADENKOVIC2021).join(FIG4);
+    let runs = subdirs(&dir, FIG4_RUN);
     let mut table = CsvTable::new(&["axis", "h_over_cl", "rms_slope", "delta_rad", "eq14_rad"]);
     let mut points: Vec<(String, f64, f64, f64, f64)> = Vec::new();
     for run in &runs {
@@ -249,24 +216,20 @@ pub fn fig4(results: &Path, md: &mut String) -> Result<()> {
     Ok(())
 }
 
-/// Rows of a deterministic or stochastic `summary.csv`.
-fn summary(dir: &Path) -> Result<Option<Rows>> {
-    Rows::read(&dir.join("summary.csv"))
-}
-
+/// Sec. 3: the paper's findings on elastic bouncing against our deterministic runs.
 pub fn sec3(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Radenkovic & Simonin 2021, Sec. 3 (elastic bouncing, Figs. 6–9, 12): the paper's findings against ours\n\n");
     let walls = [
-        ("sec3-aniso", "(Δξ, Δζ) = (2.5°, 7.5°)", -1.0),
-        ("sec3-aniso-rev", "(Δξ, Δζ) = (7.5°, 2.5°)", 1.0),
+        ("aniso", "(Δξ, Δζ) = (2.5°, 7.5°)", -1.0),
+        ("aniso-rev", "(Δξ, Δζ) = (7.5°, 2.5°)", 1.0),
     ];
     md.push_str("| wall | finding (paper) | ours (deterministic) | holds |\n|---|---|---|---|\n");
     let mut any = false;
-    for (dirname, label, sign) in walls {
+    for (wall, label, sign) in walls {
         let dir = results
-            .join("radenkovic2021")
-            .join(dirname)
-            .join("deterministic");
+            .join(RADENKOVIC2021)
+            .join(format!("{SEC3}{wall}"))
+            .join(DETERMINISTIC);
         let Some(s) = summary(&dir)? else { continue };
         any = true;
         let get = |a: f64, b: f64, k: &str| {
@@ -366,7 +329,10 @@ pub fn sec3(results: &Path, md: &mut String) -> Result<()> {
         missing(
             md,
             "scripts/radenkovic2021.sh",
-            &results.join("radenkovic2021/sec3-aniso/deterministic"),
+            &results
+                .join(RADENKOVIC2021)
+                .join(format!("{SEC3}aniso"))
+                .join(DETERMINISTIC),
         );
         return Ok(());
     }
@@ -376,14 +342,14 @@ pub fn sec3(results: &Path, md: &mut String) -> Result<()> {
          transverse tilt lowers α⁺), with Δγ, Δγ* from Eq. (26). The paper's \"mean equal to |α⁻|\" holds when \
          Δγ is small against |α⁻|:\n\n| wall | β⁻ | second-order prediction at α⁻ = −32.5° | ours |\n|---|---|---|---|\n",
     );
-    for (dirname, label, dx, dz) in [
-        ("sec3-aniso", "(2.5°, 7.5°)", 2.5f64, 7.5f64),
-        ("sec3-aniso-rev", "(7.5°, 2.5°)", 7.5, 2.5),
+    for (wall, label, dx, dz) in [
+        ("aniso", "(2.5°, 7.5°)", 2.5f64, 7.5f64),
+        ("aniso-rev", "(7.5°, 2.5°)", 7.5, 2.5),
     ] {
         let dir = results
-            .join("radenkovic2021")
-            .join(dirname)
-            .join("deterministic");
+            .join(RADENKOVIC2021)
+            .join(format!("{SEC3}{wall}"))
+            .join(DETERMINISTIC);
         let Some(s) = summary(&dir)? else { continue };
         for b in [0.0f64, 60.0] {
             let m = crate::wall::rotated_moments(
@@ -408,14 +374,7 @@ pub fn sec3(results: &Path, md: &mut String) -> Result<()> {
     Ok(())
 }
 
-fn yes(b: Option<bool>) -> &'static str {
-    match b {
-        Some(true) => "yes",
-        Some(false) => "**no**",
-        None => "–",
-    }
-}
-
+/// The deterministic simulation against the stochastic model on every Sec. 3 and 4 scene.
 pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
     md.push_str(
         "## Deterministic (DS) against stochastic model (SM), all scenes (Figs. 10–11, 14–17)\n\n",
@@ -423,12 +382,12 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("Target of issue 4: KS distance ≤ 0.05 for `alpha_out` and `dbeta` at |α⁻| ≥ 12.5°; mean β⁺ − β⁻ at β⁻ = 60° of the same sign and within 1°. The paper reports \"very good agreement\".\n\n");
     md.push_str("z is a difference of means in units of its combined standard error (`compare`'s `z` column): with both models right, |z| stays below about 3; a larger |z| is a difference the runs resolve, however small in degrees.\n\n");
     md.push_str("| scene | DS surface: nodes, measured Δξ, Δζ | conditions (\\|α⁻\\| ≥ 12.5°) | max KS alpha_out | at (α⁻, β⁻) | max KS dbeta | at (α⁻, β⁻) | within 0.05 | max \\|z\\| mean α⁺ | max \\|z\\| mean β⁺ − β⁻ |\n|---|---|---|---|---|---|---|---|---|---|\n");
-    let root = results.join("radenkovic2021");
-    let mut scenes = subdirs(&root, "sec3-");
-    scenes.extend(subdirs(&root, "sec4-"));
+    let root = results.join(RADENKOVIC2021);
+    let mut scenes = subdirs(&root, SEC3);
+    scenes.extend(subdirs(&root, SEC4));
     let mut dbeta_rows = Vec::new();
     for scene in &scenes {
-        let Some(c) = Rows::read(&scene.join("compare/comparison.csv"))? else {
+        let Some(c) = Rows::read(&scene.join(COMPARE).join("comparison.csv"))? else {
             continue;
         };
         let name = scene
@@ -463,7 +422,7 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
                 worst[slot] = (ks, format!("({a}°, {b}°)"));
             }
         }
-        let surf = run_toml(&scene.join("deterministic"))
+        let surf = run_toml(&scene.join(DETERMINISTIC))
             .and_then(|t| t.get("surface_choice").cloned())
             .map_or("–".to_string(), |c| {
                 let g = |k: &str| {
@@ -490,8 +449,8 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
             f(worst_z[1], 1)
         );
         let (ds, sm) = (
-            summary(&scene.join("deterministic"))?,
-            summary(&scene.join("stochastic"))?,
+            summary(&scene.join(DETERMINISTIC))?,
+            summary(&scene.join(STOCHASTIC))?,
         );
         if let (Some(ds), Some(sm)) = (ds, sm) {
             for r in ds.filter(&[("beta_in_deg", 60.0)]) {
@@ -537,20 +496,21 @@ pub fn ds_vs_sm(results: &Path, md: &mut String) -> Result<()> {
     Ok(())
 }
 
+/// Sec. 4.2 (Figs. 16–17): the mean transverse deviation, glass on steel.
 pub fn sec4(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Radenkovic & Simonin 2021, Sec. 4.2 (Figs. 16–17): mean transverse deviation, glass on steel\n\n");
     md.push_str("Paper: \"the mean transverse deviation angle is positive for 2D roughness … and negative for high roughness anisotropy\", of the order of a few degrees; zero when the incident plane is a principal direction (β⁻ = 0°, 90°).\n\n");
     md.push_str("| scene | α⁻ | β⁻ | DS mean β⁺ − β⁻ | DS std | SM mean | SM std |\n|---|---|---|---|---|---|---|\n");
-    let root = results.join("radenkovic2021");
+    let root = results.join(RADENKOVIC2021);
     let mut any = false;
-    for scene in subdirs(&root, "sec4-glass-steel-fig1") {
+    for scene in subdirs(&root, SEC4_FIGS_16_17) {
         let name = scene
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         let (Some(ds), sm) = (
-            summary(&scene.join("deterministic"))?,
-            summary(&scene.join("stochastic"))?,
+            summary(&scene.join(DETERMINISTIC))?,
+            summary(&scene.join(STOCHASTIC))?,
         ) else {
             continue;
         };
@@ -578,329 +538,9 @@ pub fn sec4(results: &Path, md: &mut String) -> Result<()> {
         missing(
             md,
             "scripts/radenkovic2021.sh",
-            &root.join("sec4-glass-steel-fig16"),
+            &root.join(format!("{SEC4_FIGS_16_17}6")),
         );
     }
     md.push('\n');
-    Ok(())
-}
-
-pub fn hu(results: &Path, md: &mut String) -> Result<()> {
-    md.push_str("## Hu et al.: peak elastic force of spheres and prolate spheroids\n\n");
-    let root = results.join("hu2021");
-    // Fig. 4 analogue: the time-integrated sphere against Eq. (3).
-    if let Some(s) = Rows::read(&root.join("fig4/force_sweep.csv"))? {
-        let sphere = s.with("model", "hertz-sphere");
-        let mut worst = 0.0f64;
-        let mut n = 0;
-        for d in s.with("model", "hertz-dynamic") {
-            let key = |r: &std::collections::HashMap<String, String>| {
-                (
-                    num(r, "u_n_m_s"),
-                    num(r, "diameter_um"),
-                    num(r, "density_kg_m3"),
-                    num(r, "youngs_pa"),
-                )
-            };
-            if let Some(h) = sphere.iter().find(|h| key(h) == key(d)) {
-                if let (Some(a), Some(b)) = (num(d, "f_max_n"), num(h, "f_max_n")) {
-                    if b > 0.0 {
-                        worst = worst.max(((a - b) / b).abs());
-                        n += 1;
-                    }
-                }
-            }
-        }
-        let _ = writeln!(
-            md,
-            "**Fig. 4 (sphere check).** Paper: FE against Eq. (3), φ ≤ {:.2} % for U_N ≤ 0.2 m/s. Ours (time-integrated Hertz ODE, Eq. 1, against Eq. 3): largest relative difference {:.2e} over {n} points — an ODE, not FE, so it checks our integrator, not the continuum effects FE sees.\n",
-            100.0 * paper::HU_FIG4_PHI_MAX, worst
-        );
-    } else {
-        missing(md, "scripts/hu2021.sh", &root.join("fig4/force_sweep.csv"));
-    }
-    // Accuracy of the physical models against Eq. (8).
-    if let Some(a) = Rows::read(&root.join("fig6/accuracy.csv"))? {
-        md.push_str("**Fig. 6: physical models against Hu et al.'s fit (Eqs. 7–8), β = 0°…90°.** Goal of issue 5: mean deviation ≤ 5 % per λ.\n\n| model | λ | mean rel. dev. | max rel. dev. | at β | ≤ 5 % |\n|---|---|---|---|---|---|\n");
-        for r in &a.rows {
-            let mean = num(r, "mean_rel_dev");
-            let _ = writeln!(
-                md,
-                "| {} | {} | {} | {} | {}° | {} |",
-                r.get("model").map_or("", |s| s.as_str()),
-                f(num(r, "lambda"), 1),
-                pct(mean),
-                pct(num(r, "max_rel_dev")),
-                f(num(r, "beta_at_max_deg"), 0),
-                yes(mean.map(|m| m <= 0.05))
-            );
-        }
-        md.push('\n');
-    } else {
-        missing(md, "scripts/hu2021.sh", &root.join("fig6/accuracy.csv"));
-    }
-    if let Some(s) = Rows::read(&root.join("fig6/force_sweep.csv"))? {
-        md.push_str("Orientation of the smallest F_max (paper, Fig. 6: near 45° for λ = 2 and 3):\n\n| model | λ | β at min F_max |\n|---|---|---|\n");
-        for model in ["hu2021", "hertz-rigid", "hertz-dynamic"] {
-            for lam in [1.5, 2.0, 3.0] {
-                let rows: Vec<_> = s
-                    .with("model", model)
-                    .into_iter()
-                    .filter(|r| num(r, "lambda") == Some(lam))
-                    .collect();
-                let min = rows
-                    .iter()
-                    .filter_map(|r| Some((num(r, "f_max_n")?, num(r, "beta_deg")?)))
-                    .min_by(|a, b| a.0.total_cmp(&b.0));
-                let _ = writeln!(md, "| {model} | {lam} | {}° |", f(min.map(|m| m.1), 0));
-            }
-        }
-        md.push_str("\n![Fig. 6 analogue](hu2021/fig6/fmax_vs_beta.svg) ![Fig. 9 analogue](hu2021/fig6/xi_vs_beta.svg)\n\n");
-    }
-    if let Some(s) = Rows::read(&root.join("fig9/force_sweep.csv"))? {
-        md.push_str("**Eq. (8): the coefficient ξ of Eq. (7)** (Hu et al.'s fit, `hu2021`) beside the first-principles `hertz-rigid` (Fig. 9 setup):\n\n| β | ξ λ = 1.5 (Eq. 8) | hertz-rigid | ξ λ = 2 (Eq. 8) | hertz-rigid | ξ λ = 3 (Eq. 8) | hertz-rigid |\n|---|---|---|---|---|---|---|\n");
-        for beta in [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0] {
-            let mut row = format!("| {beta}° |");
-            for lam in [1.5, 2.0, 3.0] {
-                for model in ["hu2021", "hertz-rigid"] {
-                    let xi = s
-                        .with("model", model)
-                        .into_iter()
-                        .find(|r| num(r, "lambda") == Some(lam) && num(r, "beta_deg") == Some(beta))
-                        .and_then(|r| num(r, "xi"));
-                    let _ = write!(row, " {} |", f(xi, 4));
-                }
-            }
-            let _ = writeln!(md, "{row}");
-        }
-        md.push('\n');
-    }
-    if let Some(s) = Rows::read(&root.join("fig11b/force_sweep.csv"))? {
-        let at = |model: &str| {
-            s.with("model", model)
-                .into_iter()
-                .filter_map(|r| Some((num(r, "u_n_m_s")?, num(r, "f_max_n")?)))
-                .min_by(|a, b| (a.0 - 20.0).abs().total_cmp(&(b.0 - 20.0).abs()))
-        };
-        if let Some((u, hu)) = at("hu2021") {
-            let _ = writeln!(
-                md,
-                "**Fig. 11b (D = 10 µm, λ = 1.5, β = 45°) at U_N = {u:.1} m/s.** Paper: model against FE differs by {:.1} %. Ours against the paper's model: hertz-rigid {}, hertz-dynamic {} (no FE here, so this is model against model).\n",
-                100.0 * paper::HU_FIG11B_DIFF,
-                pct(at("hertz-rigid").map(|r| (r.1 - hu) / hu)),
-                pct(at("hertz-dynamic").map(|r| (r.1 - hu) / hu)),
-            );
-        }
-    }
-    if let Some(c) = Rows::read(&root.join("fig6/dynamic_convergence.csv"))? {
-        md.push_str("**hertz-dynamic: speed against error** (relative error of the peak against a 20 000-step reference, `results/hu2021/fig6/dynamic_convergence.csv`; median time per impact from `run.toml`, this run's machine and load):\n\n| steps per contact | max rel. error F_max | max rel. error contact time | median time per impact |\n|---|---|---|---|\n");
-        let mut by: std::collections::BTreeMap<i64, (f64, f64)> = Default::default();
-        for r in &c.rows {
-            if let (Some(s), Some(e), Some(t)) = (
-                num(r, "steps_per_contact"),
-                num(r, "rel_err_f_max"),
-                num(r, "rel_err_contact_time"),
-            ) {
-                let v = by.entry(s as i64).or_insert((0.0, 0.0));
-                v.0 = v.0.max(e.abs());
-                v.1 = v.1.max(t.abs());
-            }
-        }
-        let mut times: std::collections::BTreeMap<i64, Vec<f64>> = Default::default();
-        if let Some(t) = run_toml(&root.join("fig6")) {
-            for e in t
-                .get("dynamic_convergence")
-                .and_then(|v| v.as_array())
-                .into_iter()
-                .flatten()
-            {
-                let steps = e.get("steps_per_contact").and_then(|v| v.as_integer());
-                let time = e.get("time_per_impact_s").and_then(|v| v.as_float());
-                if let (Some(st), Some(ti)) = (steps, time) {
-                    times.entry(st).or_default().push(ti);
-                }
-            }
-        }
-        for (s, (e, t)) in by {
-            let median = times.get_mut(&s).and_then(|v| {
-                v.sort_by(f64::total_cmp);
-                v.get(v.len() / 2).copied()
-            });
-            let time = median.map_or("–".to_string(), |m| format!("{:.1} µs", m * 1e6));
-            let _ = writeln!(md, "| {s} | {e:.2e} | {t:.2e} | {time} |");
-        }
-        md.push('\n');
-    }
-    md.push_str("Other figures: `hu2021/*/*.svg` (Figs. 8–12 analogues).\n\n");
-    Ok(())
-}
-
-pub fn speed_vs_error(results: &Path, md: &mut String) -> Result<()> {
-    md.push_str("## Speed against error\n\n");
-    let dir = results.join("speed-vs-error");
-    let mut table = CsvTable::new(&[
-        "model",
-        "particles",
-        "spacing_per_corr_length",
-        "wall_time_s",
-        "us_per_particle",
-        "max_ks_alpha_out",
-        "max_ks_dbeta",
-        "max_abs_mean_alpha_out_err_deg",
-        "target_se_deg",
-        "max_se_mean_alpha_out_deg",
-        "max_abs_z_alpha_out",
-    ]);
-    let mut pts_ds = Vec::new();
-    let mut pts_sm = Vec::new();
-    for run in subdirs(&dir, "det-")
-        .into_iter()
-        .chain(subdirs(&dir, "sm-"))
-    {
-        let name = run
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let Some(c) = Rows::read(&run.join("vs-reference/comparison.csv"))? else {
-            continue;
-        };
-        let Some(summ) = summary(&run)? else { continue };
-        let model = if name.starts_with("det-") {
-            "deterministic"
-        } else {
-            "stochastic"
-        };
-        let parse = |tag: char| {
-            name.split('-')
-                .find_map(|p| p.strip_prefix(tag).and_then(|v| v.parse::<f64>().ok()))
-        };
-        let spacing = if model == "deterministic" {
-            parse('s')
-        } else {
-            None
-        };
-        let target = parse('t');
-        // Particles per condition (the most any condition used) and in total.
-        let per_condition: Vec<f64> = summ
-            .rows
-            .iter()
-            .filter_map(|r| num(r, "particles"))
-            .collect();
-        let n = per_condition
-            .iter()
-            .copied()
-            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
-        let total: f64 = per_condition.iter().sum();
-        let wall = wall_time_s(&run);
-        let per = wall.filter(|_| total > 0.0).map(|w| 1e6 * w / total);
-        let maxq = |q: &str, k: &str| {
-            c.with("quantity", q)
-                .iter()
-                .filter_map(|r| num(r, k))
-                .fold(None, |m: Option<f64>, v| {
-                    Some(m.map_or(v.abs(), |m| m.max(v.abs())))
-                })
-        };
-        let ks_a = maxq("alpha_out", "ks");
-        let ks_d = maxq("dbeta", "ks");
-        let z_a = maxq("alpha_out", "z");
-        let mean_err = c
-            .with("quantity", "alpha_out")
-            .iter()
-            .filter_map(|r| Some((num(r, "mean_b")? - num(r, "mean_a")?).abs()))
-            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
-        let se_a = summ
-            .rows
-            .iter()
-            .filter_map(|r| num(r, "se_mean_alpha_out_deg"))
-            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
-        let cell = |x: Option<f64>| x.map(fmt_num).unwrap_or_default();
-        table.push(vec![
-            model.into(),
-            cell(n),
-            cell(spacing),
-            cell(wall),
-            cell(per),
-            cell(ks_a),
-            cell(ks_d),
-            cell(mean_err),
-            cell(target),
-            cell(se_a),
-            cell(z_a),
-        ]);
-        if let (Some(w), Some(k)) = (wall, ks_a) {
-            if model == "deterministic" {
-                pts_ds.push((w, k));
-            } else {
-                pts_sm.push((w, k));
-            }
-        }
-    }
-    if table.rows.is_empty() {
-        missing(md, "scripts/speed-vs-error.sh", &dir);
-        return Ok(());
-    }
-    table.write(&results.join("speed_vs_error.csv"))?;
-    plot_svg(
-        &results.join("speed_vs_error.svg"),
-        &Plot {
-            title: "KS distance of α⁺ to the reference vs wall time (aniso wall, α⁻ = −12.5°)"
-                .into(),
-            x_label: "wall time per run (s)".into(),
-            y_label: "max KS distance, alpha_out".into(),
-            series: vec![
-                Series::new("deterministic", pts_ds, Kind::Markers),
-                Series::new("stochastic", pts_sm, Kind::Markers),
-            ],
-            log_x: true,
-            log_y: true,
-            ..Default::default()
-        },
-    )?;
-    md.push_str("Reference: deterministic run with the finest grid and the most particles (`speed-vs-error/reference`). Runs either at a fixed particle count or with `--target-se` (whole blocks of 65 536 particles until the standard errors of mean α⁺ and mean β⁺ − β⁻ are at most the target). Wall times from each run's `run.toml` (2-core machine, surface generation included for the deterministic runs). z: the difference of mean α⁺ from the reference in units of the combined standard error. Table: `speed_vs_error.csv`.\n\n| model | particles per condition | target SE (°) | c_L/δ | wall time (s) | µs per particle | max SE of mean α⁺ (°) | max KS α⁺ | max KS β⁺ − β⁻ | max \\|mean α⁺ error\\| (°) | max \\|z\\| α⁺ |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-    for r in &table.rows {
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            r[0], r[1], r[8], r[2], r[3], r[4], r[9], r[5], r[6], r[7], r[10]
-        );
-    }
-    // Cost per rebound, stochastic against deterministic, at equal particle counts.
-    let per = |model: &str, n: &str| {
-        table
-            .rows
-            .iter()
-            .find(|r| {
-                r[0] == model
-                    && r[1] == n
-                    && r[8].is_empty()
-                    && (model == "stochastic" || r[2] == "8")
-            })
-            .and_then(|r| r[4].parse::<f64>().ok())
-    };
-    md.push_str("\nCost per rebound on the same scene (wall time per particle, surface generation included for the deterministic runs at c_L/δ = 8):\n\n| particles | deterministic (µs) | stochastic (µs) | deterministic / stochastic |\n|---|---|---|---|\n");
-    let mut counts: Vec<&String> = table
-        .rows
-        .iter()
-        .filter(|r| r[0] == "stochastic" && r[8].is_empty())
-        .map(|r| &r[1])
-        .collect();
-    counts.sort_by(|a, b| {
-        a.parse::<f64>()
-            .unwrap_or(0.0)
-            .total_cmp(&b.parse::<f64>().unwrap_or(0.0))
-    });
-    counts.dedup();
-    for n in counts {
-        let (d, sm) = (per("deterministic", n), per("stochastic", n));
-        let _ = writeln!(
-            md,
-            "| {n} | {} | {} | {} |",
-            f(d, 3),
-            f(sm, 3),
-            f(d.zip(sm).map(|(d, s)| d / s), 1)
-        );
-    }
-    md.push_str("\n![speed vs error](speed_vs_error.svg)\n\n");
     Ok(())
 }

@@ -1,0 +1,212 @@
+//! The layout of `results/`: the names of the directories the reproduction scripts
+//! (`scripts/*.sh`) write and `rebound report` reads, written once.
+//!
+//! The scripts read the same names from `scripts/paths.sh`, which is generated from
+//! [`SHELL`] ([`shell_script`]): `tests/scripts.rs` fails when the committed file differs,
+//! and `ROUGHWALL_BLESS=1 cargo test --test integration paths_sh` rewrites it.
+//! `scripts/common.sh` sources it. The files inside a run directory (`summary.csv`,
+//! `run.toml`, …) are named by the command that writes them, not here.
+
+/// `scripts/reproduce-all.sh`'s record of whether re-running gave the same bytes.
+pub const REPRODUCIBILITY: &str = "reproducibility.txt";
+
+/// Radenkovic & Simonin 2021 (`scripts/radenkovic2021.sh`).
+pub const RADENKOVIC2021: &str = "radenkovic2021";
+/// Hu et al. 2021 (`scripts/hu2021.sh`).
+pub const HU2021: &str = "hu2021";
+/// Every stochastic variant against `deterministic` (`scripts/wall-models.sh`).
+pub const WALL_MODELS: &str = "wall-models";
+/// The calibrated escape law (`scripts/calibrate.sh`).
+pub const CALIBRATION: &str = "calibration";
+/// Erosion on rough walls (`scripts/erosion.sh`).
+pub const EROSION: &str = "erosion";
+/// Finite spheres (`scripts/finite-size.sh`).
+pub const FINITE_SIZE: &str = "finite-size";
+/// Incident spin (`scripts/spin.sh`).
+pub const SPIN: &str = "spin";
+/// Speed against error (`scripts/speed-vs-error.sh`).
+pub const SPEED_VS_ERROR: &str = "speed-vs-error";
+
+/// A scene's `rebound deterministic` run.
+pub const DETERMINISTIC: &str = "deterministic";
+/// A scene's `rebound stochastic` run.
+pub const STOCHASTIC: &str = "stochastic";
+/// `rebound compare` of a scene's two runs.
+pub const COMPARE: &str = "compare";
+
+/// Radenkovic & Simonin 2021, Table 1: the paper's surface.
+pub const TABLE1: &str = "table1";
+/// Radenkovic & Simonin 2021, Fig. 4: one surface per rms height, `h<height>`.
+pub const FIG4: &str = "fig4";
+/// Prefix of Fig. 4's runs (`h0.2`, …).
+pub const FIG4_RUN: &str = "h";
+/// Prefix of the Sec. 3 scenes (`sec3-aniso`, …).
+pub const SEC3: &str = "sec3-";
+/// Prefix of the Sec. 4 scenes (`sec4-glass-steel`, …).
+pub const SEC4: &str = "sec4-";
+/// The Sec. 4 glass-on-steel scene (the finite-size study compares with it).
+pub const SEC4_GLASS_STEEL: &str = "sec4-glass-steel";
+/// Prefix of the Sec. 4.2 scenes of Figs. 16 and 17 (`sec4-glass-steel-fig16`, …).
+pub const SEC4_FIGS_16_17: &str = "sec4-glass-steel-fig1";
+
+/// Hu et al. 2021, Fig. 4 (spheres).
+pub const HU_FIG4: &str = "fig4";
+/// Hu et al. 2021, Fig. 6 (F_max against β).
+pub const HU_FIG6: &str = "fig6";
+/// Hu et al. 2021, Fig. 9 (ξ against β).
+pub const HU_FIG9: &str = "fig9";
+/// Hu et al. 2021, Fig. 11b (F_max against U_N).
+pub const HU_FIG11B: &str = "fig11b";
+/// Every Hu et al. figure run, one directory each, from `configs/cases/hu-<figure>.toml`.
+pub const HU2021_FIGS: [&str; 9] = [
+    HU_FIG4, HU_FIG6, "fig8", HU_FIG9, "fig10", "fig10b", "fig11", HU_FIG11B, "fig12",
+];
+
+/// The scenes of Radenkovic & Simonin 2021 (directories under [`RADENKOVIC2021`]) on which
+/// every stochastic variant runs against their `deterministic` run; under [`WALL_MODELS`] each
+/// has a directory named without its `sec3-`/`sec4-` prefix ([`scene_name`]).
+pub const WALL_MODELS_SCENES: [&str; 9] = [
+    "sec3-aniso",
+    "sec3-aniso-rev",
+    "sec4-glass-steel-2d",
+    "sec4-glass-steel-iso",
+    "sec4-glass-steel",
+    "sec4-glass-steel-fig16",
+    "sec4-glass-steel-fig16-2d",
+    "sec4-glass-steel-fig17",
+    "sec4-glass-steel-fig17-2d",
+];
+
+/// A scene's name: its directory under [`RADENKOVIC2021`] without the [`SEC3`]/[`SEC4`] prefix.
+pub fn scene_name(dir: &str) -> &str {
+    dir.strip_prefix(SEC3)
+        .or_else(|| dir.strip_prefix(SEC4))
+        .unwrap_or(dir)
+}
+
+/// Speed against error: the reference run.
+pub const SPEED_REFERENCE: &str = "reference";
+/// Speed against error: prefix of the deterministic runs (`det-n1000-s8`, `det-t0.1-s8`).
+pub const SPEED_DETERMINISTIC: &str = "det-";
+/// Speed against error: prefix of the stochastic runs (`sm-n1000`, `sm-t0.1`).
+pub const SPEED_STOCHASTIC: &str = "sm-";
+/// Speed against error: a run compared with the reference, inside the run's directory.
+pub const VS_REFERENCE: &str = "vs-reference";
+
+/// Calibration: the escape table `rebound calibrate` writes.
+pub const CALIBRATION_TABLE: &str = "table";
+/// Calibration: `deterministic` on another surface, compared with the first.
+pub const CALIBRATION_NOISE: &str = "noise";
+
+/// Finite size: the sphere diameters (µm), one run directory each.
+pub const FINITE_SIZE_DIAMETERS_UM: [&str; 4] = ["50", "100", "250", "500"];
+/// Finite size: prefix of the runs of one diameter (`d50`, …).
+pub const FINITE_SIZE_DIAMETER: &str = "d";
+/// Finite size: `stochastic` with the deviations the sphere sees.
+pub const STOCHASTIC_EFFECTIVE: &str = "stochastic-effective";
+/// Finite size: `stochastic` with the wall's nominal deviations.
+pub const STOCHASTIC_NOMINAL: &str = "stochastic-nominal";
+/// Finite size: [`DETERMINISTIC`] against [`STOCHASTIC_EFFECTIVE`].
+pub const COMPARE_EFFECTIVE: &str = "compare-effective";
+/// Finite size: [`DETERMINISTIC`] against [`STOCHASTIC_NOMINAL`].
+pub const COMPARE_NOMINAL: &str = "compare-nominal";
+/// Finite size: prefix of the grid-convergence runs (`grid-s4`, …).
+pub const FINITE_SIZE_GRID: &str = "grid-s";
+/// Finite size: the effective-roughness law (`rebound surface`).
+pub const FINITE_SIZE_LAW: &str = "law";
+
+/// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
+/// is one space-separated word list).
+pub const SHELL: [(&str, &[&str]); 39] = [
+    ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
+    ("RADENKOVIC2021", &[RADENKOVIC2021]),
+    ("HU2021", &[HU2021]),
+    ("WALL_MODELS", &[WALL_MODELS]),
+    ("CALIBRATION", &[CALIBRATION]),
+    ("EROSION", &[EROSION]),
+    ("FINITE_SIZE", &[FINITE_SIZE]),
+    ("SPIN", &[SPIN]),
+    ("SPEED_VS_ERROR", &[SPEED_VS_ERROR]),
+    ("DETERMINISTIC", &[DETERMINISTIC]),
+    ("STOCHASTIC", &[STOCHASTIC]),
+    ("COMPARE", &[COMPARE]),
+    ("TABLE1", &[TABLE1]),
+    ("FIG4", &[FIG4]),
+    ("FIG4_RUN", &[FIG4_RUN]),
+    ("SEC3", &[SEC3]),
+    ("SEC4", &[SEC4]),
+    ("SEC4_GLASS_STEEL", &[SEC4_GLASS_STEEL]),
+    ("SEC4_FIGS_16_17", &[SEC4_FIGS_16_17]),
+    ("HU_FIG4", &[HU_FIG4]),
+    ("HU_FIG6", &[HU_FIG6]),
+    ("HU_FIG9", &[HU_FIG9]),
+    ("HU_FIG11B", &[HU_FIG11B]),
+    ("HU2021_FIGS", &HU2021_FIGS),
+    ("WALL_MODELS_SCENES", &WALL_MODELS_SCENES),
+    ("SPEED_REFERENCE", &[SPEED_REFERENCE]),
+    ("SPEED_DETERMINISTIC", &[SPEED_DETERMINISTIC]),
+    ("SPEED_STOCHASTIC", &[SPEED_STOCHASTIC]),
+    ("VS_REFERENCE", &[VS_REFERENCE]),
+    ("CALIBRATION_TABLE", &[CALIBRATION_TABLE]),
+    ("CALIBRATION_NOISE", &[CALIBRATION_NOISE]),
+    ("FINITE_SIZE_DIAMETERS_UM", &FINITE_SIZE_DIAMETERS_UM),
+    ("FINITE_SIZE_DIAMETER", &[FINITE_SIZE_DIAMETER]),
+    ("STOCHASTIC_EFFECTIVE", &[STOCHASTIC_EFFECTIVE]),
+    ("STOCHASTIC_NOMINAL", &[STOCHASTIC_NOMINAL]),
+    ("COMPARE_EFFECTIVE", &[COMPARE_EFFECTIVE]),
+    ("COMPARE_NOMINAL", &[COMPARE_NOMINAL]),
+    ("FINITE_SIZE_GRID", &[FINITE_SIZE_GRID]),
+    ("FINITE_SIZE_LAW", &[FINITE_SIZE_LAW]),
+];
+
+/// The text of `scripts/paths.sh`: one `P_<NAME>=<value>` line per entry of [`SHELL`].
+pub fn shell_script() -> String {
+    let mut s = String::from(
+        "# The layout of results/: the directory names the reproduction scripts write and\n\
+         # `rebound report` reads. Generated from src/report/paths.rs (tests/scripts.rs checks it;\n\
+         # `ROUGHWALL_BLESS=1 cargo test --test integration paths_sh` rewrites it): do not edit.\n\
+         # Sourced by scripts/common.sh.\n",
+    );
+    for (name, value) in SHELL {
+        s.push_str(&format!("P_{name}=\"{}\"\n", value.join(" ")));
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wall_model_scenes_are_sec3_or_sec4_scenes() {
+        for dir in WALL_MODELS_SCENES {
+            assert!(dir.starts_with(SEC3) || dir.starts_with(SEC4), "{dir}");
+            assert!(
+                !scene_name(dir).is_empty() && scene_name(dir) != dir,
+                "{dir}"
+            );
+        }
+        assert_eq!(scene_name("sec4-glass-steel-2d"), "glass-steel-2d");
+    }
+
+    #[test]
+    fn shell_names_are_unique_and_values_are_plain_words() {
+        let mut names: Vec<&str> = SHELL.iter().map(|(n, _)| *n).collect();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), SHELL.len());
+        for (name, value) in SHELL {
+            assert!(name
+                .chars()
+                .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_'));
+            for v in value {
+                assert!(
+                    !v.is_empty()
+                        && v.chars()
+                            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c)),
+                    "{name}: {v:?}"
+                );
+            }
+        }
+    }
+}

@@ -816,6 +816,7 @@ mod tests {
             c.element_deterministic[cell] = if g > 0.0 { 3 } else { 1 } * ELEMENT_MIN_COUNT;
         }
         let table = EscapeTable::from_counts(c, "w");
+        let state = (Stage::First, table.element_bound(Stage::First, inc.x_in));
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
         let n = 200_000;
         let plain = (0..n)
@@ -823,11 +824,7 @@ mod tests {
             .count() as f64
             / n as f64;
         let corrected = (0..n)
-            .filter(|_| {
-                inc.draw_wall_corrected(&table, Stage::First, x_in, &mut rng)
-                    .gamma
-                    > 0.0
-            })
+            .filter(|_| inc.draw_wall_corrected(&table, &state, &mut rng).gamma > 0.0)
             .count() as f64
             / n as f64;
         // Bilinear reading smooths the step over one bin on either side of 0 (±0.1 Δγ).

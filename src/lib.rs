@@ -6,9 +6,7 @@
 //! every particle its own random stream.
 pub mod angles;
 pub mod case;
-pub mod cli;
 pub mod collision;
-pub mod commands;
 pub mod compare;
 pub mod deterministic;
 pub mod erosion;
@@ -22,6 +20,7 @@ pub mod output;
 pub mod progress;
 pub mod report;
 pub mod rng;
+pub mod run_context;
 pub mod runner;
 pub mod stochastic;
 pub mod surface;

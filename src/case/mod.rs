@@ -1,10 +1,14 @@
 //! TOML case files: the schema (`schema`), loading with one-line errors (`load`),
 //! and validated SI views of the sections each command needs (`resolve`).
 
+pub mod builtin;
+pub mod deterministic;
 pub mod erosion;
+pub mod force;
 pub mod load;
 pub mod resolve;
 pub mod schema;
+pub mod stochastic;
 
 pub use load::{load, load_text, parse, resolve_path, DEFAULT_SEED};
 pub use resolve::{IncidentCondition, Scene, SpeedLaw, SurfaceSpec, WallSource};

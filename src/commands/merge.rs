@@ -2,12 +2,13 @@
 //! become the outputs of one run, byte for byte (see `crate::runner::merge`).
 
 use crate::cli::MergeArgs;
-use crate::commands::{deterministic, stochastic, Context};
-use crate::error::{Error, Result};
-use crate::output::out_dir::{check_distinct, check_out};
-use crate::output::OutputDir;
-use crate::runner::{self, overrides_of};
-use crate::tally::partial::RunIdentity;
+use roughwall::case::{deterministic, stochastic};
+use roughwall::error::{Error, Result};
+use roughwall::output::out_dir::{check_distinct, check_out};
+use roughwall::output::{self, OutputDir};
+use roughwall::run_context::Context;
+use roughwall::runner::{self, overrides_of};
+use roughwall::tally::partial::RunIdentity;
 use std::path::PathBuf;
 
 /// The context of the run the shards came from.
@@ -75,13 +76,20 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         "stochastic" => {
             let mut p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
             p.notes = merged.manifest;
-            stochastic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
+            output::stochastic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
         }
         _ => {
             let surface = id.surface_file.as_deref().map(std::path::Path::new);
             let mut p = deterministic::prepare(&ctx.case, &o, surface)?;
             p.notes = merged.manifest;
-            deterministic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
+            output::deterministic::finish(
+                out.path(),
+                manifest,
+                &p,
+                &merged.tallies,
+                None,
+                seconds,
+            )?;
         }
     }
     out.commit()?;

@@ -172,7 +172,7 @@ fn shipped_cases_resolve() {
         let path = std::path::PathBuf::from(format!("cases/{name}.toml"));
         let case = roughwall::case::load(Some(&path), "").unwrap();
         assert_eq!(case.name, name);
-        let scene = case.scene().unwrap();
+        let scene = case.scene(&mut Vec::new()).unwrap();
         let opt = deterministic_options(&case).unwrap();
         let plan = surface_plan(&scene, &opt.scene).unwrap();
         assert!(matches!(plan, SurfacePlan::Auto(_)));

@@ -85,7 +85,7 @@ fn table1_statistics_full_size() {
     let dir = env!("CARGO_MANIFEST_DIR");
     let path = std::path::Path::new(dir).join("configs/cases/table1.toml");
     let case = case::load(Some(&path), "").unwrap();
-    let spec = case.surface_spec().unwrap();
+    let spec = case.surface_spec(&mut Vec::new()).unwrap();
     assert_eq!(spec.nodes, 5001);
     check_table1(&spec, case.seed.unwrap());
 }

@@ -2,6 +2,7 @@
 //! options, the scene, the surface plan and what to tally
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
+use super::check::{check_int_range, check_range, check_value, Warning};
 use super::{Case, Scene, WallSource};
 use crate::deterministic::scene::{SceneOptions, SurfacePlan};
 use crate::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
@@ -33,53 +34,49 @@ pub struct DeterministicOptions {
 pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
     let d = case.deterministic.clone().unwrap_or_default();
     let mc = d.max_collisions.unwrap_or(DEFAULT_MAX_COLLISIONS as i64);
-    if !(1..=MAX_COLLISIONS_LIMIT).contains(&mc) {
-        return Err(Error::invalid(
-            "deterministic.max_collisions",
-            mc,
-            "an integer from 1 to 1000000",
-        ));
-    }
+    let mc = check_int_range(
+        "deterministic.max_collisions",
+        mc,
+        1,
+        MAX_COLLISIONS_LIMIT,
+        "an integer from 1 to 1000000",
+    )?;
     let def = SceneOptions::default();
     let spc = d
         .spacing_per_corr_length
         .unwrap_or(def.spacing_per_corr_length);
-    if !(1.0..=64.0).contains(&spc) {
-        return Err(Error::invalid(
-            "deterministic.spacing_per_corr_length",
-            spc,
-            "a number from 1 to 64",
-        ));
-    }
+    let spc = check_range(
+        "deterministic.spacing_per_corr_length",
+        spc,
+        1.0,
+        64.0,
+        "a number from 1 to 64",
+    )?;
     let side = d.side_per_corr_length.unwrap_or(def.side_per_corr_length);
-    if !(1.0..=10_000.0).contains(&side) {
-        return Err(Error::invalid(
-            "deterministic.side_per_corr_length",
-            side,
-            "a number from 1 to 10000",
-        ));
-    }
+    let side = check_range(
+        "deterministic.side_per_corr_length",
+        side,
+        1.0,
+        10_000.0,
+        "a number from 1 to 10000",
+    )?;
     let h_um = d.rms_height_um.unwrap_or(def.rms_height_m * 1e6);
     // A picometre to a metre: the scale of a sphere's contact (and far from overflow in
     // the squared heights of the statistics).
-    if !(1e-6..=1e6).contains(&h_um) {
-        return Err(Error::invalid(
-            "deterministic.rms_height_um",
-            h_um,
-            "1e-6 to 1000000 µm (a picometre to a metre)",
-        ));
-    }
-    let sphere = match d.contact.as_deref() {
-        None | Some("centre") => false,
-        Some("sphere") => true,
-        Some(other) => {
-            return Err(Error::invalid(
-                "deterministic.contact",
-                format!("\"{other}\""),
-                "\"centre\" (the particle centre bounces) or \"sphere\" (a sphere of [particles] diameter_um)",
-            ))
-        }
-    };
+    let h_um = check_range(
+        "deterministic.rms_height_um",
+        h_um,
+        1e-6,
+        1e6,
+        "1e-6 to 1000000 µm (a picometre to a metre)",
+    )?;
+    let contact = d.contact.as_deref().unwrap_or("centre");
+    let sphere = check_value(
+        "deterministic.contact",
+        contact,
+        &["centre", "sphere"],
+        "\"centre\" (the particle centre bounces) or \"sphere\" (a sphere of [particles] diameter_um)",
+    )? == 1;
     // A sphere needs the roughness's absolute scale: the automatic surface's height from
     // `[deterministic] rms_height_um` or the wall's `rms_height_um` (or a [surface], or a
     // height file: then the grid is given).
@@ -137,13 +134,16 @@ pub struct Prepared {
     pub surface: Option<SurfacePlan>,
     /// Manifest entries that follow from the case alone (notes).
     pub notes: toml::Table,
+    /// Warnings of the resolution, for the command to print.
+    pub warnings: Vec<Warning>,
 }
 
 /// Resolves the scene, the tracker options, the surface plan and what to tally.
 /// `surface_file`: a height file given with `--surface` (replaces the generated surface;
 /// the case's wall then only labels the deviations).
 pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> Result<Prepared> {
-    let mut scene = case.scene()?;
+    let mut warnings = Vec::new();
+    let mut scene = case.scene(&mut warnings)?;
     scene.set_count(o.particles)?;
     scene.set_target_se(o.target_se)?;
     let options = deterministic_options(case)?;
@@ -198,5 +198,6 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
         specs,
         surface,
         notes,
+        warnings,
     })
 }

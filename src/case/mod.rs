@@ -2,6 +2,7 @@
 //! and validated SI views of the sections each command needs (`resolve`).
 
 pub mod builtin;
+pub mod check;
 pub mod deterministic;
 pub mod erosion;
 pub mod force;
@@ -10,6 +11,7 @@ pub mod resolve;
 pub mod schema;
 pub mod stochastic;
 
+pub use check::Warning;
 pub use load::{load, load_text, parse, resolve_path, DEFAULT_SEED};
 pub use resolve::{IncidentCondition, Scene, SpeedLaw, SurfaceSpec, WallSource};
 pub use schema::*;

@@ -1,8 +1,9 @@
 //! Validated SI views of case sections. Each accessor checks its keys and returns
 //! one-line errors naming the key, the value and what is allowed (exit status 2).
 
+use super::check::Warning;
+pub(super) use super::check::{positive, within};
 use super::schema::*;
-use super::warn;
 use crate::collision::{CollisionLaw, ShParams};
 use crate::error::{Error, Result};
 pub use crate::incidence::{IncidentCondition, SpeedLaw, SpeedReference};
@@ -91,19 +92,6 @@ impl Scene {
     }
 }
 
-/// `v` within `[lo, hi]` (the physical range of a key; `why` says what bounds it).
-pub(super) fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
-    if v.is_finite() && (lo..=hi).contains(&v) {
-        Ok(v)
-    } else {
-        Err(Error::invalid(
-            key,
-            v,
-            &format!("{lo} to {hi}{unit} ({why})"),
-        ))
-    }
-}
-
 /// Incident speeds (m/s): below a micrometre per second adhesion, not rebound, decides;
 /// above 10 km/s impacts are hypervelocity (the wall melts). Both bounds keep every derived
 /// quantity (squares of velocity components) far from underflow and overflow.
@@ -123,14 +111,6 @@ pub const MAX_DIAMETERS: usize = 64;
 /// Longest `[stats] beta_star_deg` list.
 pub const MAX_BETA_STAR: usize = 1000;
 
-pub(super) fn positive(key: &str, v: f64) -> Result<f64> {
-    if v > 0.0 && v.is_finite() {
-        Ok(v)
-    } else {
-        Err(Error::invalid(key, v, "a positive number"))
-    }
-}
-
 /// Narrowest PDF bin (degrees).
 pub const MIN_BIN_WIDTH_DEG: f64 = 0.01;
 
@@ -149,7 +129,7 @@ fn target_se(key: &str, v: f64) -> Result<f64> {
     }
 }
 
-fn deviation(key: &str, v: f64) -> Result<f64> {
+fn deviation(key: &str, v: f64, warnings: &mut Vec<Warning>) -> Result<f64> {
     if !(0.0..=MAX_DEVIATION_DEG).contains(&v) {
         return Err(Error::invalid(
             key,
@@ -158,9 +138,9 @@ fn deviation(key: &str, v: f64) -> Result<f64> {
         ));
     }
     if v > LOW_ROUGHNESS_LIMIT_DEG {
-        warn(&format!(
+        warnings.push(Warning(format!(
             "`{key}` = {v}° is beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°); results are extrapolated"
-        ));
+        )));
     }
     Ok(v.to_radians())
 }
@@ -177,7 +157,7 @@ impl Case {
 
     /// The wall: a full surface when grid keys are given, else deviations
     /// (from `delta_*_deg`, or from `corr_length_*_um` and `rms_height_um` by Eq. 15).
-    pub fn wall_source(&self) -> Result<WallSource> {
+    pub fn wall_source(&self, warnings: &mut Vec<Warning>) -> Result<WallSource> {
         let Some((sec, w)) = self.wall_spec() else {
             return Err(Error::Input(
                 "the case needs a [wall] (delta_xi_deg, delta_zeta_deg) or [surface] section"
@@ -186,14 +166,14 @@ impl Case {
         };
         let has_grid = w.length_um.is_some() || w.nodes.is_some();
         if has_grid {
-            return Ok(WallSource::Surface(self.surface_spec()?));
+            return Ok(WallSource::Surface(self.surface_spec(warnings)?));
         }
-        let axis = |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<f64> {
+        let mut axis = |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<f64> {
             match (c, d) {
                 (Some(_), Some(_)) => Err(Error::Input(format!(
                     "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
                 ))),
-                (None, Some(d)) => deviation(&format!("{sec}.{dname}"), d),
+                (None, Some(d)) => deviation(&format!("{sec}.{dname}"), d, warnings),
                 (Some(c), None) => {
                     let c = positive(&format!("{sec}.{cname}"), c)?;
                     let h = w.rms_height_um.ok_or_else(|| {
@@ -205,6 +185,7 @@ impl Case {
                     deviation(
                         &format!("{sec}.{cname} (as a deviation)"),
                         wall::deviation_from_surface(h, c).to_degrees(),
+                        warnings,
                     )
                 }
                 (None, None) => Err(Error::Input(format!(
@@ -231,7 +212,7 @@ impl Case {
     /// A full surface: `length_um`, `nodes`, `rms_height_um` and per axis a correlation length
     /// or a deviation (converted with Eq. 15). Checks the grid against the correlation lengths:
     /// `δ > c_L/2` is an error, `L < 20 c_L` a warning.
-    pub fn surface_spec(&self) -> Result<SurfaceSpec> {
+    pub fn surface_spec(&self, warnings: &mut Vec<Warning>) -> Result<SurfaceSpec> {
         let Some((sec, w)) = self.wall_spec() else {
             return Err(Error::Input("the case needs a [surface] section".into()));
         };
@@ -268,10 +249,10 @@ impl Case {
                 lengths,
             )?;
         }
-        let axis = |c: Option<f64>,
-                    d: Option<f64>,
-                    cname: &str,
-                    dname: &str|
+        let mut axis = |c: Option<f64>,
+                        d: Option<f64>,
+                        cname: &str,
+                        dname: &str|
          -> Result<Option<f64>> {
             let c = match (c, d) {
                 (Some(_), Some(_)) => {
@@ -296,15 +277,15 @@ impl Case {
                                 ));
                         }
                         if d > LOW_ROUGHNESS_LIMIT_DEG {
-                            warn(&format!(
+                            warnings.push(Warning(format!(
                                     "`{sec}.{cname}` = {c} µm gives Δ = √2 h/c_L = {d:.2}° (Eq. 15), beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°)"
-                                ));
+                                )));
                         }
                     }
                     Some(c)
                 }
                 (None, Some(d)) => {
-                    let dr = deviation(&format!("{sec}.{dname}"), d)?;
+                    let dr = deviation(&format!("{sec}.{dname}"), d, warnings)?;
                     let c = wall::corr_length_from_deviation(h_um, dr);
                     if let Some(c) = c.filter(|_| h_um > 0.0) {
                         within(
@@ -367,9 +348,9 @@ impl Case {
                     ));
                 }
                 if h_um > 0.0 && length_um < 20.0 * c {
-                    warn(&format!(
+                    warnings.push(Warning(format!(
                         "[{sec}] length_um = {length_um} is less than 20 correlation lengths ({name} = {c} µm): statistics will be noisy and biased"
-                    ));
+                    )));
                 }
             }
         }
@@ -454,8 +435,8 @@ impl Case {
     }
 
     /// The scene shared by `deterministic` and `stochastic`.
-    pub fn scene(&self) -> Result<Scene> {
-        let wall = self.wall_source()?;
+    pub fn scene(&self, warnings: &mut Vec<Warning>) -> Result<Scene> {
+        let wall = self.wall_source(warnings)?;
         // A generated surface may be steeper than the wall models go (`surface` studies it).
         let d = wall.deviations();
         for (key, v) in [

@@ -3,7 +3,7 @@
 //! built, except for `[stochastic] effective_for_diameter`; a case with surface parameters
 //! is converted to deviations (Eq. 15).
 
-use super::{warn, Case, Scene, WallSource};
+use super::{Case, Scene, WallSource, Warning};
 use crate::erosion::ErosionSetup;
 use crate::error::{Error, Result};
 use crate::runner::TallyOverrides;
@@ -18,17 +18,20 @@ pub struct Prepared {
     pub specs: Vec<TallySpec>,
     /// Manifest entries that follow from the case alone (notes).
     pub notes: toml::Table,
+    /// Warnings of the resolution, for the command to print.
+    pub warnings: Vec<Warning>,
 }
 
-/// Resolves the scene, the model and what to tally (warnings on stderr).
+/// Resolves the scene, the model and what to tally (and the warnings to print).
 pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
-    let mut scene = case.scene()?;
+    let mut warnings = Vec::new();
+    let mut scene = case.scene(&mut warnings)?;
     // One case file drives both models: its `[deterministic]` section is checked here too.
     super::deterministic::deterministic_options(case)?;
     scene.set_count(o.particles)?;
     scene.set_target_se(o.target_se)?;
     let mut notes = toml::Table::new();
-    let wall = match effective_wall(case, seed)? {
+    let wall = match effective_wall(case, seed, &mut warnings)? {
         Some((dev, table)) => {
             notes.insert("effective_for_diameter".into(), toml::Value::Table(table));
             dev
@@ -41,7 +44,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
             wall.delta_xi.to_degrees(),
             wall.delta_zeta.to_degrees()
         );
-        warn(&note);
+        warnings.push(Warning(note.clone()));
         notes.insert("wall_from_surface".into(), toml::Value::String(note));
     }
     if scene.conditions.iter().any(|c| c.alpha_in_deg() == -90.0) {
@@ -77,6 +80,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
         setup,
         specs,
         notes,
+        warnings,
     })
 }
 
@@ -84,7 +88,11 @@ pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
 /// diameter sees — those of its centre surface (paraboloid dilation, `surface::dilation`) on
 /// the surface `deterministic` generates for the case and seed — with the manifest entries.
 /// `None` without the key.
-fn effective_wall(case: &Case, seed: u64) -> Result<Option<(Deviations, toml::Table)>> {
+fn effective_wall(
+    case: &Case,
+    seed: u64,
+    warnings: &mut Vec<Warning>,
+) -> Result<Option<(Deviations, toml::Table)>> {
     let on = case
         .stochastic
         .as_ref()
@@ -122,6 +130,8 @@ fn effective_wall(case: &Case, seed: u64) -> Result<Option<(Deviations, toml::Ta
     d.contact = Some("sphere".into());
     sphere_case.deterministic = Some(d);
     let det = super::deterministic::prepare(&sphere_case, &TallyOverrides::default(), None)?;
+    // The scene's warnings again (as the deterministic run of the case would print them).
+    warnings.extend(det.warnings);
     let (Some(plan), Some(diameter)) = (&det.surface, det.options.sphere_diameter_m) else {
         return Err(Error::Internal("no surface plan for the sphere".into()));
     };

@@ -2,7 +2,7 @@
 //! on the deterministic simulation of a case (`roughwall::deterministic::calibrate`).
 
 use crate::cli::CalibrateArgs;
-use crate::commands::context;
+use crate::commands::{context, warn};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::generate_surface;
 use roughwall::deterministic::{calibrate::escape_counts, Tracker};
@@ -20,7 +20,8 @@ pub fn run(args: &CalibrateArgs) -> Result<()> {
         particles: args.particles,
         ..Default::default()
     };
-    let p = prepare(&ctx.case, &o, None)?;
+    let mut p = prepare(&ctx.case, &o, None)?;
+    warn(std::mem::take(&mut p.warnings));
     if p.options.sphere_diameter_m.is_some() {
         return Err(Error::Input(
             "`deterministic.contact` = \"sphere\": `rebound calibrate` measures the particle-centre model the stochastic model stands for; remove the key".into(),

@@ -3,7 +3,7 @@
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
 use crate::cli::DeterministicArgs;
-use crate::commands::context;
+use crate::commands::{context, warn};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::build_surface;
 use roughwall::deterministic::{fill_block, Tracker};
@@ -21,6 +21,7 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
     let o = args.tally.overrides();
     let file = args.surface.as_deref();
     let mut p = prepare(&ctx.case, &o, file)?;
+    warn(std::mem::take(&mut p.warnings));
     let plan = runner::plan(
         p.specs.clone(),
         p.scene.count as u64,
@@ -100,7 +101,14 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
         let mut manifest = ctx.manifest;
         let gen_ms = toml::Value::Float((gen_s * 1e3).round() / 1e3);
         manifest.set_run("surface_s", gen_ms);
-        finish(out.path(), manifest, &p, &tallies, Some(&stats), seconds)?;
+        warn(finish(
+            out.path(),
+            manifest,
+            &p,
+            &tallies,
+            Some(&stats),
+            seconds,
+        )?);
     }
     out.commit()?;
     Ok(())

@@ -2,6 +2,7 @@
 //! become the outputs of one run, byte for byte (see `crate::runner::merge`).
 
 use crate::cli::MergeArgs;
+use crate::commands::warn;
 use roughwall::case::{deterministic, stochastic};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::{check_distinct, check_out};
@@ -41,11 +42,13 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         match id.command.as_str() {
             "stochastic" => {
                 let p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
+                warn(p.warnings);
                 Ok((p.specs, p.scene.count as u64))
             }
             "deterministic" => {
                 let surface = id.surface_file.as_deref().map(std::path::Path::new);
                 let p = deterministic::prepare(&ctx.case, &o, surface)?;
+                warn(p.warnings);
                 Ok((p.specs, p.scene.count as u64))
             }
             other => Err(Error::Input(format!(
@@ -75,21 +78,21 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     match id.command.as_str() {
         "stochastic" => {
             let mut p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
+            warn(std::mem::take(&mut p.warnings));
             p.notes = merged.manifest;
-            output::stochastic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
+            let tallies = &merged.tallies;
+            let fin = output::stochastic::finish(out.path(), manifest, &p, tallies, None, seconds);
+            warn(fin?);
         }
         _ => {
             let surface = id.surface_file.as_deref().map(std::path::Path::new);
             let mut p = deterministic::prepare(&ctx.case, &o, surface)?;
+            warn(std::mem::take(&mut p.warnings));
             p.notes = merged.manifest;
-            output::deterministic::finish(
-                out.path(),
-                manifest,
-                &p,
-                &merged.tallies,
-                None,
-                seconds,
-            )?;
+            let tallies = &merged.tallies;
+            let fin =
+                output::deterministic::finish(out.path(), manifest, &p, tallies, None, seconds);
+            warn(fin?);
         }
     }
     out.commit()?;

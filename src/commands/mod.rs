@@ -10,6 +10,7 @@ pub mod stochastic;
 pub mod surface;
 
 use crate::cli::CommonArgs;
+use roughwall::case::Warning;
 use roughwall::error::Result;
 use roughwall::run_context::Context;
 
@@ -22,4 +23,12 @@ pub fn context(common: &CommonArgs, command: &str, default_toml: &str) -> Result
         command,
         default_toml,
     )
+}
+
+/// Hands the warnings of the library to the binary's stderr: `cli::run` prints them, in
+/// order, once the command has succeeded (an error is always the one line a failed run prints).
+pub fn warn(warnings: impl IntoIterator<Item = Warning>) {
+    for w in warnings {
+        roughwall::case::warn(&w.0);
+    }
 }

@@ -2,7 +2,7 @@
 //! (Sec. 3.6, Fig. 13; notes §3) for every incident condition of the case.
 
 use crate::cli::StochasticArgs;
-use crate::commands::context;
+use crate::commands::{context, warn};
 use roughwall::case::{builtin, stochastic::prepare};
 use roughwall::error::Result;
 use roughwall::output::stochastic::finish;
@@ -16,7 +16,8 @@ use roughwall::tally::ConditionTally;
 pub fn run(args: &StochasticArgs) -> Result<()> {
     let ctx = context(&args.common, "stochastic", builtin::STOCHASTIC)?;
     let o = args.tally.overrides();
-    let p = prepare(&ctx.case, &o, ctx.seed)?;
+    let mut p = prepare(&ctx.case, &o, ctx.seed)?;
+    warn(std::mem::take(&mut p.warnings));
     let plan = runner::plan(
         p.specs.clone(),
         p.scene.count as u64,
@@ -49,7 +50,14 @@ pub fn run(args: &StochasticArgs) -> Result<()> {
         runner::write_partial(out.path(), identity, &plan, p.notes, tallies, seconds)?;
     } else {
         let manifest = ctx.manifest;
-        finish(out.path(), manifest, &p, &tallies, Some(&stats), seconds)?;
+        warn(finish(
+            out.path(),
+            manifest,
+            &p,
+            &tallies,
+            Some(&stats),
+            seconds,
+        )?);
     }
     out.commit()?;
     Ok(())

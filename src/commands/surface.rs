@@ -8,7 +8,7 @@
 //! moves with the swap, one outside it is written on its own (atomically).
 
 use crate::cli::SurfaceArgs;
-use crate::commands::context;
+use crate::commands::{context, warn};
 use roughwall::case::builtin;
 use roughwall::error::Result;
 use roughwall::figures::{plot_grid_svg, Kind, Plot, Series};
@@ -31,7 +31,9 @@ use std::time::Instant;
 /// then generate, measure, and write.
 pub fn run(args: &SurfaceArgs) -> Result<()> {
     let mut ctx = context(&args.common, "surface", builtin::SURFACE)?;
-    let spec = ctx.case.surface_spec()?;
+    let mut warnings = Vec::new();
+    let spec = ctx.case.surface_spec(&mut warnings)?;
+    warn(warnings);
     let betas = ctx.case.beta_star()?;
     let diameters = ctx.case.effective_diameters(spec.length_m)?;
     if !diameters.is_empty() {

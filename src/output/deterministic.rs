@@ -2,7 +2,7 @@
 //! `pdfs.csv`, `moments.csv`, the figures and `run.toml`.
 
 use crate::case::deterministic::Prepared;
-use crate::case::{warn, IncidentCondition};
+use crate::case::{IncidentCondition, Warning};
 use crate::deterministic::scene::SceneOptions;
 use crate::deterministic::scene::{SphereDilation, SurfacePlan};
 use crate::deterministic::{plots, LostCounts};
@@ -106,7 +106,7 @@ pub fn sphere_table(s: &SphereDilation) -> toml::Value {
 /// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
 /// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
 /// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
-/// after a merge).
+/// after a merge). Returns the warnings about the run (e.g. lost particles).
 pub fn finish(
     dir: &Path,
     mut manifest: Manifest,
@@ -114,21 +114,22 @@ pub fn finish(
     tallies: &[ConditionTally],
     stats: Option<&[ConditionStats]>,
     seconds: f64,
-) -> Result<()> {
+) -> Result<Vec<Warning>> {
+    let mut warnings = Vec::new();
     let mut results = Vec::with_capacity(tallies.len());
     let mut rows = Vec::with_capacity(tallies.len());
     for (k, t) in tallies.iter().enumerate() {
         let cond = t.spec.condition;
         let lost = LostCounts::from_tally(&t.counters.lost);
         if lost.total() > 0 {
-            warn(&format!(
+            warnings.push(Warning(format!(
                 "α⁻ = {}°, β⁻ = {}°: {} of {} particles lost ({})",
                 cond.alpha_in_deg(),
                 cond.beta_in_deg(),
                 lost.total(),
                 t.counters.particles,
                 lost.describe()
-            ));
+            )));
         }
         if t.followed() == 0 {
             return Err(Error::Model(format!(
@@ -186,7 +187,7 @@ pub fn finish(
         manifest.set_run("particles_per_s", f((total as f64 / seconds).round()));
     }
     manifest.write(dir)?;
-    Ok(())
+    Ok(warnings)
 }
 
 fn condition_row(

@@ -2,7 +2,7 @@
 //! `pdfs.csv`, `moments.csv`, the figures and `run.toml`.
 
 use crate::case::stochastic::Prepared;
-use crate::case::warn;
+use crate::case::Warning;
 use crate::error::Result;
 use crate::output::schema::write_tables;
 use crate::output::{prepare_out_dir, Manifest};
@@ -24,7 +24,7 @@ fn round(x: f64, digits: i32) -> f64 {
 /// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
 /// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
 /// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
-/// after a merge).
+/// after a merge). Returns the warnings about the run (e.g. lost particles).
 pub fn finish(
     dir: &Path,
     mut manifest: Manifest,
@@ -32,7 +32,8 @@ pub fn finish(
     tallies: &[ConditionTally],
     stats: Option<&[ConditionStats]>,
     seconds: f64,
-) -> Result<()> {
+) -> Result<Vec<Warning>> {
+    let mut warnings = Vec::new();
     let wall = p.setup.wall;
     let mut results = Vec::with_capacity(tallies.len());
     let mut rows = Vec::with_capacity(tallies.len());
@@ -40,14 +41,14 @@ pub fn finish(
         let cond = t.spec.condition;
         let c = &t.counters;
         if c.capped > 0 {
-            warn(&format!(
+            warnings.push(Warning(format!(
                 "α⁻ = {}°, β⁻ = {}°: {} of {} rebounds hit the guard of {} candidate walls and were taken off the mean wall",
                 cond.alpha_in_deg(),
                 cond.beta_in_deg(),
                 c.capped,
                 c.particles,
                 crate::stochastic::MAX_TRIES
-            ));
+            )));
         }
         let mut r = t.result();
         r.push_curve(gamma_model_curve(&wall, &cond, p.scene.bin_width_deg));
@@ -135,5 +136,5 @@ pub fn finish(
         manifest.set_run("rebounds_per_s", f((total as f64 / seconds).round()));
     }
     manifest.write(dir)?;
-    Ok(())
+    Ok(warnings)
 }

@@ -24,7 +24,9 @@ thread_local! {
 }
 
 /// Print a warning on stderr: the run goes on, the user should know. Inside
-/// [`capture_warnings`] (e.g. a C host building a wall handle) it is collected instead.
+/// [`capture_warnings`] (the binary runs every command inside it, and prints once the command
+/// has succeeded) it is collected instead. Resolution does not call it: it returns its
+/// [`Warning`]s, and the command hands them here.
 pub fn warn(msg: &str) {
     let captured = CAPTURED.with(|c| {
         c.borrow_mut()

@@ -1,7 +1,9 @@
 //! Validated SI views of case sections. Each accessor checks its keys and returns
 //! one-line errors naming the key, the value and what is allowed (exit status 2).
 
-use super::check::Warning;
+use super::check::{
+    check_greater_than, check_int_range, check_length, check_less_than, check_range, Warning,
+};
 pub(super) use super::check::{positive, within};
 use super::schema::*;
 use crate::collision::{CollisionLaw, ShParams};
@@ -231,13 +233,8 @@ impl Case {
         let nodes = w
             .nodes
             .ok_or_else(|| Error::Input(format!("[{sec}] needs `nodes`")))?;
-        if !(16..=40_000).contains(&nodes) {
-            return Err(Error::invalid(
-                &format!("{sec}.nodes"),
-                nodes,
-                "an integer from 16 to 40000",
-            ));
-        }
+        let key = format!("{sec}.nodes");
+        check_int_range(&key, nodes, 16, 40_000, "an integer from 16 to 40000")?;
         let h_um = need(w.rms_height_um, "rms_height_um")?;
         if h_um != 0.0 {
             within(
@@ -373,13 +370,14 @@ impl Case {
             .as_ref()
             .map(|s| s.diameter_um.clone())
             .unwrap_or_default();
-        if list.len() > MAX_DIAMETERS {
-            return Err(Error::invalid(
-                "stats.diameter_um",
-                format!("a list of {} diameters", list.len()),
-                &format!("at most {MAX_DIAMETERS} diameters"),
-            ));
-        }
+        let allowed = format!("at most {MAX_DIAMETERS} diameters");
+        check_length(
+            "stats.diameter_um",
+            list.len(),
+            MAX_DIAMETERS,
+            "diameters",
+            &allowed,
+        )?;
         let (lo, hi) = DIAMETER_RANGE_UM;
         list.iter()
             .map(|&d| {
@@ -405,13 +403,14 @@ impl Case {
             .as_ref()
             .and_then(|s| s.beta_star_deg.clone())
             .unwrap_or_else(|| vec![0.0, 30.0, 60.0, 90.0]);
-        if list.len() > MAX_BETA_STAR {
-            return Err(Error::invalid(
-                "stats.beta_star_deg",
-                format!("a list of {} angles", list.len()),
-                &format!("at most {MAX_BETA_STAR} directions"),
-            ));
-        }
+        let allowed = format!("at most {MAX_BETA_STAR} directions");
+        check_length(
+            "stats.beta_star_deg",
+            list.len(),
+            MAX_BETA_STAR,
+            "angles",
+            &allowed,
+        )?;
         if list.is_empty() {
             return Err(Error::invalid(
                 "stats.beta_star_deg",
@@ -474,13 +473,8 @@ impl Case {
             ("incidence.alpha_deg", &inc.alpha_deg),
             ("incidence.beta_deg", &betas),
         ] {
-            if list.len() > MAX_ANGLES {
-                return Err(Error::invalid(
-                    key,
-                    format!("a list of {} angles", list.len()),
-                    &format!("at most {MAX_ANGLES} angles"),
-                ));
-            }
+            let allowed = format!("at most {MAX_ANGLES} angles");
+            check_length(key, list.len(), MAX_ANGLES, "angles", &allowed)?;
         }
         let mut conditions = Vec::new();
         let mut seen = std::collections::HashSet::new();
@@ -740,17 +734,11 @@ impl Case {
                     base.map(|b| b.alpha_mu),
                     "alpha_mu_deg",
                 )?;
-                if !(e_h > 0.0 && e_h <= 1.0) {
-                    return Err(Error::invalid(
-                        "collision.e_h",
-                        e_h,
-                        "a restitution coefficient in (0, 1]",
-                    ));
-                }
+                let allowed = "a restitution coefficient in (0, 1]";
+                check_greater_than("collision.e_h", e_h, 0.0, false, allowed)?;
+                check_less_than("collision.e_h", e_h, 1.0, true, allowed)?;
                 for (k, v) in [("collision.mu_0", mu_0), ("collision.mu_h", mu_h)] {
-                    if !(0.0..=2.0).contains(&v) {
-                        return Err(Error::invalid(k, v, "a friction coefficient in [0, 2]"));
-                    }
+                    check_range(k, v, 0.0, 2.0, "a friction coefficient in [0, 2]")?;
                 }
                 for (k, v) in [
                     ("collision.alpha_e_deg", alpha_e),
@@ -869,13 +857,7 @@ impl Values {
         if v.is_empty() {
             return Err(Error::invalid(key, "[]", "at least one value"));
         }
-        if v.len() > 1_000_000 {
-            return Err(Error::invalid(
-                key,
-                format!("a list of {} values", v.len()),
-                "at most 1000000 values",
-            ));
-        }
+        check_length(key, v.len(), 1_000_000, "values", "at most 1000000 values")?;
         if let Some(bad) = v.iter().find(|x| !x.is_finite()) {
             return Err(Error::invalid(key, bad, "finite values"));
         }

@@ -2,11 +2,12 @@
 //! `pdfs.csv`, `moments.csv`, the figures and `run.toml`.
 
 use crate::case::deterministic::Prepared;
-use crate::case::{IncidentCondition, Warning};
+use crate::case::Warning;
 use crate::deterministic::scene::SceneOptions;
 use crate::deterministic::scene::{SphereDilation, SurfacePlan};
 use crate::deterministic::{plots, LostCounts};
 use crate::error::{Error, Result};
+use crate::incidence::IncidentCondition;
 use crate::output::schema::write_tables;
 use crate::output::{prepare_out_dir, Manifest};
 use crate::surface::stats::measured_deviations;

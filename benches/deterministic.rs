@@ -3,16 +3,21 @@
 //! `aniso.toml` scene at 10⁵ particles per condition (surface included).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::case::{IncidentCondition, SpeedLaw};
-use roughwall::cli::{CommonArgs, DeterministicArgs, TallyArgs};
 use roughwall::collision::CollisionLaw;
-use roughwall::commands::deterministic::{generate_surface, SurfacePlan};
-use roughwall::deterministic::scene::{choose_surface, SceneOptions};
+use roughwall::deterministic::scene::{
+    build_surface, choose_surface, generate_surface, SceneOptions, SurfacePlan,
+};
 use roughwall::deterministic::{fill_block, tally_spec, ModelSetup, Tracker};
 use roughwall::erosion::{finnie::Finnie, ErosionModel, ErosionSetup};
+use roughwall::output::{deterministic::finish, OutputDir};
+use roughwall::run_context::Context;
+use roughwall::runner::{self, TallyOverrides};
 use roughwall::surface::HeightField;
 use roughwall::tally::BlockTally;
 use roughwall::wall::Deviations;
+use std::path::Path;
 use std::time::Duration;
 
 const UNIT: SpeedLaw = SpeedLaw::horizontal(1.0, 0.0);
@@ -80,28 +85,63 @@ fn histories(c: &mut Criterion) {
     g.finish();
 }
 
-/// The whole aniso.toml scene (12 conditions × 10⁵ particles) through the command:
-/// surface generation, tracking, tallies, CSVs, figures and run.toml.
+/// What `rebound deterministic --case cases/aniso.toml --particles 100000` does, through
+/// the library: surface generation, tracking, tallies, CSVs, figures and run.toml.
+fn run_case(dir: &Path) {
+    let case = Path::new("cases/aniso.toml");
+    let out = Some(dir.to_path_buf());
+    let ctx = Context::new(
+        Some(case),
+        None,
+        out,
+        "deterministic",
+        builtin::DETERMINISTIC,
+    )
+    .unwrap();
+    let o = TallyOverrides {
+        particles: Some(100_000),
+        ..Default::default()
+    };
+    let p = prepare(&ctx.case, &o, None).unwrap();
+    let (count, target) = (p.scene.count as u64, p.scene.target_se_deg);
+    let plan = runner::plan(p.specs.clone(), count, target, None).unwrap();
+    let sphere = p.options.sphere_diameter_m;
+    let built = build_surface(p.surface.as_ref(), None, sphere, ctx.seed).unwrap();
+    let tracker = Tracker::new(&built.field, p.options.max_collisions).unwrap();
+    let out = OutputDir::begin(&ctx.out_dir, "--out").unwrap();
+    let t0 = std::time::Instant::now();
+    let done = runner::execute(&plan, "deterministic", |k, start, end, block| {
+        let cond = &p.scene.conditions[k];
+        fill_block(
+            &tracker,
+            &p.setup,
+            cond,
+            k as u64,
+            ctx.seed,
+            (start, end),
+            block,
+        )
+    });
+    let seconds = t0.elapsed().as_secs_f64();
+    let (tallies, stats): (Vec<_>, Vec<_>) = done.into_iter().unzip();
+    finish(
+        out.path(),
+        ctx.manifest,
+        &p,
+        &tallies,
+        Some(&stats),
+        seconds,
+    )
+    .unwrap();
+    out.commit().unwrap();
+}
+
+/// The whole aniso.toml scene (12 conditions × 10⁵ particles), as the command runs it.
 fn whole_case(c: &mut Criterion) {
     let dir = std::env::temp_dir().join(format!("rebound-bench-det-{}", std::process::id()));
-    let args = DeterministicArgs {
-        common: CommonArgs {
-            case: Some("cases/aniso.toml".into()),
-            out: Some(dir.clone()),
-            seed: None,
-            threads: None,
-        },
-        surface: None,
-        tally: TallyArgs {
-            particles: Some(100_000),
-            ..Default::default()
-        },
-    };
     let mut g = c.benchmark_group("deterministic_case");
     g.sample_size(10).measurement_time(Duration::from_secs(40));
-    g.bench_function("aniso_1e5_per_condition", |b| {
-        b.iter(|| roughwall::commands::deterministic::run(&args).unwrap())
-    });
+    g.bench_function("aniso_1e5_per_condition", |b| b.iter(|| run_case(&dir)));
     g.finish();
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1,16 +1,16 @@
 //! Command-line interface (clap): parses arguments and dispatches to `commands`.
 
 use crate::commands;
-use crate::error::{Error, Result};
-use crate::runner::TallyOverrides;
-use crate::tally::Shard;
 use clap::{Args, Parser, Subcommand};
+use roughwall::error::{Error, Result};
+use roughwall::runner::TallyOverrides;
+use roughwall::tally::Shard;
 use std::path::PathBuf;
 
 /// Particles bouncing off anisotropic rough walls: surfaces, deterministic bouncing,
 /// a stochastic wall model, and the peak elastic force of spheroids.
 #[derive(Parser, Debug)]
-#[command(name = "rebound", version = crate::BUILD_VERSION, about, long_about = None)]
+#[command(name = "rebound", version = roughwall::BUILD_VERSION, about, long_about = None)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -204,7 +204,7 @@ pub fn run(cli: Cli) -> Result<()> {
     // Warnings are printed once the command has succeeded, so that an error is always the
     // one line a failed run prints.
     // (`install` runs the command on a pool thread: capture there.)
-    let (result, warnings) = pool.install(|| crate::case::capture_warnings(|| dispatch(&cli)));
+    let (result, warnings) = pool.install(|| roughwall::case::capture_warnings(|| dispatch(&cli)));
     if result.is_ok() {
         for w in warnings {
             eprintln!("warning: {w}");

@@ -1,14 +1,19 @@
 //! `rebound`: particles bouncing off anisotropic rough walls.
 //!
-//! The modules follow the pipeline of a run: `case` → wall (`surface` generated, or the
-//! statistical `wall`) → incident particles (`angles`) → `collision` law → `tally` →
-//! `output`/`figures`. `cli` and `commands` glue them to the command line; `rng` gives
-//! every particle its own random stream.
+//! The modules follow the pipeline of a run: `case` (schema, checks in `case::check`, what
+//! each command resolves from a case: `case::deterministic`, `case::stochastic`,
+//! `case::force`, returning warnings instead of printing them) → `run_context` (case, seed,
+//! threads, output folder) → wall (`surface` generated, `deterministic::scene` planning it,
+//! or the statistical `wall`) → incident particles (`incidence`, `angles`) → `collision`
+//! law → `tally` (`runner` drives the blocks) → `output` (each command's tables:
+//! `output::deterministic`, `output::stochastic`, `output::surface`; `force::tables`) and
+//! `figures`. The physics modules (`collision`, `wall`, `surface`, `deterministic`,
+//! `stochastic`, `tally`, `force`, `erosion`) do not import `case`. `rng` gives every
+//! particle its own random stream. The command line (`cli`, `commands`) belongs to the
+//! `rebound` binary (`src/main.rs`), not to this library.
 pub mod angles;
 pub mod case;
-pub mod cli;
 pub mod collision;
-pub mod commands;
 pub mod compare;
 pub mod deterministic;
 pub mod erosion;
@@ -22,6 +27,7 @@ pub mod output;
 pub mod progress;
 pub mod report;
 pub mod rng;
+pub mod run_context;
 pub mod runner;
 pub mod stochastic;
 pub mod surface;

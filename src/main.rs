@@ -1,10 +1,13 @@
 //! The `rebound` binary: parse, dispatch, report errors. The physics lives in the library.
 
+mod cli;
+mod commands;
+
 use clap::error::ErrorKind;
 use clap::Parser;
 
 fn main() {
-    let cli = match roughwall::cli::Cli::try_parse() {
+    let cli = match cli::Cli::try_parse() {
         Ok(cli) => cli,
         Err(e)
             if matches!(
@@ -18,11 +21,11 @@ fn main() {
         }
         Err(e) => {
             // One line, like every other input error: clap's message without its usage hints.
-            eprintln!("{}", roughwall::cli::one_line(&e.render().to_string()));
+            eprintln!("{}", cli::one_line(&e.render().to_string()));
             std::process::exit(2);
         }
     };
-    if let Err(e) = roughwall::cli::run(cli) {
+    if let Err(e) = cli::run(cli) {
         eprintln!("error: {e}");
         std::process::exit(e.exit_code());
     }

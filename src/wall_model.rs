@@ -10,7 +10,7 @@
 //! direction (the principal roughness direction of `Δξ`), `z = x × y`. The C library
 //! (`crate::ffi`) is a thin layer over [`WallModel::rebound`].
 
-use crate::case::{capture_warnings, Case, CollisionSection, StochasticSection, WallSpec};
+use crate::case::{Case, CollisionSection, StochasticSection, WallSpec};
 use crate::collision::CollisionLaw;
 use crate::error::{Error, Result};
 use crate::rng;
@@ -95,17 +95,16 @@ impl WallModel {
             }),
             ..Default::default()
         };
-        let (built, warnings) = capture_warnings(|| -> Result<WallModel> {
-            case.check_finite()?;
-            Ok(WallModel {
-                wall: case.wall_source()?.deviations(),
-                law: case.collision_law()?,
-                psi: case.psi()?,
-                seed: p.seed,
-                variant: with_escape_table(case.variant()?, p.escape_table.as_deref())?,
-            })
-        });
-        Ok((built?, warnings))
+        case.check_finite()?;
+        let mut warnings = Vec::new();
+        let built = WallModel {
+            wall: case.wall_source(&mut warnings)?.deviations(),
+            law: case.collision_law()?,
+            psi: case.psi()?,
+            seed: p.seed,
+            variant: with_escape_table(case.variant()?, p.escape_table.as_deref())?,
+        };
+        Ok((built, warnings.into_iter().map(|w| w.0).collect()))
     }
 
     /// The rebound of one hit (see [`Hit`]); never NaN: an input it cannot use is returned

@@ -33,7 +33,8 @@ fn the_table_reads_back_equal_to_its_source_run() {
     let table = EscapeTable::parse(&text, "t").unwrap();
 
     // The same histories counted through the library: the same table.
-    use roughwall::commands::deterministic::{generate_surface, prepare};
+    use roughwall::case::deterministic::prepare;
+    use roughwall::deterministic::scene::generate_surface;
     use roughwall::deterministic::{calibrate::escape_counts, Tracker};
     let case = roughwall::case::parse(CASE, "cal").unwrap();
     let p = prepare(&case, &Default::default(), None).unwrap();

@@ -155,7 +155,8 @@ fn outputs_are_identical_for_any_thread_count() {
 
 #[test]
 fn shipped_cases_resolve() {
-    use roughwall::commands::deterministic::{deterministic_options, SurfacePlan};
+    use roughwall::case::deterministic::{deterministic_options, surface_plan};
+    use roughwall::deterministic::scene::SurfacePlan;
     for name in [
         "aniso",
         "aniso-rev",
@@ -170,9 +171,9 @@ fn shipped_cases_resolve() {
         let path = std::path::PathBuf::from(format!("cases/{name}.toml"));
         let case = roughwall::case::load(Some(&path), "").unwrap();
         assert_eq!(case.name, name);
-        let scene = case.scene().unwrap();
+        let scene = case.scene(&mut Vec::new()).unwrap();
         let opt = deterministic_options(&case).unwrap();
-        let plan = SurfacePlan::for_scene(&scene, &opt.scene).unwrap();
+        let plan = surface_plan(&scene, &opt.scene).unwrap();
         assert!(matches!(plan, SurfacePlan::Auto(_)));
         if name.starts_with("glass") {
             assert!(matches!(scene.law, CollisionLaw::SommerfeldHuber(_)));

@@ -18,7 +18,7 @@ fn paper_scale_sec3() {
             choose_surface(dxi.to_radians(), dze.to_radians(), &SceneOptions::default()).unwrap();
         let f = gaussian_surface(
             c.nodes,
-            c.spacing_m,
+            c.spacing_m(),
             c.rms_height_m,
             c.corr_length_x_m,
             c.corr_length_z_m,

@@ -1,18 +1,27 @@
 //! `rebound force-sweep` end to end: outputs, shipped cases, bad input.
-use roughwall::cli::{CommonArgs, ForceSweepArgs};
-use roughwall::commands::force_sweep::{resolve, run, HEADER};
-use roughwall::error::Error;
+use roughwall::case::force::resolve;
+use roughwall::force::tables::HEADER;
+use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
-use crate::common::Csv;
+use crate::common::{rebound, Csv, Run};
 
-fn args(case: Option<PathBuf>, out: &Path) -> ForceSweepArgs {
-    ForceSweepArgs {
-        common: CommonArgs {
-            case,
-            out: Some(out.to_path_buf()),
-            ..Default::default()
-        },
+/// The arguments of `rebound force-sweep --out OUT [--case CASE]`.
+fn args(case: Option<PathBuf>, out: &Path) -> Vec<OsString> {
+    let mut a: Vec<OsString> = vec!["force-sweep".into(), "--out".into(), out.into()];
+    if let Some(c) = case {
+        a.extend(["--case".into(), c.into()]);
+    }
+    a
+}
+
+/// Runs the binary: `Ok` on success, else the failed run.
+fn run(args: &[OsString]) -> Result<(), Run> {
+    let r = rebound(args);
+    if r.code == 0 {
+        Ok(())
+    } else {
+        Err(r)
     }
 }
 
@@ -122,8 +131,9 @@ fn case_err(body: &str) -> String {
     std::fs::write(&case, format!("name = \"bad\"\n{body}")).unwrap();
     let out = dir.path().join("out");
     let e = run(&args(Some(case), &out)).unwrap_err();
-    assert!(matches!(e, Error::Input(_)), "{e:?}");
-    let s = e.to_string();
+    // Exit status 2: an input error.
+    assert_eq!(e.code, 2, "{e:?}");
+    let s = e.stderr.strip_suffix('\n').unwrap_or(&e.stderr).to_string();
     assert!(!s.contains('\n'), "{s}");
     assert!(!out.join("force_sweep.csv").exists());
     s

@@ -82,7 +82,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
     expect.push(("wall-models/wall_models.csv".into(), "scene,model,max_ks_alpha_out,max_ks_dbeta,max_abs_bias_mean_alpha_out_deg,max_abs_z_alpha_out,max_abs_bias_mean_dbeta_deg,max_abs_z_dbeta,max_ks_alpha_out_steep,max_abs_bias_mean_alpha_out_steep_deg".into()));
     expect.push((
         "finite-size/law/effective_roughness.csv".into(),
-        roughwall::commands::surface::EFFECTIVE_HEADER.join(","),
+        roughwall::output::surface::EFFECTIVE_HEADER.join(","),
     ));
     expect.push(("spin/spin.csv".into(), "axis,omega_rad_s,model,mean_alpha_out_deg,se_mean_alpha_out_deg,mean_dbeta_deg,se_mean_dbeta_deg".into()));
     expect.push(("finite-size/finite_size.csv".into(), "diameter_um,surface_delta_xi_deg,surface_delta_zeta_deg,effective_delta_xi_deg,effective_delta_zeta_deg,contact_fraction,max_ks_alpha_out_effective,max_ks_dbeta_effective,max_abs_bias_alpha_out_effective_deg,max_ks_alpha_out_nominal,max_ks_dbeta_nominal,max_abs_bias_alpha_out_nominal_deg".into()));

@@ -84,7 +84,7 @@ fn table1_statistics_at_ci_size() {
 fn table1_statistics_full_size() {
     let path = crate::common::shipped_case("cases/table1.toml");
     let case = case::load(Some(&path), "").unwrap();
-    let spec = case.surface_spec().unwrap();
+    let spec = case.surface_spec(&mut Vec::new()).unwrap();
     assert_eq!(spec.nodes, 5001);
     check_table1(&spec, case.seed.unwrap());
 }

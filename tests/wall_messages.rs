@@ -2,14 +2,15 @@
 //! as from a case file (issue 9: "validated with the same ranges and one-line messages as
 //! case files"). For each bad value, the message of `rw_wall_new` is compared with
 //! * the error of the case file holding that value, parsed by `case::parse` and resolved
-//!   as `rebound stochastic` resolves it (`commands::stochastic::prepare`), and
+//!   as `rebound stochastic` resolves it (`case::stochastic::prepare`), and
 //! * what `rebound stochastic --case` prints (`error: ` and the message, one line, exit 2).
 
 use crate::common;
 use common::*;
-use roughwall::commands::stochastic::{prepare, DEFAULT_CASE};
-use roughwall::commands::Context;
+use roughwall::case::builtin::STOCHASTIC as DEFAULT_CASE;
+use roughwall::case::stochastic::prepare;
 use roughwall::ffi::*;
+use roughwall::run_context::Context;
 use std::ffi::{c_char, CStr};
 
 /// A parameter of both interfaces: how to set it in `rw_wall_params` and in a case file.

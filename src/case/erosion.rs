@@ -2,7 +2,7 @@
 //! a key of another model, a missing required key or a value out of range is a one-line
 //! error naming it.
 
-use super::resolve::within;
+use super::check::within;
 use super::schema::{Case, ErosionSection};
 use crate::erosion::dnv::{AngleDependency, Dnv};
 use crate::erosion::finnie::Finnie;

@@ -1,11 +1,17 @@
 //! TOML case files: the schema (`schema`), loading with one-line errors (`load`),
 //! and validated SI views of the sections each command needs (`resolve`).
 
+pub mod builtin;
+pub mod check;
+pub mod deterministic;
 pub mod erosion;
+pub mod force;
 pub mod load;
 pub mod resolve;
 pub mod schema;
+pub mod stochastic;
 
+pub use check::Warning;
 pub use load::{load, load_text, parse, resolve_path, DEFAULT_SEED};
 pub use resolve::{IncidentCondition, Scene, SpeedLaw, SurfaceSpec, WallSource};
 pub use schema::*;
@@ -18,7 +24,9 @@ thread_local! {
 }
 
 /// Print a warning on stderr: the run goes on, the user should know. Inside
-/// [`capture_warnings`] (e.g. a C host building a wall handle) it is collected instead.
+/// [`capture_warnings`] (the binary runs every command inside it, and prints once the command
+/// has succeeded) it is collected instead. Resolution does not call it: it returns its
+/// [`Warning`]s, and the command hands them here.
 pub fn warn(msg: &str) {
     let captured = CAPTURED.with(|c| {
         c.borrow_mut()

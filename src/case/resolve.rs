@@ -1,11 +1,15 @@
 //! Validated SI views of case sections. Each accessor checks its keys and returns
 //! one-line errors naming the key, the value and what is allowed (exit status 2).
 
+use super::check::{
+    check_greater_than, check_int_range, check_length, check_less_than, check_range, Warning,
+};
+pub(super) use super::check::{positive, within};
 use super::schema::*;
-use super::warn;
 use crate::collision::{CollisionLaw, ShParams};
 use crate::error::{Error, Result};
 pub use crate::incidence::{IncidentCondition, SpeedLaw, SpeedReference};
+pub use crate::surface::SurfaceSpec;
 use crate::wall::{self, Deviations};
 
 /// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
@@ -15,34 +19,6 @@ pub const LOW_ROUGHNESS_LIMIT_DEG: f64 = 7.5;
 pub const MAX_DEVIATION_DEG: f64 = 20.0;
 /// Steepest rms slope (degrees) a generated surface may have.
 pub const MAX_SURFACE_SLOPE_DEG: f64 = 45.0;
-
-/// A generated surface, SI units. A `None` correlation length means `Δ = 0` along that
-/// axis: the surface is exactly constant along it (notes §4).
-#[derive(Clone, Debug, PartialEq)]
-pub struct SurfaceSpec {
-    pub length_m: f64,
-    pub nodes: usize,
-    pub rms_height_m: f64,
-    pub corr_length_x_m: Option<f64>,
-    pub corr_length_z_m: Option<f64>,
-}
-
-impl SurfaceSpec {
-    /// Grid spacing `δ = L/N` (notes §4).
-    pub fn spacing_m(&self) -> f64 {
-        self.length_m / self.nodes as f64
-    }
-
-    /// Target deviations from Eq. (15).
-    pub fn deviations(&self) -> Deviations {
-        let d =
-            |c: Option<f64>| c.map_or(0.0, |c| wall::deviation_from_surface(self.rms_height_m, c));
-        Deviations {
-            delta_xi: d(self.corr_length_x_m),
-            delta_zeta: d(self.corr_length_z_m),
-        }
-    }
-}
 
 /// What a case says about the wall.
 #[derive(Clone, Debug, PartialEq)]
@@ -118,19 +94,6 @@ impl Scene {
     }
 }
 
-/// `v` within `[lo, hi]` (the physical range of a key; `why` says what bounds it).
-pub(super) fn within(key: &str, v: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
-    if v.is_finite() && (lo..=hi).contains(&v) {
-        Ok(v)
-    } else {
-        Err(Error::invalid(
-            key,
-            v,
-            &format!("{lo} to {hi}{unit} ({why})"),
-        ))
-    }
-}
-
 /// Incident speeds (m/s): below a micrometre per second adhesion, not rebound, decides;
 /// above 10 km/s impacts are hypervelocity (the wall melts). Both bounds keep every derived
 /// quantity (squares of velocity components) far from underflow and overflow.
@@ -150,14 +113,6 @@ pub const MAX_DIAMETERS: usize = 64;
 /// Longest `[stats] beta_star_deg` list.
 pub const MAX_BETA_STAR: usize = 1000;
 
-pub(super) fn positive(key: &str, v: f64) -> Result<f64> {
-    if v > 0.0 && v.is_finite() {
-        Ok(v)
-    } else {
-        Err(Error::invalid(key, v, "a positive number"))
-    }
-}
-
 /// Narrowest PDF bin (degrees).
 pub const MIN_BIN_WIDTH_DEG: f64 = 0.01;
 
@@ -176,7 +131,7 @@ fn target_se(key: &str, v: f64) -> Result<f64> {
     }
 }
 
-fn deviation(key: &str, v: f64) -> Result<f64> {
+fn deviation(key: &str, v: f64, warnings: &mut Vec<Warning>) -> Result<f64> {
     if !(0.0..=MAX_DEVIATION_DEG).contains(&v) {
         return Err(Error::invalid(
             key,
@@ -185,9 +140,9 @@ fn deviation(key: &str, v: f64) -> Result<f64> {
         ));
     }
     if v > LOW_ROUGHNESS_LIMIT_DEG {
-        warn(&format!(
+        warnings.push(Warning(format!(
             "`{key}` = {v}° is beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°); results are extrapolated"
-        ));
+        )));
     }
     Ok(v.to_radians())
 }
@@ -204,7 +159,7 @@ impl Case {
 
     /// The wall: a full surface when grid keys are given, else deviations
     /// (from `delta_*_deg`, or from `corr_length_*_um` and `rms_height_um` by Eq. 15).
-    pub fn wall_source(&self) -> Result<WallSource> {
+    pub fn wall_source(&self, warnings: &mut Vec<Warning>) -> Result<WallSource> {
         let Some((sec, w)) = self.wall_spec() else {
             return Err(Error::Input(
                 "the case needs a [wall] (delta_xi_deg, delta_zeta_deg) or [surface] section"
@@ -213,14 +168,14 @@ impl Case {
         };
         let has_grid = w.length_um.is_some() || w.nodes.is_some();
         if has_grid {
-            return Ok(WallSource::Surface(self.surface_spec()?));
+            return Ok(WallSource::Surface(self.surface_spec(warnings)?));
         }
-        let axis = |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<f64> {
+        let mut axis = |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<f64> {
             match (c, d) {
                 (Some(_), Some(_)) => Err(Error::Input(format!(
                     "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
                 ))),
-                (None, Some(d)) => deviation(&format!("{sec}.{dname}"), d),
+                (None, Some(d)) => deviation(&format!("{sec}.{dname}"), d, warnings),
                 (Some(c), None) => {
                     let c = positive(&format!("{sec}.{cname}"), c)?;
                     let h = w.rms_height_um.ok_or_else(|| {
@@ -232,6 +187,7 @@ impl Case {
                     deviation(
                         &format!("{sec}.{cname} (as a deviation)"),
                         wall::deviation_from_surface(h, c).to_degrees(),
+                        warnings,
                     )
                 }
                 (None, None) => Err(Error::Input(format!(
@@ -258,7 +214,7 @@ impl Case {
     /// A full surface: `length_um`, `nodes`, `rms_height_um` and per axis a correlation length
     /// or a deviation (converted with Eq. 15). Checks the grid against the correlation lengths:
     /// `δ > c_L/2` is an error, `L < 20 c_L` a warning.
-    pub fn surface_spec(&self) -> Result<SurfaceSpec> {
+    pub fn surface_spec(&self, warnings: &mut Vec<Warning>) -> Result<SurfaceSpec> {
         let Some((sec, w)) = self.wall_spec() else {
             return Err(Error::Input("the case needs a [surface] section".into()));
         };
@@ -277,13 +233,8 @@ impl Case {
         let nodes = w
             .nodes
             .ok_or_else(|| Error::Input(format!("[{sec}] needs `nodes`")))?;
-        if !(16..=40_000).contains(&nodes) {
-            return Err(Error::invalid(
-                &format!("{sec}.nodes"),
-                nodes,
-                "an integer from 16 to 40000",
-            ));
-        }
+        let key = format!("{sec}.nodes");
+        check_int_range(&key, nodes, 16, 40_000, "an integer from 16 to 40000")?;
         let h_um = need(w.rms_height_um, "rms_height_um")?;
         if h_um != 0.0 {
             within(
@@ -295,10 +246,10 @@ impl Case {
                 lengths,
             )?;
         }
-        let axis = |c: Option<f64>,
-                    d: Option<f64>,
-                    cname: &str,
-                    dname: &str|
+        let mut axis = |c: Option<f64>,
+                        d: Option<f64>,
+                        cname: &str,
+                        dname: &str|
          -> Result<Option<f64>> {
             let c = match (c, d) {
                 (Some(_), Some(_)) => {
@@ -323,15 +274,15 @@ impl Case {
                                 ));
                         }
                         if d > LOW_ROUGHNESS_LIMIT_DEG {
-                            warn(&format!(
+                            warnings.push(Warning(format!(
                                     "`{sec}.{cname}` = {c} µm gives Δ = √2 h/c_L = {d:.2}° (Eq. 15), beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°)"
-                                ));
+                                )));
                         }
                     }
                     Some(c)
                 }
                 (None, Some(d)) => {
-                    let dr = deviation(&format!("{sec}.{dname}"), d)?;
+                    let dr = deviation(&format!("{sec}.{dname}"), d, warnings)?;
                     let c = wall::corr_length_from_deviation(h_um, dr);
                     if let Some(c) = c.filter(|_| h_um > 0.0) {
                         within(
@@ -394,9 +345,9 @@ impl Case {
                     ));
                 }
                 if h_um > 0.0 && length_um < 20.0 * c {
-                    warn(&format!(
+                    warnings.push(Warning(format!(
                         "[{sec}] length_um = {length_um} is less than 20 correlation lengths ({name} = {c} µm): statistics will be noisy and biased"
-                    ));
+                    )));
                 }
             }
         }
@@ -419,13 +370,14 @@ impl Case {
             .as_ref()
             .map(|s| s.diameter_um.clone())
             .unwrap_or_default();
-        if list.len() > MAX_DIAMETERS {
-            return Err(Error::invalid(
-                "stats.diameter_um",
-                format!("a list of {} diameters", list.len()),
-                &format!("at most {MAX_DIAMETERS} diameters"),
-            ));
-        }
+        let allowed = format!("at most {MAX_DIAMETERS} diameters");
+        check_length(
+            "stats.diameter_um",
+            list.len(),
+            MAX_DIAMETERS,
+            "diameters",
+            &allowed,
+        )?;
         let (lo, hi) = DIAMETER_RANGE_UM;
         list.iter()
             .map(|&d| {
@@ -451,13 +403,14 @@ impl Case {
             .as_ref()
             .and_then(|s| s.beta_star_deg.clone())
             .unwrap_or_else(|| vec![0.0, 30.0, 60.0, 90.0]);
-        if list.len() > MAX_BETA_STAR {
-            return Err(Error::invalid(
-                "stats.beta_star_deg",
-                format!("a list of {} angles", list.len()),
-                &format!("at most {MAX_BETA_STAR} directions"),
-            ));
-        }
+        let allowed = format!("at most {MAX_BETA_STAR} directions");
+        check_length(
+            "stats.beta_star_deg",
+            list.len(),
+            MAX_BETA_STAR,
+            "angles",
+            &allowed,
+        )?;
         if list.is_empty() {
             return Err(Error::invalid(
                 "stats.beta_star_deg",
@@ -481,8 +434,8 @@ impl Case {
     }
 
     /// The scene shared by `deterministic` and `stochastic`.
-    pub fn scene(&self) -> Result<Scene> {
-        let wall = self.wall_source()?;
+    pub fn scene(&self, warnings: &mut Vec<Warning>) -> Result<Scene> {
+        let wall = self.wall_source(warnings)?;
         // A generated surface may be steeper than the wall models go (`surface` studies it).
         let d = wall.deviations();
         for (key, v) in [
@@ -520,13 +473,8 @@ impl Case {
             ("incidence.alpha_deg", &inc.alpha_deg),
             ("incidence.beta_deg", &betas),
         ] {
-            if list.len() > MAX_ANGLES {
-                return Err(Error::invalid(
-                    key,
-                    format!("a list of {} angles", list.len()),
-                    &format!("at most {MAX_ANGLES} angles"),
-                ));
-            }
+            let allowed = format!("at most {MAX_ANGLES} angles");
+            check_length(key, list.len(), MAX_ANGLES, "angles", &allowed)?;
         }
         let mut conditions = Vec::new();
         let mut seen = std::collections::HashSet::new();
@@ -786,17 +734,11 @@ impl Case {
                     base.map(|b| b.alpha_mu),
                     "alpha_mu_deg",
                 )?;
-                if !(e_h > 0.0 && e_h <= 1.0) {
-                    return Err(Error::invalid(
-                        "collision.e_h",
-                        e_h,
-                        "a restitution coefficient in (0, 1]",
-                    ));
-                }
+                let allowed = "a restitution coefficient in (0, 1]";
+                check_greater_than("collision.e_h", e_h, 0.0, false, allowed)?;
+                check_less_than("collision.e_h", e_h, 1.0, true, allowed)?;
                 for (k, v) in [("collision.mu_0", mu_0), ("collision.mu_h", mu_h)] {
-                    if !(0.0..=2.0).contains(&v) {
-                        return Err(Error::invalid(k, v, "a friction coefficient in [0, 2]"));
-                    }
+                    check_range(k, v, 0.0, 2.0, "a friction coefficient in [0, 2]")?;
                 }
                 for (k, v) in [
                     ("collision.alpha_e_deg", alpha_e),
@@ -915,13 +857,7 @@ impl Values {
         if v.is_empty() {
             return Err(Error::invalid(key, "[]", "at least one value"));
         }
-        if v.len() > 1_000_000 {
-            return Err(Error::invalid(
-                key,
-                format!("a list of {} values", v.len()),
-                "at most 1000000 values",
-            ));
-        }
+        check_length(key, v.len(), 1_000_000, "values", "at most 1000000 values")?;
         if let Some(bad) = v.iter().find(|x| !x.is_finite()) {
             return Err(Error::invalid(key, bad, "finite values"));
         }

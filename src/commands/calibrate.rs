@@ -1,28 +1,27 @@
 //! `rebound calibrate`: the escape table of the `calibrated` stochastic model, measured
-//! on the deterministic simulation of a case (`crate::deterministic::calibrate`).
+//! on the deterministic simulation of a case (`roughwall::deterministic::calibrate`).
 
 use crate::cli::CalibrateArgs;
-use crate::commands::deterministic::{generate_surface, prepare};
-use crate::commands::Context;
-use crate::deterministic::{calibrate::escape_counts, Tracker};
-use crate::error::{Error, Result};
-use crate::output::out_dir::check_out;
-use crate::output::{write_atomic, OutputDir};
-use crate::runner::TallyOverrides;
-use crate::stochastic::escape_table::EscapeTable;
-use crate::surface::stats::measured_deviations;
-
-/// The built-in case: the calibration of the shipped table.
-pub const DEFAULT_CASE: &str = include_str!("../../configs/calibration/aniso.toml");
+use crate::commands::{context, warn};
+use roughwall::case::{builtin, deterministic::prepare};
+use roughwall::deterministic::scene::generate_surface;
+use roughwall::deterministic::{calibrate::escape_counts, Tracker};
+use roughwall::error::{Error, Result};
+use roughwall::output::out_dir::check_out;
+use roughwall::output::{write_atomic, OutputDir};
+use roughwall::runner::TallyOverrides;
+use roughwall::stochastic::escape_table::EscapeTable;
+use roughwall::surface::stats::measured_deviations;
 
 /// Runs the subcommand.
 pub fn run(args: &CalibrateArgs) -> Result<()> {
-    let ctx = Context::new(&args.common, "calibrate", DEFAULT_CASE)?;
+    let ctx = context(&args.common, "calibrate", builtin::CALIBRATE)?;
     let o = TallyOverrides {
         particles: args.particles,
         ..Default::default()
     };
-    let p = prepare(&ctx.case, &o, None)?;
+    let mut p = prepare(&ctx.case, &o, None)?;
+    warn(std::mem::take(&mut p.warnings));
     if p.options.sphere_diameter_m.is_some() {
         return Err(Error::Input(
             "`deterministic.contact` = \"sphere\": `rebound calibrate` measures the particle-centre model the stochastic model stands for; remove the key".into(),

@@ -2,10 +2,10 @@
 //! the PDFs of two runs (see `crate::compare`).
 
 use crate::cli::CompareArgs;
-use crate::error::Result;
+use roughwall::error::Result;
 
 /// Runs the subcommand.
 pub fn run(args: &CompareArgs) -> Result<()> {
-    crate::compare::run_compare(&args.a, &args.b, &args.out, &args.label_a, &args.label_b)?;
+    roughwall::compare::run_compare(&args.a, &args.b, &args.out, &args.label_a, &args.label_b)?;
     Ok(())
 }

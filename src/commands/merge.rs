@@ -2,12 +2,14 @@
 //! become the outputs of one run, byte for byte (see `crate::runner::merge`).
 
 use crate::cli::MergeArgs;
-use crate::commands::{deterministic, stochastic, Context};
-use crate::error::{Error, Result};
-use crate::output::out_dir::{check_distinct, check_out};
-use crate::output::OutputDir;
-use crate::runner::{self, overrides_of};
-use crate::tally::partial::RunIdentity;
+use crate::commands::warn;
+use roughwall::case::{deterministic, stochastic};
+use roughwall::error::{Error, Result};
+use roughwall::output::out_dir::{check_distinct, check_out};
+use roughwall::output::{self, OutputDir};
+use roughwall::run_context::Context;
+use roughwall::runner::{self, overrides_of};
+use roughwall::tally::partial::RunIdentity;
 use std::path::PathBuf;
 
 /// The context of the run the shards came from.
@@ -40,11 +42,13 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         match id.command.as_str() {
             "stochastic" => {
                 let p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
+                warn(p.warnings);
                 Ok((p.specs, p.scene.count as u64))
             }
             "deterministic" => {
                 let surface = id.surface_file.as_deref().map(std::path::Path::new);
                 let p = deterministic::prepare(&ctx.case, &o, surface)?;
+                warn(p.warnings);
                 Ok((p.specs, p.scene.count as u64))
             }
             other => Err(Error::Input(format!(
@@ -74,14 +78,21 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     match id.command.as_str() {
         "stochastic" => {
             let mut p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
+            warn(std::mem::take(&mut p.warnings));
             p.notes = merged.manifest;
-            stochastic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
+            let tallies = &merged.tallies;
+            let fin = output::stochastic::finish(out.path(), manifest, &p, tallies, None, seconds);
+            warn(fin?);
         }
         _ => {
             let surface = id.surface_file.as_deref().map(std::path::Path::new);
             let mut p = deterministic::prepare(&ctx.case, &o, surface)?;
+            warn(std::mem::take(&mut p.warnings));
             p.notes = merged.manifest;
-            deterministic::finish(out.path(), manifest, &p, &merged.tallies, None, seconds)?;
+            let tallies = &merged.tallies;
+            let fin =
+                output::deterministic::finish(out.path(), manifest, &p, tallies, None, seconds);
+            warn(fin?);
         }
     }
     out.commit()?;

@@ -1,7 +1,7 @@
 //! `rebound report`.
 
 use crate::cli::ReportArgs;
-use crate::error::{Error, Result};
+use roughwall::error::{Error, Result};
 
 /// Writes `REPORT.md` and the aggregated tables under `--results`.
 ///
@@ -17,7 +17,7 @@ pub fn run(args: &ReportArgs) -> Result<()> {
             "an existing directory written by scripts/reproduce-all.sh",
         ));
     }
-    crate::report::write_report(&args.results)?;
+    roughwall::report::write_report(&args.results)?;
     eprintln!("wrote {}", args.results.join("REPORT.md").display());
     Ok(())
 }

@@ -8,6 +8,11 @@
 //! chosen from the correlation lengths: spacing `≤ c_L,min / spacing_per_corr_length`,
 //! side `≥ side_per_corr_length · c_L,max`, with an FFT-friendly node count.
 
+use crate::error::{Error, Result};
+use crate::surface::heights_io::read_heights;
+use crate::surface::{generate, HeightField, SurfaceSpec};
+use std::path::Path;
+
 /// Knobs of the choice (case section `[deterministic]`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SceneOptions {
@@ -38,18 +43,6 @@ pub const ONE_D_SIDE_FACTOR: f64 = 100.0;
 /// Node limit of such a profile (one line: memory is no concern).
 pub const MAX_NODES_ONE_D: usize = 4_000_000;
 
-/// A square periodic surface: `nodes × nodes`, side `length_m`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfaceChoice {
-    pub length_m: f64,
-    pub nodes: usize,
-    pub spacing_m: f64,
-    pub rms_height_m: f64,
-    /// `None`: no roughness along that axis (`Δ = 0`).
-    pub corr_length_x_m: Option<f64>,
-    pub corr_length_z_m: Option<f64>,
-}
-
 /// Smallest `n ≥ target` whose only prime factors are 2, 3 and 5.
 pub fn next_smooth(target: usize) -> usize {
     let mut n = target.max(1);
@@ -75,7 +68,7 @@ pub fn choose_surface(
     delta_xi: f64,
     delta_zeta: f64,
     opt: &SceneOptions,
-) -> Result<SurfaceChoice, String> {
+) -> std::result::Result<SurfaceSpec, String> {
     for (key, v) in [("delta_xi_deg", delta_xi), ("delta_zeta_deg", delta_zeta)] {
         if !(v.is_finite() && v >= 0.0) {
             return Err(format!(
@@ -110,10 +103,9 @@ pub fn choose_surface(
         // Smooth wall: any grid will do.
         let nodes = 16;
         let spacing = h;
-        return Ok(SurfaceChoice {
+        return Ok(SurfaceSpec {
             length_m: nodes as f64 * spacing,
             nodes,
-            spacing_m: spacing,
             rms_height_m: 0.0,
             corr_length_x_m: None,
             corr_length_z_m: None,
@@ -145,16 +137,8 @@ pub fn choose_surface(
         ));
     }
     let nodes = 8 * next_smooth((target as usize).div_ceil(8));
-    let choice = SurfaceChoice {
+    let spec = SurfaceSpec {
         length_m: nodes as f64 * spacing,
-        nodes,
-        spacing_m: spacing,
-        rms_height_m: h,
-        corr_length_x_m: cx,
-        corr_length_z_m: cz,
-    };
-    let spec = crate::case::SurfaceSpec {
-        length_m: choice.length_m,
         nodes,
         rms_height_m: h,
         corr_length_x_m: cx,
@@ -167,7 +151,119 @@ pub fn choose_surface(
         &format!("the automatic {nodes}-node surface"),
     )
     .map_err(|e| e.to_string())?;
-    Ok(choice)
+    Ok(spec)
+}
+
+/// Where the surface of a run comes from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SurfacePlan {
+    /// Generated from the case's `[surface]` grid as given.
+    Case(SurfaceSpec),
+    /// Chosen from the deviations (`[wall]`) by [`choose_surface`].
+    Auto(SurfaceSpec),
+}
+
+impl SurfacePlan {
+    /// The plan for deviations `delta_xi`, `delta_zeta` (rad): [`choose_surface`].
+    pub fn auto(delta_xi: f64, delta_zeta: f64, opt: &SceneOptions) -> Result<SurfacePlan> {
+        choose_surface(delta_xi, delta_zeta, opt)
+            .map(SurfacePlan::Auto)
+            .map_err(Error::Input)
+    }
+
+    /// The grid and roughness to generate.
+    pub fn spec(&self) -> &SurfaceSpec {
+        match self {
+            SurfacePlan::Case(s) | SurfacePlan::Auto(s) => s,
+        }
+    }
+
+    /// `surface_choice.source` of `run.toml`.
+    pub fn source(&self) -> &'static str {
+        match self {
+            SurfacePlan::Case(_) => "case",
+            SurfacePlan::Auto(_) => "auto",
+        }
+    }
+}
+
+/// Generates the planned surface with the Garcia–Stoll generator of `crate::surface`
+/// (Radenkovic & Simonin 2021, Eqs. 1–2).
+pub fn generate_surface(plan: &SurfacePlan, seed: u64) -> Result<HeightField> {
+    Ok(generate(plan.spec(), seed))
+}
+
+/// Reads a height field saved by `rebound surface --heights FILE`; every problem is a
+/// one-line input error naming the file.
+pub fn read_surface(path: &Path) -> Result<HeightField> {
+    if !path.is_file() {
+        return Err(Error::Input(format!(
+            "--surface file `{}` not found",
+            path.display()
+        )));
+    }
+    read_heights(path).map_err(|e| match e {
+        Error::Input(m) => Error::Input(format!("--surface {m}")),
+        other => other,
+    })
+}
+
+/// The surface a run tracks on, and how it was made.
+pub struct BuiltSurface {
+    /// The surface the particle centre rides on (the dilated one for a sphere).
+    pub field: HeightField,
+    /// `"file"`, `"case"` or `"auto"`.
+    pub source: &'static str,
+    /// Time to read or generate the surface (s).
+    pub generate_s: f64,
+    /// For a sphere: the dilation of the surface.
+    pub sphere: Option<SphereDilation>,
+}
+
+/// A sphere's centre surface, made from the generated one (`surface::dilation`).
+pub struct SphereDilation {
+    pub diameter_m: f64,
+    /// Fraction of nodes a resting sphere touches.
+    pub contact_fraction: f64,
+    pub dilation_s: f64,
+}
+
+/// Reads `file` (`--surface`) or generates the planned surface; for a sphere of
+/// `sphere_diameter_m`, its centre rides on the dilated surface (paraboloid,
+/// `surface::dilation`).
+pub fn build_surface(
+    plan: Option<&SurfacePlan>,
+    file: Option<&Path>,
+    sphere_diameter_m: Option<f64>,
+    seed: u64,
+) -> Result<BuiltSurface> {
+    let t0 = std::time::Instant::now();
+    let (field, source) = match (file, plan) {
+        (Some(path), _) => (read_surface(path)?, "file"),
+        (None, Some(plan)) => (generate_surface(plan, seed)?, plan.source()),
+        (None, None) => return Err(Error::Internal("no surface plan".into())),
+    };
+    let generate_s = t0.elapsed().as_secs_f64();
+    let Some(d) = sphere_diameter_m else {
+        return Ok(BuiltSurface {
+            field,
+            source,
+            generate_s,
+            sphere: None,
+        });
+    };
+    let t = std::time::Instant::now();
+    let dil = crate::surface::dilation::sphere_centre_surface(&field, d, "contact = \"sphere\"")?;
+    Ok(BuiltSurface {
+        field: dil.field,
+        source,
+        generate_s,
+        sphere: Some(SphereDilation {
+            diameter_m: d,
+            contact_fraction: dil.contact_fraction,
+            dilation_s: t.elapsed().as_secs_f64(),
+        }),
+    })
 }
 
 #[cfg(test)]
@@ -188,7 +284,7 @@ mod tests {
         let cx = c.corr_length_x_m.unwrap();
         assert!(c.corr_length_z_m.is_none());
         assert!(c.length_m >= 100.0 * ONE_D_SIDE_FACTOR * cx);
-        assert!(c.spacing_m <= cx / 8.0 * (1.0 + 1e-12));
+        assert!(c.spacing_m() <= cx / 8.0 * (1.0 + 1e-12));
     }
 
     #[test]
@@ -199,7 +295,7 @@ mod tests {
         let cz = c.corr_length_z_m.unwrap();
         // Eq. (15): c_L = √2 h / Δ, so c_Lx / c_Lz = Δζ / Δξ = 3.
         assert!((cx / cz - 3.0).abs() < 1e-12);
-        assert!(c.spacing_m <= cz / 8.0 * (1.0 + 1e-12));
+        assert!(c.spacing_m() <= cz / 8.0 * (1.0 + 1e-12));
         assert!(c.length_m >= 100.0 * cx);
         assert_eq!(c.nodes % 8, 0);
         assert_eq!(next_smooth(c.nodes / 8), c.nodes / 8);

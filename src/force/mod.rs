@@ -18,6 +18,7 @@ pub mod material;
 pub mod report;
 pub mod spheroid;
 pub mod sweep;
+pub mod tables;
 
 use crate::error::{Error, Result};
 

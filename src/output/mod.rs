@@ -4,8 +4,11 @@
 //! manifest `run.toml`.
 
 pub mod csv;
+pub mod deterministic;
 pub mod out_dir;
 pub mod schema;
+pub mod stochastic;
+pub mod surface;
 
 pub use self::csv::{CsvTable, Rows};
 pub use self::out_dir::OutputDir;

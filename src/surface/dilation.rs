@@ -448,7 +448,7 @@ mod tests {
     /// rms height, and the effective deviations of both.
     #[test]
     fn paraboloid_error_on_a_generated_surface() {
-        let spec = crate::case::SurfaceSpec {
+        let spec = crate::surface::SurfaceSpec {
             length_m: 128e-6,
             nodes: 128,
             rms_height_m: 0.37e-6,

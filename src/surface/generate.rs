@@ -25,9 +25,9 @@
 //! its own stream `rng::stream(seed, &[SURFACE_NOISE, block])`, and every FFT runs on one
 //! grid line at a time, so the heights are bit-identical for any number of threads.
 
-use crate::case::SurfaceSpec;
 use crate::rng::{self, domain};
 use crate::surface::HeightField;
+use crate::surface::SurfaceSpec;
 use rand::Rng;
 use rand_distr::StandardNormal;
 use rayon::prelude::*;

@@ -3,6 +3,8 @@ pub mod dilation;
 pub mod generate;
 pub mod height_field;
 pub mod heights_io;
+pub mod spec;
 pub mod stats;
 pub use generate::generate;
 pub use height_field::HeightField;
+pub use spec::SurfaceSpec;

@@ -1,0 +1,203 @@
+//! What `rebound deterministic` (and `calibrate`) resolve from a case: the `[deterministic]`
+//! options, the scene, the surface plan and what to tally
+//! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
+
+use super::check::{check_int_range, check_range, check_value, Warning};
+use super::{Case, Scene, WallSource};
+use crate::deterministic::scene::{SceneOptions, SurfacePlan};
+use crate::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
+use crate::erosion::ErosionSetup;
+use crate::error::{Error, Result};
+use crate::runner::TallyOverrides;
+use crate::tally::TallySpec;
+use std::path::Path;
+
+/// Flattest incident angle the tracker is asked to follow (degrees): a descent from the top
+/// of a shipped surface to its bottom at this angle takes some 2 · 10⁵ cells, well within
+/// the step budget (`deterministic::trace::MAX_STEPS`).
+pub const MIN_ABS_ALPHA_DEG: f64 = 1e-3;
+
+/// Largest accepted `[deterministic] max_collisions`.
+const MAX_COLLISIONS_LIMIT: i64 = 1_000_000;
+
+/// The `[deterministic]` section, validated.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DeterministicOptions {
+    pub max_collisions: u32,
+    pub scene: SceneOptions,
+    /// A sphere of this diameter (m) bounces (its centre on the dilated surface);
+    /// `None`: the particle centre bounces on the surface (the paper's).
+    pub sphere_diameter_m: Option<f64>,
+}
+
+/// Validates `[deterministic]` (keys named in one-line errors).
+pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
+    let d = case.deterministic.clone().unwrap_or_default();
+    let mc = d.max_collisions.unwrap_or(DEFAULT_MAX_COLLISIONS as i64);
+    let mc = check_int_range(
+        "deterministic.max_collisions",
+        mc,
+        1,
+        MAX_COLLISIONS_LIMIT,
+        "an integer from 1 to 1000000",
+    )?;
+    let def = SceneOptions::default();
+    let spc = d
+        .spacing_per_corr_length
+        .unwrap_or(def.spacing_per_corr_length);
+    let spc = check_range(
+        "deterministic.spacing_per_corr_length",
+        spc,
+        1.0,
+        64.0,
+        "a number from 1 to 64",
+    )?;
+    let side = d.side_per_corr_length.unwrap_or(def.side_per_corr_length);
+    let side = check_range(
+        "deterministic.side_per_corr_length",
+        side,
+        1.0,
+        10_000.0,
+        "a number from 1 to 10000",
+    )?;
+    let h_um = d.rms_height_um.unwrap_or(def.rms_height_m * 1e6);
+    // A picometre to a metre: the scale of a sphere's contact (and far from overflow in
+    // the squared heights of the statistics).
+    let h_um = check_range(
+        "deterministic.rms_height_um",
+        h_um,
+        1e-6,
+        1e6,
+        "1e-6 to 1000000 µm (a picometre to a metre)",
+    )?;
+    let contact = d.contact.as_deref().unwrap_or("centre");
+    let sphere = check_value(
+        "deterministic.contact",
+        contact,
+        &["centre", "sphere"],
+        "\"centre\" (the particle centre bounces) or \"sphere\" (a sphere of [particles] diameter_um)",
+    )? == 1;
+    // A sphere needs the roughness's absolute scale: the automatic surface's height from
+    // `[deterministic] rms_height_um` or the wall's `rms_height_um` (or a [surface], or a
+    // height file: then the grid is given).
+    let wall_h = case.wall.as_ref().and_then(|w| w.rms_height_um);
+    let h_um = if sphere && d.rms_height_um.is_none() {
+        match wall_h {
+            Some(h) => h,
+            None if case.surface.is_some() => h_um,
+            None => {
+                return Err(Error::Input(
+                    "[deterministic] contact = \"sphere\" needs the roughness's absolute scale: set `deterministic.rms_height_um` (or `wall.rms_height_um` with correlation lengths, or give a [surface] or --surface)".into(),
+                ))
+            }
+        }
+    } else {
+        h_um
+    };
+    let sphere_diameter_m = if sphere {
+        let p = case.particles.clone().unwrap_or_default();
+        let d_um = p.diameter_um.ok_or_else(|| {
+            Error::Input(
+                "[deterministic] contact = \"sphere\" needs `particles.diameter_um`, the sphere's diameter".into(),
+            )
+        })?;
+        Some(d_um * 1e-6)
+    } else {
+        None
+    };
+    Ok(DeterministicOptions {
+        max_collisions: mc as u32,
+        scene: SceneOptions {
+            spacing_per_corr_length: spc,
+            side_per_corr_length: side,
+            rms_height_m: h_um * 1e-6,
+        },
+        sphere_diameter_m,
+    })
+}
+
+/// The plan for a scene: its `[surface]` as given, or chosen from the deviations.
+pub fn surface_plan(scene: &Scene, opt: &SceneOptions) -> Result<SurfacePlan> {
+    match &scene.wall {
+        WallSource::Surface(spec) => Ok(SurfacePlan::Case(spec.clone())),
+        WallSource::Deviations(d) => SurfacePlan::auto(d.delta_xi, d.delta_zeta, opt),
+    }
+}
+
+/// What a deterministic run resolves from its case before the surface is built.
+pub struct Prepared {
+    pub scene: Scene,
+    pub options: DeterministicOptions,
+    pub setup: ModelSetup,
+    pub specs: Vec<TallySpec>,
+    /// Where the surface comes from (`None`: a height file).
+    pub surface: Option<SurfacePlan>,
+    /// Manifest entries that follow from the case alone (notes).
+    pub notes: toml::Table,
+    /// Warnings of the resolution, for the command to print.
+    pub warnings: Vec<Warning>,
+}
+
+/// Resolves the scene, the tracker options, the surface plan and what to tally.
+/// `surface_file`: a height file given with `--surface` (replaces the generated surface;
+/// the case's wall then only labels the deviations).
+pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> Result<Prepared> {
+    let mut warnings = Vec::new();
+    let mut scene = case.scene(&mut warnings)?;
+    scene.set_count(o.particles)?;
+    scene.set_target_se(o.target_se)?;
+    let options = deterministic_options(case)?;
+    // Flatter than this, every history would exhaust the tracker's step budget.
+    if let Some(c) = scene
+        .conditions
+        .iter()
+        .find(|c| c.alpha_in_deg().abs() < MIN_ABS_ALPHA_DEG)
+    {
+        return Err(Error::invalid(
+            "incidence.alpha_deg",
+            c.alpha_in_deg(),
+            &format!(
+                "|α⁻| ≥ {MIN_ABS_ALPHA_DEG}° for the deterministic model (the grazing limit its step budget follows; the stochastic model takes any angle)"
+            ),
+        ));
+    }
+    let surface = match surface_file {
+        Some(_) => None,
+        None => Some(surface_plan(&scene, &options.scene)?),
+    };
+    let dev = scene.wall.deviations();
+    let mut notes = toml::Table::new();
+    if scene.conditions.iter().any(|c| c.alpha_in_deg() == -90.0) {
+        notes.insert(
+            "notes".into(),
+            toml::Value::String("normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (physics notes §1)".into()),
+        );
+    }
+    let setup = ModelSetup {
+        law: scene.law,
+        diameter_m: scene.diameter_m,
+        speed: scene.speed,
+        spin: scene.spin,
+        erosion: scene.erosion.map(|model| ErosionSetup {
+            model,
+            particle_mass_kg: scene.particle_mass_kg(),
+            diameter_m: scene.diameter_m,
+        }),
+        wall: dev,
+        psi: scene.psi,
+    };
+    let specs = scene
+        .conditions
+        .iter()
+        .map(|c| tally_spec(&dev, *c, scene.bin_width_deg, setup.erosion.as_ref()))
+        .collect();
+    Ok(Prepared {
+        scene,
+        options,
+        setup,
+        specs,
+        surface,
+        notes,
+        warnings,
+    })
+}

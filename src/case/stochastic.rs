@@ -1,0 +1,167 @@
+//! What `rebound stochastic` resolves from a case: the scene, the wall the model sees and
+//! what to tally (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; notes §3). No surface is
+//! built, except for `[stochastic] effective_for_diameter`; a case with surface parameters
+//! is converted to deviations (Eq. 15).
+
+use super::{Case, Scene, WallSource, Warning};
+use crate::erosion::ErosionSetup;
+use crate::error::{Error, Result};
+use crate::runner::TallyOverrides;
+use crate::stochastic::simulate::{tally_spec, ModelSetup};
+use crate::tally::TallySpec;
+use crate::wall::Deviations;
+
+/// What a stochastic run resolves from its case before any rebound is drawn.
+pub struct Prepared {
+    pub scene: Scene,
+    pub setup: ModelSetup,
+    pub specs: Vec<TallySpec>,
+    /// Manifest entries that follow from the case alone (notes).
+    pub notes: toml::Table,
+    /// Warnings of the resolution, for the command to print.
+    pub warnings: Vec<Warning>,
+}
+
+/// Resolves the scene, the model and what to tally (and the warnings to print).
+pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
+    let mut warnings = Vec::new();
+    let mut scene = case.scene(&mut warnings)?;
+    // One case file drives both models: its `[deterministic]` section is checked here too.
+    super::deterministic::deterministic_options(case)?;
+    scene.set_count(o.particles)?;
+    scene.set_target_se(o.target_se)?;
+    let mut notes = toml::Table::new();
+    let wall = match effective_wall(case, seed, &mut warnings)? {
+        Some((dev, table)) => {
+            notes.insert("effective_for_diameter".into(), toml::Value::Table(table));
+            dev
+        }
+        None => scene.wall.deviations(),
+    };
+    if let WallSource::Surface(_) = scene.wall {
+        let note = format!(
+            "the case gives a surface; the stochastic model uses its deviations from Eq. (15): Δξ = {:.4}°, Δζ = {:.4}°",
+            wall.delta_xi.to_degrees(),
+            wall.delta_zeta.to_degrees()
+        );
+        warnings.push(Warning(note.clone()));
+        notes.insert("wall_from_surface".into(), toml::Value::String(note));
+    }
+    if scene.conditions.iter().any(|c| c.alpha_in_deg() == -90.0) {
+        notes.insert(
+            "notes".into(),
+            toml::Value::String(
+                "normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (physics notes §1)"
+                    .into(),
+            ),
+        );
+    }
+    let setup = ModelSetup {
+        wall,
+        law: scene.law,
+        psi: scene.psi,
+        diameter_m: scene.diameter_m,
+        speed: scene.speed,
+        spin: scene.spin,
+        variant: scene.variant,
+        erosion: scene.erosion.map(|model| ErosionSetup {
+            model,
+            particle_mass_kg: scene.particle_mass_kg(),
+            diameter_m: scene.diameter_m,
+        }),
+    };
+    let specs = scene
+        .conditions
+        .iter()
+        .map(|c| tally_spec(&wall, *c, scene.bin_width_deg, setup.erosion.as_ref()))
+        .collect();
+    Ok(Prepared {
+        scene,
+        setup,
+        specs,
+        notes,
+        warnings,
+    })
+}
+
+/// `[stochastic] effective_for_diameter = true`: the deviations a sphere of the case's
+/// diameter sees — those of its centre surface (paraboloid dilation, `surface::dilation`) on
+/// the surface `deterministic` generates for the case and seed — with the manifest entries.
+/// `None` without the key.
+fn effective_wall(
+    case: &Case,
+    seed: u64,
+    warnings: &mut Vec<Warning>,
+) -> Result<Option<(Deviations, toml::Table)>> {
+    let on = case
+        .stochastic
+        .as_ref()
+        .and_then(|s| s.effective_for_diameter)
+        .unwrap_or(false);
+    if !on {
+        return Ok(None);
+    }
+    let key = "stochastic.effective_for_diameter";
+    if case
+        .particles
+        .as_ref()
+        .and_then(|p| p.diameter_um)
+        .is_none()
+    {
+        return Err(Error::Input(format!(
+            "`{key}` needs `particles.diameter_um`, the sphere's diameter"
+        )));
+    }
+    let scale = case.surface.is_some()
+        || case.wall.as_ref().and_then(|w| w.rms_height_um).is_some()
+        || case
+            .deterministic
+            .as_ref()
+            .and_then(|d| d.rms_height_um)
+            .is_some();
+    if !scale {
+        return Err(Error::Input(format!(
+            "`{key}` needs the roughness's absolute scale: set `deterministic.rms_height_um` (or `wall.rms_height_um` with correlation lengths, or give a [surface])"
+        )));
+    }
+    // The surface and the sphere of `deterministic` with `contact = "sphere"`.
+    let mut sphere_case = case.clone();
+    let mut d = sphere_case.deterministic.clone().unwrap_or_default();
+    d.contact = Some("sphere".into());
+    sphere_case.deterministic = Some(d);
+    let det = super::deterministic::prepare(&sphere_case, &TallyOverrides::default(), None)?;
+    // The scene's warnings again (as the deterministic run of the case would print them).
+    warnings.extend(det.warnings);
+    let (Some(plan), Some(diameter)) = (&det.surface, det.options.sphere_diameter_m) else {
+        return Err(Error::Internal("no surface plan for the sphere".into()));
+    };
+    let field = crate::deterministic::scene::generate_surface(plan, seed)?;
+    let nominal = crate::surface::stats::measured_deviations(&field);
+    let dil =
+        crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
+    let eff = crate::surface::stats::measured_deviations(&dil.field);
+    if !(eff.delta_xi.is_finite() && eff.delta_zeta.is_finite()) {
+        return Err(Error::Model(format!(
+            "`{key}`: the deviations of the sphere's centre surface are not finite numbers"
+        )));
+    }
+    let mut t = toml::Table::new();
+    let deg = |r: f64| toml::Value::Float((r.to_degrees() * 1e4).round() / 1e4);
+    t.insert(
+        "diameter_um".into(),
+        toml::Value::Float((diameter * 1e15).round() / 1e9),
+    );
+    t.insert("surface_delta_xi_deg".into(), deg(nominal.delta_xi));
+    t.insert("surface_delta_zeta_deg".into(), deg(nominal.delta_zeta));
+    t.insert("effective_delta_xi_deg".into(), deg(eff.delta_xi));
+    t.insert("effective_delta_zeta_deg".into(), deg(eff.delta_zeta));
+    t.insert(
+        "contact_fraction".into(),
+        toml::Value::Float((dil.contact_fraction * 1e6).round() / 1e6),
+    );
+    t.insert(
+        "how".into(),
+        "deviations of the sphere's centre surface (paraboloid dilation) on the surface deterministic generates for this case and seed".into(),
+    );
+    Ok(Some((eff, t)))
+}

@@ -1,0 +1,237 @@
+//! The outputs of `rebound deterministic` (one run or merged shards): `summary.csv`,
+//! `pdfs.csv`, `moments.csv`, the figures and `run.toml`.
+
+use crate::case::deterministic::Prepared;
+use crate::case::Warning;
+use crate::deterministic::scene::SceneOptions;
+use crate::deterministic::scene::{SphereDilation, SurfacePlan};
+use crate::deterministic::LostCounts;
+use crate::error::{Error, Result};
+use crate::figures;
+use crate::incidence::IncidentCondition;
+use crate::output::schema::write_tables;
+use crate::output::{prepare_out_dir, Manifest};
+use crate::surface::stats::measured_deviations;
+use crate::surface::HeightField;
+use crate::tally::engine::ConditionStats;
+use crate::tally::{ConditionResult, ConditionTally, BLOCK_SIZE};
+use std::path::Path;
+
+fn f(x: f64) -> toml::Value {
+    toml::Value::Float(x)
+}
+
+fn round(x: f64, digits: i32) -> f64 {
+    let p = 10f64.powi(digits);
+    (x * p).round() / p
+}
+
+/// `surface_choice` of `run.toml`: where the surface came from, its grid and (`measure`)
+/// the deviations it has.
+pub fn surface_table(
+    plan: Option<&SurfacePlan>,
+    file: Option<&Path>,
+    field: &HeightField,
+    source: &str,
+    opt: &SceneOptions,
+    measure: bool,
+) -> toml::Value {
+    let mut t = toml::Table::new();
+    t.insert("source".into(), source.into());
+    if let Some(p) = file {
+        t.insert("file".into(), p.display().to_string().into());
+        t.insert("spacing_x_um".into(), f(field.dx * 1e6));
+        t.insert("spacing_z_um".into(), f(field.dz * 1e6));
+    }
+    if let Some(plan) = plan {
+        let spec = plan.spec();
+        let (l, n, h, cx, cz) = (
+            spec.length_m,
+            spec.nodes,
+            spec.rms_height_m,
+            spec.corr_length_x_m,
+            spec.corr_length_z_m,
+        );
+        t.insert("length_um".into(), f(l * 1e6));
+        t.insert("nodes".into(), toml::Value::Integer(n as i64));
+        t.insert("spacing_um".into(), f(l / n as f64 * 1e6));
+        t.insert("rms_height_um".into(), f(h * 1e6));
+        if let Some(c) = cx {
+            t.insert("corr_length_x_um".into(), f(c * 1e6));
+        }
+        if let Some(c) = cz {
+            t.insert("corr_length_z_um".into(), f(c * 1e6));
+        }
+        if let SurfacePlan::Auto(_) = plan {
+            t.insert(
+                "spacing_per_corr_length".into(),
+                f(opt.spacing_per_corr_length),
+            );
+            t.insert("side_per_corr_length".into(), f(opt.side_per_corr_length));
+            t.insert(
+                "rule".into(),
+                "spacing = c_L,min / spacing_per_corr_length; side ≥ side_per_corr_length · c_L,max; nodes = 8 × 5-smooth".into(),
+            );
+        }
+    }
+    t.insert("grid_nx".into(), toml::Value::Integer(field.nx as i64));
+    t.insert("grid_nz".into(), toml::Value::Integer(field.nz as i64));
+    if measure {
+        let m = measured_deviations(field);
+        t.insert(
+            "measured_delta_xi_deg".into(),
+            f(round(m.delta_xi.to_degrees(), 4)),
+        );
+        t.insert(
+            "measured_delta_zeta_deg".into(),
+            f(round(m.delta_zeta.to_degrees(), 4)),
+        );
+    }
+    toml::Value::Table(t)
+}
+
+/// `sphere_contact` of `run.toml`: the sphere whose centre rides on the dilated surface.
+pub fn sphere_table(s: &SphereDilation) -> toml::Value {
+    let mut t = toml::Table::new();
+    t.insert("contact".into(), "sphere".into());
+    t.insert("diameter_um".into(), f(s.diameter_m * 1e6));
+    t.insert(
+        "approximation".into(),
+        "paraboloid cap (sqrt(R^2 - r^2) - R ~ -r^2/2R), Felzenszwalb-Huttenlocher lower envelopes"
+            .into(),
+    );
+    t.insert("contact_fraction".into(), f(round(s.contact_fraction, 6)));
+    t.insert("dilation_s".into(), f(round(s.dilation_s, 3)));
+    toml::Value::Table(t)
+}
+
+/// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
+/// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
+/// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
+/// after a merge). Returns the warnings about the run (e.g. lost particles).
+pub fn finish(
+    dir: &Path,
+    mut manifest: Manifest,
+    p: &Prepared,
+    tallies: &[ConditionTally],
+    stats: Option<&[ConditionStats]>,
+    seconds: f64,
+) -> Result<Vec<Warning>> {
+    let mut warnings = Vec::new();
+    let mut results = Vec::with_capacity(tallies.len());
+    let mut rows = Vec::with_capacity(tallies.len());
+    for (k, t) in tallies.iter().enumerate() {
+        let cond = t.spec.condition;
+        let lost = LostCounts::from_tally(&t.counters.lost);
+        if lost.total() > 0 {
+            warnings.push(Warning(format!(
+                "α⁻ = {}°, β⁻ = {}°: {} of {} particles lost ({})",
+                cond.alpha_in_deg(),
+                cond.beta_in_deg(),
+                lost.total(),
+                t.counters.particles,
+                lost.describe()
+            )));
+        }
+        if t.followed() == 0 {
+            return Err(Error::Model(format!(
+                "α⁻ = {}°, β⁻ = {}°: no particle could be followed ({})",
+                cond.alpha_in_deg(),
+                cond.beta_in_deg(),
+                lost.describe()
+            )));
+        }
+        let r = t.result();
+        rows.push(condition_row(
+            &cond,
+            t,
+            &lost,
+            stats.and_then(|s| s.get(k)),
+            &r,
+        ));
+        results.push(r);
+    }
+    prepare_out_dir(dir)?;
+    write_tables(dir, &results)?;
+    let figs = figures::deterministic::write(dir, &results, "DS")?;
+    for (k, v) in &p.notes {
+        manifest.set(k, v.clone());
+    }
+    manifest.set("conditions", toml::Value::Array(rows));
+    manifest.set(
+        "figures",
+        toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
+    );
+    manifest.set_run(
+        "max_collisions",
+        toml::Value::Integer(p.options.max_collisions as i64),
+    );
+    manifest.set_run(
+        "particles_per_condition",
+        toml::Value::Integer(p.scene.count as i64),
+    );
+    if let Some(t) = p.scene.target_se_deg {
+        manifest.set_run("target_se_deg", f(t));
+    }
+    manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
+    if let Some(e) = &p.setup.erosion {
+        manifest.set("erosion", e.manifest());
+    }
+    if p.scene.speed.reference != crate::incidence::SpeedReference::Horizontal {
+        manifest.set_run(
+            "speed_reference",
+            toml::Value::String(p.scene.speed.reference.name().into()),
+        );
+    }
+    manifest.set_run("compute_s", f(round(seconds, 4)));
+    let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();
+    if stats.is_some() && seconds > 0.0 {
+        manifest.set_run("particles_per_s", f((total as f64 / seconds).round()));
+    }
+    manifest.write(dir)?;
+    Ok(warnings)
+}
+
+fn condition_row(
+    cond: &IncidentCondition,
+    t: &ConditionTally,
+    lost: &LostCounts,
+    stats: Option<&ConditionStats>,
+    r: &ConditionResult,
+) -> toml::Value {
+    let mut row = toml::Table::new();
+    row.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
+    row.insert("beta_in_deg".into(), f(cond.beta_in_deg()));
+    row.insert(
+        "histories".into(),
+        toml::Value::Integer(t.counters.particles as i64),
+    );
+    row.insert(
+        "blocks".into(),
+        toml::Value::Integer(t.blocks().len() as i64),
+    );
+    if let Some(s) = stats {
+        row.insert("worker_seconds".into(), f(round(s.worker_seconds, 4)));
+        row.insert(
+            "particles_per_worker_s".into(),
+            f(if s.worker_seconds > 0.0 {
+                (t.counters.particles as f64 / s.worker_seconds).round()
+            } else {
+                0.0
+            }),
+        );
+        if let Some(reached) = s.target_reached {
+            row.insert("target_reached".into(), toml::Value::Boolean(reached));
+        }
+    }
+    if let (Some(a), Some(d)) = (r.summary.alpha_out, r.summary.dbeta) {
+        row.insert("se_mean_alpha_out_deg".into(), f(a.se));
+        row.insert("se_mean_dbeta_deg".into(), f(d.se));
+    }
+    row.insert("lost".into(), toml::Value::Integer(lost.total() as i64));
+    row.insert(
+        "collision_cap_hits".into(),
+        toml::Value::Integer(lost.collision_cap as i64),
+    );
+    toml::Value::Table(row)
+}

@@ -1,0 +1,140 @@
+//! The outputs of `rebound stochastic` (one run or merged shards): `summary.csv`,
+//! `pdfs.csv`, `moments.csv`, the figures and `run.toml`.
+
+use crate::case::stochastic::Prepared;
+use crate::case::Warning;
+use crate::error::Result;
+use crate::figures;
+use crate::output::schema::write_tables;
+use crate::output::{prepare_out_dir, Manifest};
+use crate::stochastic::simulate::gamma_model_curve;
+use crate::tally::engine::ConditionStats;
+use crate::tally::{ConditionTally, BLOCK_SIZE};
+use std::path::Path;
+
+fn f(x: f64) -> toml::Value {
+    toml::Value::Float(x)
+}
+
+fn round(x: f64, digits: i32) -> f64 {
+    let p = 10f64.powi(digits);
+    (x * p).round() / p
+}
+
+/// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
+/// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
+/// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
+/// after a merge). Returns the warnings about the run (e.g. lost particles).
+pub fn finish(
+    dir: &Path,
+    mut manifest: Manifest,
+    p: &Prepared,
+    tallies: &[ConditionTally],
+    stats: Option<&[ConditionStats]>,
+    seconds: f64,
+) -> Result<Vec<Warning>> {
+    let mut warnings = Vec::new();
+    let wall = p.setup.wall;
+    let mut results = Vec::with_capacity(tallies.len());
+    let mut rows = Vec::with_capacity(tallies.len());
+    for (k, t) in tallies.iter().enumerate() {
+        let cond = t.spec.condition;
+        let c = &t.counters;
+        if c.capped > 0 {
+            warnings.push(Warning(format!(
+                "α⁻ = {}°, β⁻ = {}°: {} of {} rebounds hit the guard of {} candidate walls and were taken off the mean wall",
+                cond.alpha_in_deg(),
+                cond.beta_in_deg(),
+                c.capped,
+                c.particles,
+                crate::stochastic::MAX_TRIES
+            )));
+        }
+        let mut r = t.result();
+        r.push_curve(gamma_model_curve(&wall, &cond, p.scene.bin_width_deg));
+        let mut row = toml::Table::new();
+        row.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
+        row.insert("beta_in_deg".into(), f(cond.beta_in_deg()));
+        row.insert("rebounds".into(), toml::Value::Integer(c.particles as i64));
+        row.insert(
+            "blocks".into(),
+            toml::Value::Integer(t.blocks().len() as i64),
+        );
+        if let Some(s) = stats.and_then(|s| s.get(k)) {
+            row.insert("worker_seconds".into(), f(round(s.worker_seconds, 4)));
+            row.insert(
+                "rebounds_per_worker_s".into(),
+                f(if s.worker_seconds > 0.0 {
+                    (c.particles as f64 / s.worker_seconds).round()
+                } else {
+                    0.0
+                }),
+            );
+            if let Some(reached) = s.target_reached {
+                row.insert("target_reached".into(), toml::Value::Boolean(reached));
+            }
+        }
+        row.insert(
+            "candidate_walls_per_rebound".into(),
+            f(round(c.tries as f64 / c.particles.max(1) as f64, 4)),
+        );
+        if let Some(ps) = r.summary.p_single {
+            row.insert("p_single".into(), f(round(ps.value, 6)));
+        }
+        if let (Some(a), Some(d)) = (r.summary.alpha_out, r.summary.dbeta) {
+            row.insert("se_mean_alpha_out_deg".into(), f(a.se));
+            row.insert("se_mean_dbeta_deg".into(), f(d.se));
+        }
+        row.insert("capped".into(), toml::Value::Integer(c.capped as i64));
+        rows.push(toml::Value::Table(row));
+        results.push(r);
+    }
+    prepare_out_dir(dir)?;
+    write_tables(dir, &results)?;
+    let figs = figures::stochastic::write(dir, &results, &wall, "SM")?;
+    for (k, v) in &p.notes {
+        manifest.set(k, v.clone());
+    }
+    manifest.set("conditions", toml::Value::Array(rows));
+    manifest.set(
+        "figures",
+        toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
+    );
+    manifest.set_run("psi", f(p.scene.psi));
+    if !p.setup.variant.is_paper() {
+        manifest.set_run(
+            "model",
+            toml::Value::String(p.setup.variant.kind.name().into()),
+        );
+        manifest.set_run(
+            "delta_gamma_deg",
+            f(p.setup.variant.delta_gamma_on(&p.setup.wall).to_degrees()),
+        );
+    }
+    manifest.set_run(
+        "particles_per_condition",
+        toml::Value::Integer(p.scene.count as i64),
+    );
+    if let Some(t) = p.scene.target_se_deg {
+        manifest.set_run("target_se_deg", f(t));
+    }
+    manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
+    if let Some(e) = &p.setup.erosion {
+        manifest.set("erosion", e.manifest());
+    }
+    if p.scene.speed.reference != crate::incidence::SpeedReference::Horizontal {
+        manifest.set_run(
+            "speed_reference",
+            toml::Value::String(p.scene.speed.reference.name().into()),
+        );
+    }
+    manifest.set_run("delta_xi_deg", f(round(wall.delta_xi.to_degrees(), 6)));
+    manifest.set_run("delta_zeta_deg", f(round(wall.delta_zeta.to_degrees(), 6)));
+    let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();
+    manifest.set_run("compute_s", f(round(seconds, 4)));
+    if stats.is_some() && seconds > 0.0 {
+        manifest.set_run("rebounds_per_s", f((total as f64 / seconds).round()));
+    }
+    manifest.write(dir)?;
+    Ok(warnings)
+}

@@ -1,6 +1,6 @@
 //! Command-line interface (clap): parses arguments and dispatches to `commands`.
 
-use crate::commands;
+use crate::commands::{self, Summary};
 use clap::{Args, Parser, Subcommand};
 use roughwall::error::{Error, Result};
 use roughwall::runner::TallyOverrides;
@@ -14,26 +14,49 @@ use std::path::PathBuf;
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
+    /// No summary on success and no progress bar (warnings and errors are still printed).
+    #[arg(long, short = 'q', global = true)]
+    pub quiet: bool,
 }
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Generate a Garcia–Stoll anisotropic Gaussian surface and its normal-angle statistics (Table 1).
+    #[command(
+        after_help = "Example: rebound surface --case cases/table1.toml --heights /tmp/table1.rbhf"
+    )]
     Surface(SurfaceArgs),
     /// Track particle centres bouncing on a generated surface (Figs. 6–9, 12).
+    #[command(
+        after_help = "Example: rebound deterministic --case cases/aniso.toml --particles 100000"
+    )]
     Deterministic(DeterministicArgs),
     /// Run the stochastic rough-wall rebound model (Fig. 13) on the same scenes.
+    #[command(
+        after_help = "Example: rebound stochastic --case cases/glass-steel.toml --target-se 0.02"
+    )]
     Stochastic(StochasticArgs),
     /// Peak elastic force of spheres and prolate spheroids hitting a wall (Hu et al.).
     #[command(name = "force-sweep")]
+    #[command(after_help = "Example: rebound force-sweep --case cases/hu-fig6.toml")]
     ForceSweep(ForceSweepArgs),
     /// Compare the PDFs of two runs (e.g. deterministic vs stochastic).
+    #[command(
+        after_help = "Example: rebound compare --a results/aniso/deterministic --b results/aniso/stochastic --out results/aniso/compare"
+    )]
     Compare(CompareArgs),
     /// Write results/REPORT.md (ours beside the papers' numbers) from the reproduction outputs.
+    #[command(after_help = "Example: rebound report --results results")]
     Report(ReportArgs),
     /// Merge the partial tallies of `--shard K/N` runs into the outputs of one run.
+    #[command(
+        after_help = "Example: rebound merge --out results/gs/merged results/gs/shard-1 results/gs/shard-2"
+    )]
     Merge(MergeArgs),
     /// Measure the escape table of the `calibrated` stochastic model on a deterministic run.
+    #[command(
+        after_help = "Example: rebound calibrate --case calibration/aniso.toml --out /tmp/cal"
+    )]
     Calibrate(CalibrateArgs),
 }
 
@@ -204,16 +227,41 @@ pub fn run(cli: Cli) -> Result<()> {
     // Warnings are printed once the command has succeeded, so that an error is always the
     // one line a failed run prints.
     // (`install` runs the command on a pool thread: capture there.)
-    let (result, warnings) = pool.install(|| roughwall::case::capture_warnings(|| dispatch(&cli)));
-    if result.is_ok() {
-        for w in warnings {
-            eprintln!("warning: {w}");
-        }
+    if cli.quiet {
+        roughwall::progress::hide();
     }
-    result
+    let t0 = std::time::Instant::now();
+    let (result, warnings) = pool.install(|| roughwall::case::capture_warnings(|| dispatch(&cli)));
+    let summary = result?;
+    for w in warnings {
+        eprintln!("warning: {w}");
+    }
+    if !cli.quiet {
+        eprintln!(
+            "{}",
+            summary.line(cli.command.name(), t0.elapsed().as_secs_f64())
+        );
+    }
+    Ok(())
 }
 
-fn dispatch(cli: &Cli) -> Result<()> {
+impl Command {
+    /// The subcommand's name on the command line.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Command::Surface(_) => "surface",
+            Command::Deterministic(_) => "deterministic",
+            Command::Stochastic(_) => "stochastic",
+            Command::ForceSweep(_) => "force-sweep",
+            Command::Compare(_) => "compare",
+            Command::Report(_) => "report",
+            Command::Merge(_) => "merge",
+            Command::Calibrate(_) => "calibrate",
+        }
+    }
+}
+
+fn dispatch(cli: &Cli) -> Result<Summary> {
     match &cli.command {
         Command::Surface(a) => commands::surface::run(a),
         Command::Deterministic(a) => commands::deterministic::run(a),

@@ -3,10 +3,21 @@
 
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
 
-/// Whether progress should be drawn: stderr is a terminal and `CI` is not set.
+/// Set by [`hide`] (`--quiet`).
+static HIDDEN: AtomicBool = AtomicBool::new(false);
+
+/// No progress bar from now on, even on a terminal (`--quiet`).
+pub fn hide() {
+    HIDDEN.store(true, Ordering::Relaxed);
+}
+
+/// Whether progress should be drawn: stderr is a terminal, `CI` is not set, and not hidden.
 fn visible() -> bool {
-    std::io::stderr().is_terminal() && std::env::var_os("CI").is_none()
+    !HIDDEN.load(Ordering::Relaxed)
+        && std::io::stderr().is_terminal()
+        && std::env::var_os("CI").is_none()
 }
 
 /// A bar of `len` steps labelled `what`, or a hidden bar when not on a terminal.

@@ -44,3 +44,116 @@ fn unknown_case_key_names_the_key() {
     );
     rebound(&["stochastic", "--case", case.to_str().unwrap()]).refused("speed_mean");
 }
+
+/// Issue 14, part 8: a successful run ends with one summary line on stderr (what, how many,
+/// how fast, what was written where); stdout stays empty; `--quiet` silences it.
+#[test]
+fn success_prints_a_summary_on_stderr_and_quiet_silences_it() {
+    let dir = Dir::new();
+    let case = dir.write_case(
+        "c.toml",
+        "name = \"s\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n[incidence]\nalpha_deg = [-10.0, -20.0]\n[particles]\ncount = 3000\n",
+    );
+    let out = dir.join("o");
+    let r = rebound(&[
+        "stochastic",
+        "--case",
+        case.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .ok();
+    assert!(r.stdout.is_empty(), "{}", r.stdout);
+    let lines: Vec<&str> = r.stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "{}", r.stderr);
+    let line = lines[0];
+    for part in [
+        "stochastic: 2 conditions, 6 000 rebounds in ",
+        " rebounds/s); wrote ",
+        out.to_str().unwrap(),
+        "moments.csv, pdfs.csv, run.toml, summary.csv",
+        "SVG figures",
+    ] {
+        assert!(line.contains(part), "{part:?} not in {line:?}");
+    }
+    for quiet in ["--quiet", "-q"] {
+        let out = dir.join(format!("q{quiet}"));
+        let r = rebound(&[
+            quiet,
+            "stochastic",
+            "--case",
+            case.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .ok();
+        assert_eq!((r.stdout.as_str(), r.stderr.as_str()), ("", ""), "{quiet}");
+        assert!(out.join("summary.csv").is_file());
+    }
+    // After the subcommand too (a global option), and warnings still print under it.
+    let warned = dir.write_case(
+        "w.toml",
+        "name = \"w\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 9.0\n[incidence]\nalpha_deg = [-10.0]\n[particles]\ncount = 1000\n",
+    );
+    let r = rebound(&[
+        "stochastic",
+        "--case",
+        warned.to_str().unwrap(),
+        "--out",
+        dir.join("w").to_str().unwrap(),
+        "--quiet",
+    ])
+    .ok();
+    let lines: Vec<&str> = r.stderr.lines().collect();
+    assert!(!lines.is_empty(), "the warning must print under --quiet");
+    assert!(
+        lines.iter().all(|l| l.starts_with("warning: ")),
+        "{}",
+        r.stderr
+    );
+}
+
+/// The summary of a shard run says which shard it was and that it wrote a partial tally.
+#[test]
+fn a_shard_run_summary_names_the_shard() {
+    let dir = Dir::new();
+    let out = dir.join("sh");
+    let r = rebound(&[
+        "stochastic",
+        "--particles",
+        "2000",
+        "--shard",
+        "2/3",
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .ok();
+    assert!(
+        r.stderr.starts_with("stochastic: shard 2/3: ") && r.stderr.contains("(partial.toml)"),
+        "{}",
+        r.stderr
+    );
+}
+
+/// Issue 14, part 10: `rebound <command> --help` shows an example of that command.
+#[test]
+fn every_command_help_shows_an_example() {
+    for sub in [
+        "surface",
+        "deterministic",
+        "stochastic",
+        "force-sweep",
+        "compare",
+        "report",
+        "merge",
+        "calibrate",
+    ] {
+        let r = rebound(&[sub, "--help"]);
+        assert_eq!(r.code, 0);
+        assert!(
+            r.stdout.contains(&format!("Example: rebound {sub} ")),
+            "{sub} --help has no example:\n{}",
+            r.stdout
+        );
+    }
+}

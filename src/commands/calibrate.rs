@@ -2,7 +2,7 @@
 //! on the deterministic simulation of a case (`roughwall::deterministic::calibrate`).
 
 use crate::cli::CalibrateArgs;
-use crate::commands::{context, warn};
+use crate::commands::{context, grouped, warn, Summary};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::generate_surface;
 use roughwall::deterministic::{calibrate::escape_counts, Tracker};
@@ -14,7 +14,7 @@ use roughwall::stochastic::escape_table::EscapeTable;
 use roughwall::surface::stats::measured_deviations;
 
 /// Runs the subcommand.
-pub fn run(args: &CalibrateArgs) -> Result<()> {
+pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     let ctx = context(&args.common, "calibrate", builtin::CALIBRATE)?;
     let o = TallyOverrides {
         particles: args.particles,
@@ -96,6 +96,9 @@ pub fn run(args: &CalibrateArgs) -> Result<()> {
         toml::Value::Float((seconds * 1e3).round() / 1e3),
     );
     manifest.write(out.path())?;
-    out.commit()?;
-    Ok(())
+    let dir = out.commit()?;
+    let histories = count * p.scene.conditions.len() as u64;
+    let mut summary = Summary::particles(p.scene.conditions.len(), histories, "histories", &dir);
+    summary.work += &format!(", {} collisions counted", grouped(table.counts().total()));
+    Ok(summary)
 }

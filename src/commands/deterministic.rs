@@ -3,7 +3,7 @@
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
 use crate::cli::DeterministicArgs;
-use crate::commands::{context, warn};
+use crate::commands::{context, warn, Summary};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::build_surface;
 use roughwall::deterministic::{fill_block, Tracker};
@@ -16,7 +16,7 @@ use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
 
 /// Runs the subcommand.
-pub fn run(args: &DeterministicArgs) -> Result<()> {
+pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     let ctx = context(&args.common, "deterministic", builtin::DETERMINISTIC)?;
     let o = args.tally.overrides();
     let file = args.surface.as_deref();
@@ -93,6 +93,8 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
     });
     let seconds = t1.elapsed().as_secs_f64();
     let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
+    let particles = tallies.iter().map(|t| t.counters.particles).sum();
+    let tallies_len = tallies.len();
     let gen_s = built.generate_s;
     if let Some(identity) = &identity {
         let total_s = seconds + gen_s;
@@ -110,6 +112,12 @@ pub fn run(args: &DeterministicArgs) -> Result<()> {
             seconds,
         )?);
     }
-    out.commit()?;
-    Ok(())
+    let dir = out.commit()?;
+    let what = match plan.shard {
+        Some(s) => format!("shard {}/{}: ", s.index, s.count),
+        None => String::new(),
+    };
+    let mut summary = Summary::particles(tallies_len, particles, "histories", &dir);
+    summary.work = format!("{what}{}", summary.work);
+    Ok(summary)
 }

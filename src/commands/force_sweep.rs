@@ -15,7 +15,7 @@
 //!
 //! `--out` is written as a whole (staging directory, lock, swap: `roughwall::output::out_dir`).
 use crate::cli::ForceSweepArgs;
-use crate::commands::context;
+use crate::commands::{context, grouped, Summary, Wrote};
 use roughwall::case::{builtin, force::resolve};
 use roughwall::error::Result;
 use roughwall::figures;
@@ -27,7 +27,7 @@ use roughwall::force::Model;
 use roughwall::output::OutputDir;
 
 /// Runs the subcommand.
-pub fn run(args: &ForceSweepArgs) -> Result<()> {
+pub fn run(args: &ForceSweepArgs) -> Result<Summary> {
     let mut ctx = context(&args.common, "force-sweep", builtin::FORCE_SWEEP)?;
     let (material, sweep) = resolve(&ctx.case)?;
     let out = OutputDir::begin(&ctx.out_dir, "--out")?;
@@ -53,10 +53,9 @@ pub fn run(args: &ForceSweepArgs) -> Result<()> {
         .set("force", manifest_table(&material, rows.len()));
     ctx.manifest.write(&dir)?;
     let dir = out.commit()?;
-    eprintln!(
-        "force-sweep: {} rows → {}",
-        rows.len(),
-        dir.join("force_sweep.csv").display()
-    );
-    Ok(())
+    Ok(Summary {
+        work: format!("{} sweep points", grouped(rows.len() as u64)),
+        rate: Some((rows.len() as u64, "points")),
+        wrote: Wrote::Dir(dir),
+    })
 }

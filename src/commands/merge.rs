@@ -2,7 +2,7 @@
 //! become the outputs of one run, byte for byte (see `crate::runner::merge`).
 
 use crate::cli::MergeArgs;
-use crate::commands::warn;
+use crate::commands::{warn, Summary};
 use roughwall::case::{deterministic, stochastic};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::{check_distinct, check_out};
@@ -25,7 +25,7 @@ fn context(id: &RunIdentity, out: Option<PathBuf>) -> Result<Context> {
 }
 
 /// Runs the subcommand.
-pub fn run(args: &MergeArgs) -> Result<()> {
+pub fn run(args: &MergeArgs) -> Result<Summary> {
     let inputs: Vec<(&str, &std::path::Path)> = args
         .inputs
         .iter()
@@ -75,6 +75,19 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         ),
     );
     let seconds: f64 = merged.seconds.iter().sum();
+    let particles = merged.tallies.iter().map(|t| t.counters.particles).sum();
+    let unit = if id.command == "stochastic" {
+        "rebounds"
+    } else {
+        "histories"
+    };
+    let mut summary = Summary::particles(merged.tallies.len(), particles, unit, &ctx.out_dir);
+    // Merging takes no Monte Carlo time: the shards' rate is their own.
+    summary.rate = None;
+    summary.work = format!(
+        "{} shards of {}: {}",
+        merged.shards, id.command, summary.work
+    );
     match id.command.as_str() {
         "stochastic" => {
             let mut p = stochastic::prepare(&ctx.case, &o, ctx.seed)?;
@@ -95,6 +108,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
             warn(fin?);
         }
     }
-    out.commit()?;
-    Ok(())
+    let dir = out.commit()?;
+    summary.wrote = crate::commands::Wrote::Dir(dir);
+    Ok(summary)
 }

@@ -13,6 +13,109 @@ use crate::cli::CommonArgs;
 use roughwall::case::Warning;
 use roughwall::error::Result;
 use roughwall::run_context::Context;
+use std::path::{Path, PathBuf};
+
+/// What a successful command tells its user on stderr (unless `--quiet`): what it did, how
+/// fast, and what it wrote where.
+pub struct Summary {
+    /// What was done, e.g. `12 conditions, 1 200 000 particles`.
+    pub work: String,
+    /// Items done and their name, for a rate (e.g. `(1_200_000, "rebounds")`).
+    pub rate: Option<(u64, &'static str)>,
+    /// What was written: a directory (its files are listed) or named files.
+    pub wrote: Wrote,
+}
+
+/// Where a command's outputs went.
+pub enum Wrote {
+    /// A whole output directory.
+    Dir(PathBuf),
+    /// Single files (`report` adds to an existing tree).
+    Files(Vec<PathBuf>),
+}
+
+impl Summary {
+    /// Monte Carlo work: conditions and particles (or histories), with a rate.
+    pub fn particles(conditions: usize, particles: u64, unit: &'static str, dir: &Path) -> Summary {
+        Summary {
+            work: format!(
+                "{} condition{}, {} {unit}",
+                conditions,
+                if conditions == 1 { "" } else { "s" },
+                grouped(particles)
+            ),
+            rate: Some((particles, unit)),
+            wrote: Wrote::Dir(dir.to_path_buf()),
+        }
+    }
+
+    /// The summary line of `command` that took `seconds`.
+    pub fn line(&self, command: &str, seconds: f64) -> String {
+        let rate = match self.rate {
+            Some((n, unit)) if seconds > 0.0 && n > 0 => {
+                format!(" ({} {unit}/s)", per_second(n as f64 / seconds))
+            }
+            _ => String::new(),
+        };
+        let wrote = match &self.wrote {
+            Wrote::Dir(d) => format!("{}/ ({})", d.display(), listing(d)),
+            Wrote::Files(f) => f
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", "),
+        };
+        format!(
+            "{command}: {} in {:.2} s{rate}; wrote {wrote}",
+            self.work, seconds
+        )
+    }
+}
+
+/// `1234567` as `1 234 567`.
+pub fn grouped(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            out.push(' ');
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// A rate in the largest unit that keeps it at or above 1: `2.31 M`, `850 k`.
+fn per_second(x: f64) -> String {
+    if x >= 1e6 {
+        format!("{:.2} M", x / 1e6)
+    } else if x >= 1e3 {
+        format!("{:.1} k", x / 1e3)
+    } else {
+        format!("{x:.1}")
+    }
+}
+
+/// The files of an output directory: tables and manifests by name, figures counted.
+fn listing(dir: &Path) -> String {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|d| {
+            d.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    names.sort();
+    let figures = names.iter().filter(|n| n.ends_with(".svg")).count();
+    let mut shown: Vec<String> = names.into_iter().filter(|n| !n.ends_with(".svg")).collect();
+    if figures > 0 {
+        shown.push(format!(
+            "{figures} SVG figure{}",
+            if figures == 1 { "" } else { "s" }
+        ));
+    }
+    shown.join(", ")
+}
 
 /// The run context of `--case`, `--seed` and `--out` (threads: the pool the command runs in).
 pub fn context(common: &CommonArgs, command: &str, default_toml: &str) -> Result<Context> {

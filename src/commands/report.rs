@@ -1,6 +1,7 @@
 //! `rebound report`.
 
 use crate::cli::ReportArgs;
+use crate::commands::{Summary, Wrote};
 use roughwall::error::{Error, Result};
 
 /// Writes `REPORT.md` and the aggregated tables under `--results`.
@@ -9,7 +10,7 @@ use roughwall::error::{Error, Result};
 /// few files (`REPORT.md`, `fig4.csv`/`.svg`, `speed_vs_error.csv`/`.svg`) to an existing
 /// results tree that the runs own, so each file is written on its own, atomically
 /// (`output::write_atomic`: temporary file, then rename).
-pub fn run(args: &ReportArgs) -> Result<()> {
+pub fn run(args: &ReportArgs) -> Result<Summary> {
     if !args.results.is_dir() {
         return Err(Error::invalid(
             "--results",
@@ -18,6 +19,9 @@ pub fn run(args: &ReportArgs) -> Result<()> {
         ));
     }
     roughwall::report::write_report(&args.results)?;
-    eprintln!("wrote {}", args.results.join("REPORT.md").display());
-    Ok(())
+    Ok(Summary {
+        work: format!("the report of {}", args.results.display()),
+        rate: None,
+        wrote: Wrote::Files(vec![args.results.join("REPORT.md")]),
+    })
 }

@@ -2,7 +2,7 @@
 //! (Sec. 3.6, Fig. 13; notes §3) for every incident condition of the case.
 
 use crate::cli::StochasticArgs;
-use crate::commands::{context, warn};
+use crate::commands::{context, warn, Summary};
 use roughwall::case::{builtin, stochastic::prepare};
 use roughwall::error::Result;
 use roughwall::output::stochastic::finish;
@@ -13,7 +13,7 @@ use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
 
 /// Runs the subcommand.
-pub fn run(args: &StochasticArgs) -> Result<()> {
+pub fn run(args: &StochasticArgs) -> Result<Summary> {
     let ctx = context(&args.common, "stochastic", builtin::STOCHASTIC)?;
     let o = args.tally.overrides();
     let mut p = prepare(&ctx.case, &o, ctx.seed)?;
@@ -46,6 +46,8 @@ pub fn run(args: &StochasticArgs) -> Result<()> {
     });
     let seconds = t0.elapsed().as_secs_f64();
     let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
+    let particles = tallies.iter().map(|t| t.counters.particles).sum();
+    let tallies_len = tallies.len();
     if let Some(identity) = &identity {
         runner::write_partial(out.path(), identity, &plan, p.notes, tallies, seconds)?;
     } else {
@@ -59,6 +61,12 @@ pub fn run(args: &StochasticArgs) -> Result<()> {
             seconds,
         )?);
     }
-    out.commit()?;
-    Ok(())
+    let dir = out.commit()?;
+    let what = match plan.shard {
+        Some(s) => format!("shard {}/{}: ", s.index, s.count),
+        None => String::new(),
+    };
+    let mut summary = Summary::particles(tallies_len, particles, "rebounds", &dir);
+    summary.work = format!("{what}{}", summary.work);
+    Ok(summary)
 }

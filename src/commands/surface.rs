@@ -8,7 +8,7 @@
 //! moves with the swap, one outside it is written on its own (atomically).
 
 use crate::cli::SurfaceArgs;
-use crate::commands::{context, warn};
+use crate::commands::{context, warn, Summary, Wrote};
 use roughwall::case::builtin;
 use roughwall::error::Result;
 use roughwall::figures;
@@ -25,7 +25,7 @@ use std::time::Instant;
 
 /// Runs the subcommand: validate everything first (nothing is written on bad input),
 /// then generate, measure, and write.
-pub fn run(args: &SurfaceArgs) -> Result<()> {
+pub fn run(args: &SurfaceArgs) -> Result<Summary> {
     let mut ctx = context(&args.common, "surface", builtin::SURFACE)?;
     let mut warnings = Vec::new();
     let spec = ctx.case.surface_spec(&mut warnings)?;
@@ -107,6 +107,21 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
     ctx.manifest
         .set_run("stats_s", toml::Value::Float(round_ms(t_stats)));
     ctx.manifest.write(&dir)?;
-    out.commit()?;
-    Ok(())
+    let dir = out.commit()?;
+    let mut work = format!(
+        "{} × {} surface, {} rotated frame{}",
+        field.nx,
+        field.nz,
+        betas.len(),
+        if betas.len() == 1 { "" } else { "s" }
+    );
+    if !diameters.is_empty() {
+        work += &format!(", effective roughness of {} diameters", diameters.len());
+    }
+    let nodes = (field.nx as u64).saturating_mul(field.nz as u64);
+    Ok(Summary {
+        work,
+        rate: Some((nodes, "nodes")),
+        wrote: Wrote::Dir(dir),
+    })
 }

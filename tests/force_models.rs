@@ -292,7 +292,7 @@ fn errors() {
     assert!(one_line(Impact::from_deg(0.5, 10.0, 1.0).unwrap_err()).contains("oblate"));
     assert!(one_line(Impact::from_deg(2.0, 10.0, -1.0).unwrap_err()).contains("u_n_m_s"));
     assert!(one_line(Model::from_name("dem").unwrap_err()).contains("dem"));
-    assert!(one_line(material::preset("steel").unwrap_err()).contains("steel"));
+    assert!(one_line(material::preset("impactor.preset", "steel").unwrap_err()).contains("steel"));
     let imp = Impact::from_deg(2.5, 10.0, 1.0).unwrap();
     assert!(one_line(Model::Hu2021.evaluate(&glass(), &imp).unwrap_err()).contains("hertz-rigid"));
     assert!(

@@ -180,3 +180,64 @@ fn zero_speed_rows() {
     }
     assert!(!csv.to_lowercase().contains("nan"));
 }
+
+/// Issue 14, part 9: force-sweep's particle section is `[impactor]`; the old name `[particle]`
+/// still works, with a warning, and gives the same table; both at once are refused.
+#[test]
+fn the_old_particle_section_still_works_with_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let sweep = "[sweep]\nmodels = [\"hu2021\"]\nbeta_deg = [0.0, 45.0]\n";
+    let mut tables = Vec::new();
+    for section in ["impactor", "particle"] {
+        let case = dir.path().join(format!("{section}.toml"));
+        std::fs::write(
+            &case,
+            format!("name = \"p\"\n[{section}]\npreset = \"copper\"\n{sweep}"),
+        )
+        .unwrap();
+        let out = dir.path().join(section);
+        let r = rebound(&[
+            "force-sweep",
+            "--case",
+            case.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .ok();
+        let warned = r
+            .stderr
+            .contains("warning: section [particle] is the old name of [impactor]");
+        assert_eq!(warned, section == "particle", "{}", r.stderr);
+        tables.push(read(&out.join("force_sweep.csv")));
+    }
+    assert_eq!(tables[0], tables[1]);
+    let both = case_err("[impactor]\npreset = \"copper\"\n[particle]\npreset = \"copper\"\n");
+    assert!(both.contains("both [impactor] and [particle]"), "{both}");
+}
+
+/// A stochastic case with force-sweep's particle section warns instead of running silently
+/// with the default diameter.
+#[test]
+fn a_section_of_another_command_is_a_warning_naming_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let case = dir.path().join("s.toml");
+    std::fs::write(
+        &case,
+        "name = \"s\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n[incidence]\nalpha_deg = [-10.0]\n[particles]\ncount = 1000\n[particle]\ndiameter_um = 100.0\n",
+    )
+    .unwrap();
+    let out = dir.path().join("o");
+    let r = rebound(&[
+        "stochastic",
+        "--case",
+        case.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .ok();
+    assert!(
+        r.stderr.contains("warning: section [particle] is not read by `stochastic` (did you mean [particles]?): only `force-sweep` read it"),
+        "{}",
+        r.stderr
+    );
+}

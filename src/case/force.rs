@@ -1,4 +1,5 @@
-//! The particle and sweep of `rebound force-sweep` (`[particle]`, `[sweep]`).
+//! The particle and sweep of `rebound force-sweep` (`[impactor]`, formerly `[particle]`;
+//! `[sweep]`).
 
 use super::{Case, ParticleSection, SweepSection};
 use crate::error::{Error, Result};
@@ -15,15 +16,24 @@ const FIG6: Particle = Particle {
 
 /// The particle material (ρ, E, σ; diameter as the default D) and the sweep of a case.
 ///
-/// `[particle]`: `preset` (Hu et al. 2021, Table 1) with any property overriding it; without a
+/// `[impactor]`: `preset` (Hu et al. 2021, Table 1) with any property overriding it; without a
 /// preset, missing properties take Fig. 6's values (ρ = 2500 kg/m³, E = 64 GPa, σ = 0.24,
 /// D = 2.45 µm). `[sweep]`: missing keys take Fig. 6's sweep; `diameter_um` may be swept here
 /// or given once in `[particle]`, not both.
 pub fn resolve(case: &Case) -> Result<(Particle, Sweep)> {
-    let ps: ParticleSection = case.particle.clone().unwrap_or_default();
+    // `[particle]` is the old name (issue 14): read, with a warning from `case::sections`.
+    let (section, ps): (&str, ParticleSection) = match (&case.impactor, &case.particle) {
+        (Some(_), Some(_)) => {
+            return Err(Error::Input(
+                "both [impactor] and [particle], its old name: keep [impactor] only".into(),
+            ))
+        }
+        (None, Some(old)) => ("particle", old.clone()),
+        (s, None) => ("impactor", s.clone().unwrap_or_default()),
+    };
     let mut p = match &ps.preset {
         Some(name) => {
-            let m = material::preset(name)?;
+            let m = material::preset(&format!("{section}.preset"), name)?;
             Particle {
                 density: m.density,
                 youngs: m.youngs,
@@ -70,9 +80,9 @@ pub fn resolve(case: &Case) -> Result<(Particle, Sweep)> {
     };
     let diameters = match &ss.diameter_um {
         Some(_) if ps.diameter_um.is_some() => {
-            return Err(Error::Input(
-                "give `diameter_um` in [particle] or in [sweep], not both".into(),
-            ))
+            return Err(Error::Input(format!(
+                "give `diameter_um` in [{section}] or in [sweep], not both"
+            )))
         }
         Some(v) => v
             .expand("sweep.diameter_um")?

@@ -9,6 +9,7 @@ pub mod force;
 pub mod load;
 pub mod resolve;
 pub mod schema;
+pub mod sections;
 pub mod stochastic;
 
 pub use check::Warning;

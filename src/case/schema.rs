@@ -33,6 +33,10 @@ pub struct Case {
     pub stochastic: Option<StochasticSection>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub deterministic: Option<DeterministicSection>,
+    /// force-sweep's impacting particle (`[impactor]`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impactor: Option<ParticleSection>,
+    /// The old name of `[impactor]`, still read by force-sweep with a warning.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub particle: Option<ParticleSection>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -191,7 +195,8 @@ pub struct DeterministicSection {
     pub contact: Option<String>,
 }
 
-/// `[particle]` for `force-sweep`: a material preset or explicit properties.
+/// `[impactor]` (formerly `[particle]`) for `force-sweep`: a material preset or explicit
+/// properties.
 #[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct ParticleSection {

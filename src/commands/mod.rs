@@ -118,14 +118,17 @@ fn listing(dir: &Path) -> String {
 }
 
 /// The run context of `--case`, `--seed` and `--out` (threads: the pool the command runs in).
+/// Warns about the case's sections that `command` does not read (`case::sections`).
 pub fn context(common: &CommonArgs, command: &str, default_toml: &str) -> Result<Context> {
-    Context::new(
+    let ctx = Context::new(
         common.case.as_deref(),
         common.seed,
         common.out.clone(),
         command,
         default_toml,
-    )
+    )?;
+    warn(roughwall::case::sections::unread(&ctx.case, command));
+    Ok(ctx)
 }
 
 /// Hands the warnings of the library to the binary's stderr: `cli::run` prints them, in

@@ -51,27 +51,26 @@ pub const PRESETS: [Preset; 4] = [
     },
 ];
 
-/// Looks a preset up by name; unknown names are a one-line `Error::Input`.
-pub fn preset(name: &str) -> Result<Preset> {
+/// Looks a preset up by name; unknown names are a one-line `Error::Input` naming `key`.
+pub fn preset(key: &str, name: &str) -> Result<Preset> {
     PRESETS
         .iter()
         .copied()
         .find(|p| p.name == name)
-        .ok_or_else(|| {
-            Error::invalid(
-                "particle.preset",
-                name,
-                "e-glass-sphere, glass, copper, iron",
-            )
-        })
+        .ok_or_else(|| Error::invalid(key, name, "e-glass-sphere, glass, copper, iron"))
 }
 
 #[cfg(test)]
 mod tests {
     #[test]
     fn presets_resolve_and_unknown_is_one_line_error() {
-        assert_eq!(super::preset("copper").unwrap().youngs, 115e9);
-        let e = super::preset("steel").unwrap_err().to_string();
+        assert_eq!(
+            super::preset("impactor.preset", "copper").unwrap().youngs,
+            115e9
+        );
+        let e = super::preset("impactor.preset", "steel")
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("steel") && !e.contains('\n'));
     }
 }

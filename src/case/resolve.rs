@@ -2,7 +2,8 @@
 //! one-line errors naming the key, the value and what is allowed (exit status 2).
 
 use super::check::{
-    check_greater_than, check_int_range, check_length, check_less_than, check_range, Warning,
+    check_greater_than, check_int_range, check_length, check_less_than, check_range, check_value,
+    Warning,
 };
 pub(super) use super::check::{positive, within};
 use super::schema::*;
@@ -706,13 +707,14 @@ impl Case {
             }
             "sommerfeld-huber" => {
                 let base = match c.preset.as_deref() {
-                    Some("glass-steel") => Some(ShParams::glass_steel()),
-                    Some(other) => {
-                        return Err(Error::invalid(
+                    Some(name) => {
+                        check_value(
                             "collision.preset",
-                            format!("\"{other}\""),
+                            name,
+                            &["glass-steel"],
                             "\"glass-steel\"",
-                        ))
+                        )?;
+                        Some(ShParams::glass_steel())
                     }
                     None => None,
                 };

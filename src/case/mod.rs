@@ -1,21 +1,30 @@
-//! TOML case files: the schema (`schema`), loading with one-line errors (`load`),
-//! and validated SI views of the sections each command needs (`resolve`).
+//! TOML case files: the schema (`schema`), loading with one-line errors (`load`), the
+//! check helpers every section uses (`check`, OpenMC's checkvalue as the model), and one file
+//! per section family with its validated SI view: `wall` (`[surface]`, `[wall]`, `[stats]`),
+//! `scene` (`[incidence]`, `[particles]`, `[output]`), `collision`, `stochastic` (and `[stochastic]`),
+//! `deterministic` (and `[deterministic]`), `erosion`, `force` (`[impactor]`, `[sweep]`),
+//! `values` (sweep ranges). `sections` says which command reads which section; `builtin`
+//! holds each command's built-in case.
 
 pub mod builtin;
 pub mod check;
+pub mod collision;
 pub mod deterministic;
 pub mod erosion;
 pub mod force;
 pub mod load;
-pub mod resolve;
+pub mod scene;
 pub mod schema;
 pub mod sections;
 pub mod stochastic;
+pub mod values;
+pub mod wall;
 
 pub use check::Warning;
 pub use load::{load, load_text, parse, resolve_path, DEFAULT_SEED};
-pub use resolve::{IncidentCondition, Scene, SpeedLaw, SurfaceSpec, WallSource};
+pub use scene::{IncidentCondition, Scene, SpeedLaw};
 pub use schema::*;
+pub use wall::{SurfaceSpec, WallSource};
 
 use std::cell::RefCell;
 

@@ -3,6 +3,9 @@
 //! built, except for `[stochastic] effective_for_diameter`; a case with surface parameters
 //! is converted to deviations (Eq. 15).
 
+use super::check::within;
+use super::scene::PSI_RANGE;
+use super::wall::MAX_DEVIATION_DEG;
 use super::{Case, Scene, WallSource, Warning};
 use crate::erosion::ErosionSetup;
 use crate::error::{Error, Result};
@@ -164,4 +167,100 @@ fn effective_wall(
         "deviations of the sphere's centre surface (paraboloid dilation) on the surface deterministic generates for this case and seed".into(),
     );
     Ok(Some((eff, t)))
+}
+
+impl Case {
+    /// ψ of the single-collision probability, Eq. (34): `[stochastic] psi`, default 2 (the paper's).
+    pub fn psi(&self) -> Result<f64> {
+        let psi = self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0);
+        let (lo, hi) = PSI_RANGE;
+        within(
+            "stochastic.psi",
+            psi,
+            lo,
+            hi,
+            "",
+            "below, almost every candidate rebound is redrawn; above, none is; the paper uses 2",
+        )
+    }
+
+    /// The rough-wall model of `[stochastic] model` and `delta_gamma_deg` (default: the
+    /// paper's).
+    pub fn variant(&self) -> Result<crate::stochastic::Variant> {
+        use crate::stochastic::{Variant, VariantKind};
+        let st = self.stochastic.clone().unwrap_or_default();
+        let kind = match st.model.as_deref() {
+            None => VariantKind::RadenkovicSimonin2021,
+            Some(name) => VariantKind::from_name(name).ok_or_else(|| {
+                let names: Vec<String> = VariantKind::ALL
+                    .iter()
+                    .map(|v| format!("\"{}\"", v.name()))
+                    .collect();
+                Error::invalid(
+                    "stochastic.model",
+                    format!("\"{name}\""),
+                    &format!("one of {}", names.join(", ")),
+                )
+            })?,
+        };
+        let delta_gamma = match st.delta_gamma_deg {
+            None => None,
+            Some(_) if kind.anisotropic() => {
+                return Err(Error::Input(format!(
+                    "`stochastic.delta_gamma_deg` applies to the isotropic variants only; model = \"{}\" takes its Δγ from the wall (Eq. 26)",
+                    kind.name()
+                )))
+            }
+            Some(d) => Some(
+                within(
+                    "stochastic.delta_gamma_deg",
+                    d,
+                    0.0,
+                    MAX_DEVIATION_DEG,
+                    " degrees",
+                    "a roughness angle within the wall models' range",
+                )?
+                .to_radians(),
+            ),
+        };
+        let escape = match (&st.escape_table, kind) {
+            (None, _) => None,
+            (Some(path), VariantKind::Calibrated) => Some(read_escape_table(path)?),
+            (Some(_), _) => {
+                return Err(Error::Input(format!(
+                "`stochastic.escape_table` applies to model = \"calibrated\" only (model = \"{}\")",
+                kind.name()
+            )))
+            }
+        };
+        Ok(Variant {
+            kind,
+            delta_gamma,
+            escape,
+        })
+    }
+}
+
+/// Largest escape table read (bytes); a table of the fixed grid is about 60 kB.
+const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 20;
+
+/// Reads the escape table at `path` (`[stochastic] escape_table`): as given, else under
+/// `configs/`; one-line errors that name the key and the file.
+fn read_escape_table(path: &str) -> Result<&'static crate::stochastic::escape_table::EscapeTable> {
+    let key = "stochastic.escape_table";
+    let file = super::load::resolve_path(std::path::Path::new(path)).map_err(|_| {
+        Error::Input(format!(
+            "`{key}` = \"{path}\": file not found (looked as given and under configs/)"
+        ))
+    })?;
+    let what = format!("`{key}` = \"{path}\"");
+    let len = std::fs::metadata(&file).map(|m| m.len()).unwrap_or(0);
+    if len > MAX_ESCAPE_TABLE_BYTES {
+        return Err(Error::Input(format!(
+            "{what}: {len} bytes, more than an escape table ({MAX_ESCAPE_TABLE_BYTES} at most)"
+        )));
+    }
+    let text = std::fs::read_to_string(&file)
+        .map_err(|e| Error::Input(format!("{what}: cannot read it: {e}")))?;
+    Ok(crate::stochastic::escape_table::EscapeTable::parse(&text, &what)?.intern())
 }

@@ -1,0 +1,345 @@
+//! `[surface]`, `[wall]` and `[stats]`: the wall as deviations or a full surface to generate,
+//! and the statistics `rebound surface` measures on it (Radenkovic & Simonin 2021, Sec. 2).
+
+use super::check::{check_int_range, check_length, positive, within, Warning};
+use super::scene::DIAMETER_RANGE_UM;
+use super::schema::*;
+use crate::error::{Error, Result};
+pub use crate::surface::SurfaceSpec;
+use crate::wall::{self, Deviations};
+
+/// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
+/// stretched: run, but warn (the paper validates Eq. 14 up to about 7.5°).
+pub const LOW_ROUGHNESS_LIMIT_DEG: f64 = 7.5;
+/// Beyond this deviation the wall models are not meant to be used at all.
+pub const MAX_DEVIATION_DEG: f64 = 20.0;
+/// Steepest rms slope (degrees) a generated surface may have.
+pub const MAX_SURFACE_SLOPE_DEG: f64 = 45.0;
+
+/// What a case says about the wall.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WallSource {
+    /// A full surface (grid and roughness): generated as given.
+    Surface(SurfaceSpec),
+    /// Only the statistical wall: deviations (a surface, if needed, is chosen to fit).
+    Deviations(Deviations),
+}
+
+impl WallSource {
+    pub fn deviations(&self) -> Deviations {
+        match self {
+            WallSource::Surface(s) => s.deviations(),
+            WallSource::Deviations(d) => *d,
+        }
+    }
+}
+
+/// Lengths of a generated surface (µm): a picometre to a kilometre.
+pub const LENGTH_RANGE_UM: (f64, f64) = (1e-6, 1e9);
+/// Longest `[stats] diameter_um` list.
+pub const MAX_DIAMETERS: usize = 64;
+/// Longest `[stats] beta_star_deg` list.
+pub const MAX_BETA_STAR: usize = 1000;
+
+fn deviation(key: &str, v: f64, warnings: &mut Vec<Warning>) -> Result<f64> {
+    if !(0.0..=MAX_DEVIATION_DEG).contains(&v) {
+        return Err(Error::invalid(
+            key,
+            v,
+            &format!("0 to {MAX_DEVIATION_DEG} degrees"),
+        ));
+    }
+    if v > LOW_ROUGHNESS_LIMIT_DEG {
+        warnings.push(Warning(format!(
+            "`{key}` = {v}° is beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°); results are extrapolated"
+        )));
+    }
+    Ok(v.to_radians())
+}
+
+impl Case {
+    /// The `[surface]` or `[wall]` section and its name.
+    fn wall_spec(&self) -> Option<(&'static str, &WallSpec)> {
+        match (&self.surface, &self.wall) {
+            (Some(s), _) => Some(("surface", s)),
+            (None, Some(w)) => Some(("wall", w)),
+            _ => None,
+        }
+    }
+
+    /// The wall: a full surface when grid keys are given, else deviations
+    /// (from `delta_*_deg`, or from `corr_length_*_um` and `rms_height_um` by Eq. 15).
+    pub fn wall_source(&self, warnings: &mut Vec<Warning>) -> Result<WallSource> {
+        let Some((sec, w)) = self.wall_spec() else {
+            return Err(Error::Input(
+                "the case needs a [wall] (delta_xi_deg, delta_zeta_deg) or [surface] section"
+                    .into(),
+            ));
+        };
+        let has_grid = w.length_um.is_some() || w.nodes.is_some();
+        if has_grid {
+            return Ok(WallSource::Surface(self.surface_spec(warnings)?));
+        }
+        let mut axis = |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<f64> {
+            match (c, d) {
+                (Some(_), Some(_)) => Err(Error::Input(format!(
+                    "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
+                ))),
+                (None, Some(d)) => deviation(&format!("{sec}.{dname}"), d, warnings),
+                (Some(c), None) => {
+                    let c = positive(&format!("{sec}.{cname}"), c)?;
+                    let h = w.rms_height_um.ok_or_else(|| {
+                        Error::Input(format!(
+                            "[{sec}] gives `{cname}` but not `rms_height_um` (needed by Eq. 15)"
+                        ))
+                    })?;
+                    let h = positive(&format!("{sec}.rms_height_um"), h)?;
+                    deviation(
+                        &format!("{sec}.{cname} (as a deviation)"),
+                        wall::deviation_from_surface(h, c).to_degrees(),
+                        warnings,
+                    )
+                }
+                (None, None) => Err(Error::Input(format!(
+                    "[{sec}] needs `{dname}` or `{cname}`"
+                ))),
+            }
+        };
+        Ok(WallSource::Deviations(Deviations {
+            delta_xi: axis(
+                w.corr_length_x_um,
+                w.delta_xi_deg,
+                "corr_length_x_um",
+                "delta_xi_deg",
+            )?,
+            delta_zeta: axis(
+                w.corr_length_z_um,
+                w.delta_zeta_deg,
+                "corr_length_z_um",
+                "delta_zeta_deg",
+            )?,
+        }))
+    }
+
+    /// A full surface: `length_um`, `nodes`, `rms_height_um` and per axis a correlation length
+    /// or a deviation (converted with Eq. 15). Checks the grid against the correlation lengths:
+    /// `δ > c_L/2` is an error, `L < 20 c_L` a warning.
+    pub fn surface_spec(&self, warnings: &mut Vec<Warning>) -> Result<SurfaceSpec> {
+        let Some((sec, w)) = self.wall_spec() else {
+            return Err(Error::Input("the case needs a [surface] section".into()));
+        };
+        let need =
+            |v: Option<f64>, k: &str| v.ok_or_else(|| Error::Input(format!("[{sec}] needs `{k}`")));
+        let (lo, hi) = LENGTH_RANGE_UM;
+        let lengths = "a surface's lengths, a picometre to a kilometre";
+        let length_um = within(
+            &format!("{sec}.length_um"),
+            need(w.length_um, "length_um")?,
+            lo,
+            hi,
+            " µm",
+            lengths,
+        )?;
+        let nodes = w
+            .nodes
+            .ok_or_else(|| Error::Input(format!("[{sec}] needs `nodes`")))?;
+        let key = format!("{sec}.nodes");
+        check_int_range(&key, nodes, 16, 40_000, "an integer from 16 to 40000")?;
+        let h_um = need(w.rms_height_um, "rms_height_um")?;
+        if h_um != 0.0 {
+            within(
+                &format!("{sec}.rms_height_um"),
+                h_um,
+                lo,
+                hi,
+                " µm (or 0)",
+                lengths,
+            )?;
+        }
+        let mut axis = |c: Option<f64>,
+                        d: Option<f64>,
+                        cname: &str,
+                        dname: &str|
+         -> Result<Option<f64>> {
+            let c = match (c, d) {
+                (Some(_), Some(_)) => {
+                    return Err(Error::Input(format!(
+                        "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
+                    )))
+                }
+                (Some(c), None) => {
+                    let c = within(&format!("{sec}.{cname}"), c, lo, hi, " µm", lengths)?;
+                    // The rms slope √2 h/c_L (Eq. 14) of a generated surface: up to 45°
+                    // (Fig. 4 studies it beyond the low-roughness range; the wall models
+                    // themselves stop at 20°, checked in `scene`).
+                    if h_um > 0.0 {
+                        let d = wall::deviation_from_surface(h_um, c).to_degrees();
+                        if d.is_nan() || d > MAX_SURFACE_SLOPE_DEG {
+                            return Err(Error::invalid(
+                                    &format!("{sec}.{cname}"),
+                                    c,
+                                    &format!(
+                                        "a correlation length giving an rms slope √2 h/c_L of at most {MAX_SURFACE_SLOPE_DEG}° (Eq. 14); it gives {d}°"
+                                    ),
+                                ));
+                        }
+                        if d > LOW_ROUGHNESS_LIMIT_DEG {
+                            warnings.push(Warning(format!(
+                                    "`{sec}.{cname}` = {c} µm gives Δ = √2 h/c_L = {d:.2}° (Eq. 15), beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°)"
+                                )));
+                        }
+                    }
+                    Some(c)
+                }
+                (None, Some(d)) => {
+                    let dr = deviation(&format!("{sec}.{dname}"), d, warnings)?;
+                    let c = wall::corr_length_from_deviation(h_um, dr);
+                    if let Some(c) = c.filter(|_| h_um > 0.0) {
+                        within(
+                            &format!("{sec}.{dname} (as the correlation length √2 h/Δ, Eq. 15)"),
+                            c,
+                            lo,
+                            hi,
+                            " µm",
+                            lengths,
+                        )?;
+                    }
+                    c
+                }
+                (None, None) => {
+                    return Err(Error::Input(format!(
+                        "[{sec}] needs `{cname}` or `{dname}`"
+                    )))
+                }
+            };
+            Ok(c)
+        };
+        let cx = axis(
+            w.corr_length_x_um,
+            w.delta_xi_deg,
+            "corr_length_x_um",
+            "delta_xi_deg",
+        )?;
+        let cz = axis(
+            w.corr_length_z_um,
+            w.delta_zeta_deg,
+            "corr_length_z_um",
+            "delta_zeta_deg",
+        )?;
+        let spec = SurfaceSpec {
+            length_m: length_um * 1e-6,
+            nodes: nodes as usize,
+            rms_height_m: h_um * 1e-6,
+            corr_length_x_m: if h_um > 0.0 {
+                cx.map(|c| c * 1e-6)
+            } else {
+                None
+            },
+            corr_length_z_m: if h_um > 0.0 {
+                cz.map(|c| c * 1e-6)
+            } else {
+                None
+            },
+        };
+        let spacing_um = length_um / nodes as f64;
+        for (name, c) in [("corr_length_x_um", cx), ("corr_length_z_um", cz)] {
+            if let Some(c) = c {
+                if h_um > 0.0 && spacing_um > c / 2.0 {
+                    return Err(Error::invalid(
+                        &format!("{sec}.nodes"),
+                        nodes,
+                        &format!(
+                            "a grid spacing L/nodes ≤ c_L/2 = {} µm ({name} = {c} µm); spacing is {spacing_um} µm",
+                            c / 2.0
+                        ),
+                    ));
+                }
+                if h_um > 0.0 && length_um < 20.0 * c {
+                    warnings.push(Warning(format!(
+                        "[{sec}] length_um = {length_um} is less than 20 correlation lengths ({name} = {c} µm): statistics will be noisy and biased"
+                    )));
+                }
+            }
+        }
+        crate::memory::require(
+            &format!("{sec}.nodes"),
+            nodes,
+            crate::surface::generate::generation_bytes(&spec),
+            &format!("a {nodes} × {nodes} surface"),
+        )?;
+        Ok(spec)
+    }
+
+    /// Sphere diameters (m) of `[stats] diameter_um` whose effective roughness `surface`
+    /// measures: each in the diameter range and at most the surface side `length_m` (a
+    /// sphere wider than the period would rest on its own images).
+    pub fn effective_diameters(&self, length_m: f64) -> Result<Vec<f64>> {
+        let list = self
+            .stats
+            .as_ref()
+            .map(|s| s.diameter_um.clone())
+            .unwrap_or_default();
+        let allowed = format!("at most {MAX_DIAMETERS} diameters");
+        check_length(
+            "stats.diameter_um",
+            list.len(),
+            MAX_DIAMETERS,
+            "diameters",
+            &allowed,
+        )?;
+        let (lo, hi) = DIAMETER_RANGE_UM;
+        list.iter()
+            .map(|&d| {
+                let d = within("stats.diameter_um", d, lo, hi, " µm", "a nanometre to a metre")?;
+                if d * 1e-6 > length_m {
+                    return Err(Error::invalid(
+                        "stats.diameter_um",
+                        d,
+                        &format!(
+                            "at most the surface side, {} µm (a wider sphere rests on its own periodic images)",
+                            crate::output::fmt_num(length_m * 1e6)
+                        ),
+                    ));
+                }
+                Ok(d * 1e-6)
+            })
+            .collect()
+    }
+
+    /// Directions `β*` (radians) of Table 1's rotated frames; default 0°, 30°, 60°, 90°.
+    pub fn beta_star(&self) -> Result<Vec<f64>> {
+        let list = self
+            .stats
+            .as_ref()
+            .and_then(|s| s.beta_star_deg.clone())
+            .unwrap_or_else(|| vec![0.0, 30.0, 60.0, 90.0]);
+        let allowed = format!("at most {MAX_BETA_STAR} directions");
+        check_length(
+            "stats.beta_star_deg",
+            list.len(),
+            MAX_BETA_STAR,
+            "angles",
+            &allowed,
+        )?;
+        if list.is_empty() {
+            return Err(Error::invalid(
+                "stats.beta_star_deg",
+                "[]",
+                "a non-empty list",
+            ));
+        }
+        list.iter()
+            .map(|&b| {
+                if (-180.0..=180.0).contains(&b) {
+                    Ok(b.to_radians())
+                } else {
+                    Err(Error::invalid(
+                        "stats.beta_star_deg",
+                        b,
+                        "angles in [-180, 180] degrees",
+                    ))
+                }
+            })
+            .collect()
+    }
+}

@@ -1,7 +1,7 @@
 //! `[incidence]`, `[particles]` and `[output]`: the scene `deterministic` and `stochastic`
 //! share (incident conditions, speeds, spin, particle counts, PDF bins).
 
-use super::check::{check_length, within, Warning};
+use super::check::{check_int_range, check_length, check_range, check_value, within, Warning};
 use super::schema::*;
 use super::wall::{WallSource, MAX_DEVIATION_DEG};
 use crate::collision::CollisionLaw;
@@ -188,15 +188,13 @@ impl Case {
             within("incidence.speed_std_m_s", std, lo, hi, " m/s (or 0)", why)?;
         }
         let reference = match inc.speed_reference.as_deref() {
-            None | Some("horizontal") => SpeedReference::Horizontal,
-            Some("magnitude") => SpeedReference::Magnitude,
-            Some(other) => {
-                return Err(Error::invalid(
-                    "incidence.speed_reference",
-                    format!("\"{other}\""),
-                    "\"horizontal\" (the speed law is the horizontal speed) or \"magnitude\" (it is |U|)",
-                ))
-            }
+            None => SpeedReference::Horizontal,
+            Some(name) => [SpeedReference::Horizontal, SpeedReference::Magnitude][check_value(
+                "incidence.speed_reference",
+                name,
+                &["horizontal", "magnitude"],
+                "\"horizontal\" (the speed law is the horizontal speed) or \"magnitude\" (it is |U|)",
+            )?],
         };
         let p = self.particles.clone().unwrap_or_default();
         let target = p
@@ -209,13 +207,13 @@ impl Case {
         } else {
             10_000
         });
-        if !(1..=MAX_PARTICLES).contains(&count) {
-            return Err(Error::invalid(
-                "particles.count",
-                count,
-                "an integer from 1 to 100000000",
-            ));
-        }
+        check_int_range(
+            "particles.count",
+            count,
+            1,
+            MAX_PARTICLES,
+            "an integer from 1 to 100000000",
+        )?;
         let (lo, hi) = DIAMETER_RANGE_UM;
         let diameter_um = within(
             "particles.diameter_um",
@@ -231,13 +229,13 @@ impl Case {
             .and_then(|o| o.bin_width_deg)
             .unwrap_or(1.0);
         // At most 36 000 bins over the widest range (±180°): a bounded tally per block.
-        if !(MIN_BIN_WIDTH_DEG..=10.0).contains(&bin) {
-            return Err(Error::invalid(
-                "output.bin_width_deg",
-                bin,
-                &format!("a width in [{MIN_BIN_WIDTH_DEG}, 10] degrees"),
-            ));
-        }
+        check_range(
+            "output.bin_width_deg",
+            bin,
+            MIN_BIN_WIDTH_DEG,
+            10.0,
+            &format!("a width in [{MIN_BIN_WIDTH_DEG}, 10] degrees"),
+        )?;
         let psi = self.psi()?;
         // Every condition keeps its tally (12 histograms and 2 ratio curves of these bins),
         // and a few blocks per thread are in flight.

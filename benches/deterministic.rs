@@ -11,12 +11,13 @@ use roughwall::deterministic::scene::{
 };
 use roughwall::deterministic::{fill_block, tally_spec, ModelSetup, Tracker};
 use roughwall::erosion::{finnie::Finnie, ErosionModel, ErosionSetup};
-use roughwall::output::{deterministic::finish, OutputDir};
+use roughwall::output::OutputDir;
 use roughwall::run_context::Context;
 use roughwall::runner::{self, TallyOverrides};
 use roughwall::surface::HeightField;
 use roughwall::tally::BlockTally;
 use roughwall::wall::Deviations;
+use roughwall::writers::deterministic::finish;
 use std::path::Path;
 use std::time::Duration;
 

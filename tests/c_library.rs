@@ -9,8 +9,8 @@
 use crate::common::*;
 use roughwall::case::CollisionSection;
 use roughwall::compare::{distances, BinnedPdf};
-use roughwall::output::schema::read_run;
 use roughwall::tally::histogram::Histogram;
+use roughwall::tally::schema::read_run;
 use roughwall::wall_model::{Hit, HitStatus, WallModel, WallParams};
 use std::path::Path;
 use std::process::Command;

@@ -11,8 +11,8 @@
 
 use crate::common::*;
 use roughwall::compare::{distances, BinnedPdf};
-use roughwall::output::schema::read_run;
 use roughwall::tally::histogram::Histogram;
+use roughwall::tally::schema::read_run;
 use std::process::Command;
 
 /// `install.sh` checks and installs under the lock that `ensure_tools` takes around

@@ -5,8 +5,8 @@ use crate::common::deterministic::*;
 use roughwall::case::SpeedLaw;
 use roughwall::collision::{CollisionLaw, ShParams};
 use roughwall::deterministic::{ConditionRun, Tracker};
-use roughwall::output::schema::tables;
 use roughwall::surface::HeightField;
+use roughwall::tally::schema::tables;
 use std::time::Instant;
 
 fn laws() -> [CollisionLaw; 2] {

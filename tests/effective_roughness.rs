@@ -26,7 +26,7 @@ fn spheres_see_a_smoother_wall_as_the_issue_measured() {
     let c = Csv::read(&out.join("effective_roughness.csv"));
     assert_eq!(
         c.header.join(","),
-        roughwall::output::surface::EFFECTIVE_HEADER.join(",")
+        roughwall::writers::surface::EFFECTIVE_HEADER.join(",")
     );
     assert!(out.join("effective_roughness.svg").is_file());
     let row = |d: f64| {

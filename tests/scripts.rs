@@ -24,9 +24,9 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         .unwrap();
     assert!(status.success(), "reproduce-all.sh failed");
     let o = out.path();
-    let summary = roughwall::output::schema::SUMMARY_HEADER.join(",");
-    let pdfs = roughwall::output::schema::PDFS_HEADER.join(",");
-    let moments = roughwall::output::schema::MOMENTS_HEADER.join(",");
+    let summary = roughwall::tally::schema::SUMMARY_HEADER.join(",");
+    let pdfs = roughwall::tally::schema::PDFS_HEADER.join(",");
+    let moments = roughwall::tally::schema::MOMENTS_HEADER.join(",");
     let comparison = roughwall::compare::COMPARISON_HEADER.join(",");
     let mut expect: Vec<(String, String)> = vec![
         ("radenkovic2021/table1/surface_summary.csv".into(), "nodes,length_um,spacing_um,rms_height_um,target_rms_height_um,rms_slope_x,target_rms_slope_x,rms_slope_z,target_rms_slope_z,delta_xi_deg,target_delta_xi_deg,delta_zeta_deg,target_delta_zeta_deg,max_height_um".into()),
@@ -68,7 +68,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
     }
     let eroding = format!(
         "{summary},{}",
-        roughwall::output::schema::SUMMARY_EROSION_HEADER.join(",")
+        roughwall::tally::schema::SUMMARY_EROSION_HEADER.join(",")
     );
     for wall in ["smooth", "iso", "2d", "aniso", "aniso-rev"] {
         for model in ["deterministic", "stochastic"] {
@@ -82,7 +82,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
     expect.push(("wall-models/wall_models.csv".into(), "scene,model,max_ks_alpha_out,max_ks_dbeta,max_abs_bias_mean_alpha_out_deg,max_abs_z_alpha_out,max_abs_bias_mean_dbeta_deg,max_abs_z_dbeta,max_ks_alpha_out_steep,max_abs_bias_mean_alpha_out_steep_deg".into()));
     expect.push((
         "finite-size/law/effective_roughness.csv".into(),
-        roughwall::output::surface::EFFECTIVE_HEADER.join(","),
+        roughwall::writers::surface::EFFECTIVE_HEADER.join(","),
     ));
     expect.push(("spin/spin.csv".into(), "axis,omega_rad_s,model,mean_alpha_out_deg,se_mean_alpha_out_deg,mean_dbeta_deg,se_mean_dbeta_deg".into()));
     expect.push(("finite-size/finite_size.csv".into(), "diameter_um,surface_delta_xi_deg,surface_delta_zeta_deg,effective_delta_xi_deg,effective_delta_zeta_deg,contact_fraction,max_ks_alpha_out_effective,max_ks_dbeta_effective,max_abs_bias_alpha_out_effective_deg,max_ks_alpha_out_nominal,max_ks_dbeta_nominal,max_abs_bias_alpha_out_nominal_deg".into()));

@@ -4,19 +4,8 @@
 //! `deterministic`, `force`, `erosion`).
 
 use crate::error::{Error, Result};
-use std::fmt::{self, Display};
 
-/// Something the user should know while the run goes on (e.g. a roughness beyond the
-/// low-roughness approximation). Resolution returns warnings; the binary prints them
-/// (`warning: <text>`) once the command has succeeded.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Warning(pub String);
-
-impl Display for Warning {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
-    }
-}
+pub use crate::warning::Warning;
 
 /// `v` finite and within `[lo, hi]`; else the error with `allowed`.
 pub fn check_range(key: &str, v: f64, lo: f64, hi: f64, allowed: &str) -> Result<f64> {

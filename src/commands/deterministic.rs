@@ -8,12 +8,12 @@ use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::build_surface;
 use roughwall::deterministic::{fill_block, Tracker};
 use roughwall::error::{Error, Result};
-use roughwall::output::deterministic::{finish, sphere_table, surface_table};
 use roughwall::output::out_dir::{check_distinct, check_out};
 use roughwall::output::OutputDir;
 use roughwall::runner;
 use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
+use roughwall::writers::deterministic::{finish, sphere_table, surface_table};
 
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<Summary> {

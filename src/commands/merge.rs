@@ -6,10 +6,11 @@ use crate::commands::{warn, Summary};
 use roughwall::case::{deterministic, stochastic};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::{check_distinct, check_out};
-use roughwall::output::{self, OutputDir};
+use roughwall::output::OutputDir;
 use roughwall::run_context::Context;
 use roughwall::runner::{self, overrides_of};
 use roughwall::tally::partial::RunIdentity;
+use roughwall::writers;
 use std::path::PathBuf;
 
 /// The context of the run the shards came from.
@@ -94,7 +95,7 @@ pub fn run(args: &MergeArgs) -> Result<Summary> {
             warn(std::mem::take(&mut p.warnings));
             p.notes = merged.manifest;
             let tallies = &merged.tallies;
-            let fin = output::stochastic::finish(out.path(), manifest, &p, tallies, None, seconds);
+            let fin = writers::stochastic::finish(out.path(), manifest, &p, tallies, None, seconds);
             warn(fin?);
         }
         _ => {
@@ -104,7 +105,7 @@ pub fn run(args: &MergeArgs) -> Result<Summary> {
             p.notes = merged.manifest;
             let tallies = &merged.tallies;
             let fin =
-                output::deterministic::finish(out.path(), manifest, &p, tallies, None, seconds);
+                writers::deterministic::finish(out.path(), manifest, &p, tallies, None, seconds);
             warn(fin?);
         }
     }

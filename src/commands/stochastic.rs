@@ -5,12 +5,12 @@ use crate::cli::StochasticArgs;
 use crate::commands::{context, warn, Summary};
 use roughwall::case::{builtin, stochastic::prepare};
 use roughwall::error::Result;
-use roughwall::output::stochastic::finish;
 use roughwall::output::OutputDir;
 use roughwall::runner;
 use roughwall::stochastic::simulate::fill_block;
 use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
+use roughwall::writers::stochastic::finish;
 
 /// Runs the subcommand.
 pub fn run(args: &StochasticArgs) -> Result<Summary> {

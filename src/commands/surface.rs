@@ -1,7 +1,7 @@
 //! `rebound surface`: generate the Garcia–Stoll surface of the case and measure the
 //! statistics of Radenkovic & Simonin 2021, Table 1 (Eqs. 7–9, 14–15).
 //!
-//! Outputs in `--out` (`roughwall::output::surface::OUTPUT_FILES`): `surface_summary.csv`, `normal_angles.csv`,
+//! Outputs in `--out` (`roughwall::writers::surface::OUTPUT_FILES`): `surface_summary.csv`, `normal_angles.csv`,
 //! `height_map.svg`, `normal_angle_pdfs.svg`, `run.toml` (timings only there), and with
 //! `--heights FILE` the height field in the format of `roughwall::surface::heights_io`.
 //! `--out` is written as a whole (`roughwall::output::out_dir`); a `--heights` file inside it
@@ -13,14 +13,14 @@ use roughwall::case::builtin;
 use roughwall::error::Result;
 use roughwall::figures;
 use roughwall::output::out_dir::{place_file, OutputDir};
-use roughwall::output::surface::{
-    angles_table, effective_table, grid_table, model_row, round_ms, summary_table, HIST_BINS,
-    OUTPUT_FILES,
-};
 use roughwall::surface::dilation::effective_roughness;
 use roughwall::surface::generate;
 use roughwall::surface::heights_io::write_heights;
 use roughwall::surface::stats::{surface_stats, HistogramSpec};
+use roughwall::writers::surface::{
+    angles_table, effective_table, grid_table, model_row, round_ms, summary_table, HIST_BINS,
+    OUTPUT_FILES,
+};
 use std::time::Instant;
 
 /// Runs the subcommand: validate everything first (nothing is written on bad input),

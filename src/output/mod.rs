@@ -1,14 +1,11 @@
-//! Writing results: output directories written as a whole (staging directory, lock and
-//! swap: `out_dir`), atomic files (temporary file, then rename), deterministic number
-//! formatting, CSV tables (`csv`), the schema of the tally outputs (`schema`) and the run
-//! manifest `run.toml`.
+//! Writing results, the primitives: output directories written as a whole (staging
+//! directory, lock and swap: `out_dir`), atomic files (temporary file, then rename),
+//! deterministic number formatting, CSV tables (`csv`) and the run manifest `run.toml`.
+//! Low in the module picture: it depends on no physics, tally or case module. What each
+//! command writes lives in `writers`; the schema of the tally outputs in `tally::schema`.
 
 pub mod csv;
-pub mod deterministic;
 pub mod out_dir;
-pub mod schema;
-pub mod stochastic;
-pub mod surface;
 
 pub use self::csv::{CsvTable, Rows};
 pub use self::out_dir::OutputDir;
@@ -59,6 +56,15 @@ pub fn write_atomic_with(
     Ok(())
 }
 
+/// SHA-256 of `bytes`, in lowercase hex.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    use sha2::{Digest, Sha256};
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
 /// A number for a CSV cell in scientific notation, 7 significant digits (`1.817077e-8`):
 /// for quantities whose scale is far from 1, such as erosion in m³/kg. Empty for
 /// non-finite values, like [`fmt_num`].
@@ -105,7 +111,8 @@ pub struct Manifest {
 }
 
 impl Manifest {
-    pub fn new(command: &str, case: &crate::case::Case, seed: u64, threads: usize) -> Manifest {
+    /// `case` is written as the `[case]` table (the binary passes its `case::Case`).
+    pub fn new(command: &str, case: &impl serde::Serialize, seed: u64, threads: usize) -> Manifest {
         let mut run = toml::Table::new();
         run.insert("command".into(), command.into());
         run.insert("version".into(), crate::BUILD_VERSION.into());

@@ -36,6 +36,10 @@ use std::fs::{self, File};
 use std::io;
 use std::path::{Component, Path, PathBuf};
 
+/// File name of a partial tally inside a shard's output directory (written by
+/// `tally::partial`; here so that a shard directory is recognised as a rebound output).
+pub const PARTIAL_FILE: &str = "partial.toml";
+
 /// Where a run writes: the target `--out`, the staging directory (see the module
 /// documentation) and the lock held until the swap.
 pub struct OutputDir {
@@ -243,7 +247,7 @@ fn has_manifest(dir: &Path) -> bool {
 /// Whether `dir/partial.toml` is a partial tally (a shard directory).
 fn has_partial(dir: &Path) -> bool {
     use std::io::Read;
-    let p = dir.join(crate::tally::partial::PARTIAL_FILE);
+    let p = dir.join(PARTIAL_FILE);
     if !fs::symlink_metadata(&p).is_ok_and(|m| m.is_file()) {
         return false;
     }
@@ -334,7 +338,7 @@ fn key_of(name: &OsStr) -> String {
     match name.to_str() {
         Some(s) if s.len() <= 200 => s.to_string(),
         _ => {
-            let hex = crate::tally::partial::sha256_hex(name.as_encoded_bytes());
+            let hex = super::sha256_hex(name.as_encoded_bytes());
             format!("~{}", &hex[..40])
         }
     }
@@ -366,7 +370,7 @@ fn lock(path: &Path, shown: &Path) -> Result<Option<File>> {
                     )))
                 }
                 Some(c) if c == libc::ENOLCK || c == libc::EOPNOTSUPP || c == libc::ENOSYS => {
-                    crate::case::warn(&format!(
+                    crate::warning::warn(&format!(
                         "`{}` cannot be locked ({e}): concurrent runs on `{}` are not detected",
                         path.display(),
                         shown.display()

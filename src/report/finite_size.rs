@@ -252,7 +252,7 @@ fn grid(dir: &Path, md: &mut String) -> Result<()> {
 }
 
 /// The law `Δ_eff ≈ (Δ⁻⁴ + (h/D)⁻²)^(−1/4)`: the surface's own deviation for small spheres,
-/// the large-sphere asymptote `√(h/D)` (`output::surface::large_sphere_deviation`) for
+/// the large-sphere asymptote `√(h/D)` (`writers::surface::large_sphere_deviation`) for
 /// large ones; the exponent 4 is the one fitted constant, its fit shown as the table's error.
 fn law(dir: &Path, md: &mut String) -> Result<()> {
     let Some(c) = Rows::read(&dir.join("effective_roughness.csv"))? else {

@@ -8,7 +8,8 @@
 //! * [`condition`]: what a worker fills for one block, and the condition's running tally.
 //! * [`engine`]: runs the blocks in parallel, to a target standard error, or as one shard.
 //! * [`partial`]: the self-describing partial tally a shard writes and `merge` reads.
-//! * [`results`], [`quantity`]: typed results; `output::schema` formats them.
+//! * [`results`], [`quantity`]: typed results; [`schema`] formats them.
+//! * [`schema`]: the columns of `summary.csv`, `pdfs.csv`, `moments.csv`, written and read back.
 pub mod condition;
 pub mod engine;
 pub mod histogram;
@@ -16,6 +17,7 @@ pub mod moments;
 pub mod partial;
 pub mod quantity;
 pub mod results;
+pub mod schema;
 
 pub use condition::{BlockTally, ConditionTally, ErosionOutcome, ModelKind, Outcome, TallySpec};
 pub use engine::{Plan, Shard, BLOCK_SIZE};

@@ -16,19 +16,11 @@ use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 use std::path::Path;
 
-/// File name of a partial tally inside a shard's output directory.
-pub const PARTIAL_FILE: &str = "partial.toml";
+pub use crate::output::out_dir::PARTIAL_FILE;
+pub use crate::output::sha256_hex;
 const FORMAT: &str = "rebound partial tally";
 const FORMAT_VERSION: i64 = 1;
 const CHECKSUM_PREFIX: &str = "# sha256 ";
-
-/// SHA-256 of `bytes`, in lowercase hex.
-pub fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
-}
 
 /// A partial tally's text: `body` followed by its checksum line (`# sha256 ` and the SHA-256
 /// of `body`), as [`Partial::write`] writes it and [`PartialFile::read`] checks it.

@@ -1,4 +1,4 @@
-//! Typed results of a condition: numbers stay numbers until `output::schema` writes them.
+//! Typed results of a condition: numbers stay numbers until `tally::schema` writes them.
 
 use super::histogram::Bin;
 use super::moments::Moments;

@@ -5,10 +5,10 @@ use crate::case::stochastic::Prepared;
 use crate::case::Warning;
 use crate::error::Result;
 use crate::figures;
-use crate::output::schema::write_tables;
 use crate::output::{prepare_out_dir, Manifest};
 use crate::stochastic::simulate::gamma_model_curve;
 use crate::tally::engine::ConditionStats;
+use crate::tally::schema::write_tables;
 use crate::tally::{ConditionTally, BLOCK_SIZE};
 use std::path::Path;
 
@@ -22,7 +22,7 @@ fn round(x: f64, digits: i32) -> f64 {
 }
 
 /// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
-/// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
+/// the run's [`OutputDir`](crate::output::OutputDir)): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
 /// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
 /// after a merge). Returns the warnings about the run (e.g. lost particles).
 pub fn finish(

@@ -9,11 +9,11 @@ use crate::deterministic::LostCounts;
 use crate::error::{Error, Result};
 use crate::figures;
 use crate::incidence::IncidentCondition;
-use crate::output::schema::write_tables;
 use crate::output::{prepare_out_dir, Manifest};
 use crate::surface::stats::measured_deviations;
 use crate::surface::HeightField;
 use crate::tally::engine::ConditionStats;
+use crate::tally::schema::write_tables;
 use crate::tally::{ConditionResult, ConditionTally, BLOCK_SIZE};
 use std::path::Path;
 
@@ -106,7 +106,7 @@ pub fn sphere_table(s: &SphereDilation) -> toml::Value {
 }
 
 /// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
-/// the run's [`OutputDir`]): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
+/// the run's [`OutputDir`](crate::output::OutputDir)): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
 /// `run.toml`. `stats` are the per-condition run statistics of a one-process run (`None`
 /// after a merge). Returns the warnings about the run (e.g. lost particles).
 pub fn finish(

@@ -6,11 +6,11 @@
 //! An empty cell means "not applicable to this model" (e.g. `mean_collisions` of the
 //! stochastic model, or the standard error of a model curve).
 
-use super::csv::{CsvTable, Rows};
-use super::{fmt_num, fmt_sci};
+use super::{ConditionResult, Estimate, Quantity};
 use crate::error::{Error, Result};
 use crate::incidence::fmt_key;
-use crate::tally::{ConditionResult, Estimate, Quantity};
+use crate::output::csv::{CsvTable, Rows};
+use crate::output::{fmt_num, fmt_sci};
 use std::collections::BTreeMap;
 use std::path::Path;
 

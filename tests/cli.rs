@@ -55,14 +55,7 @@ fn success_prints_a_summary_on_stderr_and_quiet_silences_it() {
         "name = \"s\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n[incidence]\nalpha_deg = [-10.0, -20.0]\n[particles]\ncount = 3000\n",
     );
     let out = dir.join("o");
-    let r = rebound(&[
-        "stochastic",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    let r = rebound_case("stochastic", &case, &out, &[]).ok();
     assert!(r.stdout.is_empty(), "{}", r.stdout);
     let lines: Vec<&str> = r.stderr.lines().collect();
     assert_eq!(lines.len(), 1, "{}", r.stderr);
@@ -95,15 +88,7 @@ fn success_prints_a_summary_on_stderr_and_quiet_silences_it() {
         "w.toml",
         "name = \"w\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 9.0\n[incidence]\nalpha_deg = [-10.0]\n[particles]\ncount = 1000\n",
     );
-    let r = rebound(&[
-        "stochastic",
-        "--case",
-        warned.to_str().unwrap(),
-        "--out",
-        dir.join("w").to_str().unwrap(),
-        "--quiet",
-    ])
-    .ok();
+    let r = rebound_case("stochastic", &warned, &dir.join("w"), &["--quiet"]).ok();
     let lines: Vec<&str> = r.stderr.lines().collect();
     assert!(!lines.is_empty(), "the warning must print under --quiet");
     assert!(

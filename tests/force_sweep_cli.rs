@@ -4,7 +4,7 @@ use roughwall::force::tables::HEADER;
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
-use crate::common::{rebound, Csv, Run};
+use crate::common::{rebound, rebound_case, Csv, Run};
 
 /// The arguments of `rebound force-sweep --out OUT [--case CASE]`.
 fn args(case: Option<PathBuf>, out: &Path) -> Vec<OsString> {
@@ -196,14 +196,7 @@ fn the_old_particle_section_still_works_with_a_warning() {
         )
         .unwrap();
         let out = dir.path().join(section);
-        let r = rebound(&[
-            "force-sweep",
-            "--case",
-            case.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ])
-        .ok();
+        let r = rebound_case("force-sweep", &case, &out, &[]).ok();
         let warned = r
             .stderr
             .contains("warning: section [particle] is the old name of [impactor]");
@@ -226,15 +219,7 @@ fn a_section_of_another_command_is_a_warning_naming_it() {
         "name = \"s\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n[incidence]\nalpha_deg = [-10.0]\n[particles]\ncount = 1000\n[particle]\ndiameter_um = 100.0\n",
     )
     .unwrap();
-    let out = dir.path().join("o");
-    let r = rebound(&[
-        "stochastic",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    let r = rebound_case("stochastic", &case, &dir.path().join("o"), &[]).ok();
     assert!(
         r.stderr.contains("warning: section [particle] is not read by `stochastic` (did you mean [particles]?): only `force-sweep` read it"),
         "{}",

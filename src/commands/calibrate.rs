@@ -2,7 +2,7 @@
 //! on the deterministic simulation of a case (`roughwall::deterministic::calibrate`).
 
 use crate::cli::CalibrateArgs;
-use crate::commands::{context, grouped, warn, Summary};
+use crate::commands::{context, counted, grouped, warn, Summary, Wrote};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::generate_surface;
 use roughwall::deterministic::{calibrate::escape_counts, Tracker};
@@ -98,7 +98,14 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     manifest.write(out.path())?;
     let dir = out.commit()?;
     let histories = count * p.scene.conditions.len() as u64;
-    let mut summary = Summary::particles(p.scene.conditions.len(), histories, "histories", &dir);
-    summary.work += &format!(", {} collisions counted", grouped(table.counts().total()));
-    Ok(summary)
+    Ok(Summary {
+        work: format!(
+            "{}, {} histories, {} collisions counted",
+            counted(p.scene.conditions.len(), "condition"),
+            grouped(histories),
+            grouped(table.counts().total())
+        ),
+        rate: Some((histories, "histories")),
+        wrote: Wrote::Dir(dir),
+    })
 }

@@ -93,8 +93,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     });
     let seconds = t1.elapsed().as_secs_f64();
     let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
-    let particles = tallies.iter().map(|t| t.counters.particles).sum();
-    let tallies_len = tallies.len();
+    let summary = Summary::monte_carlo(plan.shard, &tallies, "histories", &target);
     let gen_s = built.generate_s;
     if let Some(identity) = &identity {
         let total_s = seconds + gen_s;
@@ -112,12 +111,6 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
             seconds,
         )?);
     }
-    let dir = out.commit()?;
-    let what = match plan.shard {
-        Some(s) => format!("shard {}/{}: ", s.index, s.count),
-        None => String::new(),
-    };
-    let mut summary = Summary::particles(tallies_len, particles, "histories", &dir);
-    summary.work = format!("{what}{}", summary.work);
+    out.commit()?;
     Ok(summary)
 }

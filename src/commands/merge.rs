@@ -76,13 +76,12 @@ pub fn run(args: &MergeArgs) -> Result<Summary> {
         ),
     );
     let seconds: f64 = merged.seconds.iter().sum();
-    let particles = merged.tallies.iter().map(|t| t.counters.particles).sum();
     let unit = if id.command == "stochastic" {
         "rebounds"
     } else {
         "histories"
     };
-    let mut summary = Summary::particles(merged.tallies.len(), particles, unit, &ctx.out_dir);
+    let mut summary = Summary::monte_carlo(None, &merged.tallies, unit, &ctx.out_dir);
     // Merging takes no Monte Carlo time: the shards' rate is their own.
     summary.rate = None;
     summary.work = format!(

@@ -13,6 +13,7 @@ use crate::cli::CommonArgs;
 use roughwall::case::Warning;
 use roughwall::error::Result;
 use roughwall::run_context::Context;
+use roughwall::tally::{ConditionTally, Shard};
 use std::path::{Path, PathBuf};
 
 /// What a successful command tells its user on stderr (unless `--quiet`): what it did, how
@@ -35,13 +36,24 @@ pub enum Wrote {
 }
 
 impl Summary {
-    /// Monte Carlo work: conditions and particles (or histories), with a rate.
-    pub fn particles(conditions: usize, particles: u64, unit: &'static str, dir: &Path) -> Summary {
+    /// A Monte Carlo run (or one shard of it) written to `dir`: its conditions and particles
+    /// (`unit`: rebounds or histories), with a rate.
+    pub fn monte_carlo(
+        shard: Option<Shard>,
+        tallies: &[ConditionTally],
+        unit: &'static str,
+        dir: &Path,
+    ) -> Summary {
+        let particles = tallies.iter().map(|t| t.counters.particles).sum();
+        let conditions = tallies.len();
+        let shard = match shard {
+            Some(s) => format!("shard {}/{}: ", s.index, s.count),
+            None => String::new(),
+        };
         Summary {
             work: format!(
-                "{} condition{}, {} {unit}",
-                conditions,
-                if conditions == 1 { "" } else { "s" },
+                "{shard}{}, {} {unit}",
+                counted(conditions, "condition"),
                 grouped(particles)
             ),
             rate: Some((particles, unit)),
@@ -70,6 +82,11 @@ impl Summary {
             self.work, seconds
         )
     }
+}
+
+/// `n word` or `n words`.
+pub fn counted(n: usize, word: &str) -> String {
+    format!("{n} {word}{}", if n == 1 { "" } else { "s" })
 }
 
 /// `1234567` as `1 234 567`.

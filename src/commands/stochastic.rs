@@ -46,8 +46,7 @@ pub fn run(args: &StochasticArgs) -> Result<Summary> {
     });
     let seconds = t0.elapsed().as_secs_f64();
     let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
-    let particles = tallies.iter().map(|t| t.counters.particles).sum();
-    let tallies_len = tallies.len();
+    let summary = Summary::monte_carlo(plan.shard, &tallies, "rebounds", &target);
     if let Some(identity) = &identity {
         runner::write_partial(out.path(), identity, &plan, p.notes, tallies, seconds)?;
     } else {
@@ -61,12 +60,6 @@ pub fn run(args: &StochasticArgs) -> Result<Summary> {
             seconds,
         )?);
     }
-    let dir = out.commit()?;
-    let what = match plan.shard {
-        Some(s) => format!("shard {}/{}: ", s.index, s.count),
-        None => String::new(),
-    };
-    let mut summary = Summary::particles(tallies_len, particles, "rebounds", &dir);
-    summary.work = format!("{what}{}", summary.work);
+    out.commit()?;
     Ok(summary)
 }

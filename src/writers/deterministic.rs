@@ -14,17 +14,10 @@ use crate::surface::stats::measured_deviations;
 use crate::surface::HeightField;
 use crate::tally::engine::ConditionStats;
 use crate::tally::schema::write_tables;
-use crate::tally::{ConditionResult, ConditionTally, BLOCK_SIZE};
+use crate::tally::{ConditionResult, ConditionTally};
 use std::path::Path;
 
-fn f(x: f64) -> toml::Value {
-    toml::Value::Float(x)
-}
-
-fn round(x: f64, digits: i32) -> f64 {
-    let p = 10f64.powi(digits);
-    (x * p).round() / p
-}
+use super::{f, round};
 
 /// `surface_choice` of `run.toml`: where the surface came from, its grid and (`measure`)
 /// the deviations it has.
@@ -166,23 +159,7 @@ pub fn finish(
         "max_collisions",
         toml::Value::Integer(p.options.max_collisions as i64),
     );
-    manifest.set_run(
-        "particles_per_condition",
-        toml::Value::Integer(p.scene.count as i64),
-    );
-    if let Some(t) = p.scene.target_se_deg {
-        manifest.set_run("target_se_deg", f(t));
-    }
-    manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
-    if let Some(e) = &p.setup.erosion {
-        manifest.set("erosion", e.manifest());
-    }
-    if p.scene.speed.reference != crate::incidence::SpeedReference::Horizontal {
-        manifest.set_run(
-            "speed_reference",
-            toml::Value::String(p.scene.speed.reference.name().into()),
-        );
-    }
+    super::scene_entries(&mut manifest, &p.scene, p.setup.erosion.as_ref());
     manifest.set_run("compute_s", f(round(seconds, 4)));
     let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();
     if stats.is_some() && seconds > 0.0 {

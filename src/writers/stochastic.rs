@@ -9,17 +9,10 @@ use crate::output::{prepare_out_dir, Manifest};
 use crate::stochastic::simulate::gamma_model_curve;
 use crate::tally::engine::ConditionStats;
 use crate::tally::schema::write_tables;
-use crate::tally::{ConditionTally, BLOCK_SIZE};
+use crate::tally::ConditionTally;
 use std::path::Path;
 
-fn f(x: f64) -> toml::Value {
-    toml::Value::Float(x)
-}
-
-fn round(x: f64, digits: i32) -> f64 {
-    let p = 10f64.powi(digits);
-    (x * p).round() / p
-}
+use super::{f, round};
 
 /// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
 /// the run's [`OutputDir`](crate::output::OutputDir)): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
@@ -111,23 +104,7 @@ pub fn finish(
             f(p.setup.variant.delta_gamma_on(&p.setup.wall).to_degrees()),
         );
     }
-    manifest.set_run(
-        "particles_per_condition",
-        toml::Value::Integer(p.scene.count as i64),
-    );
-    if let Some(t) = p.scene.target_se_deg {
-        manifest.set_run("target_se_deg", f(t));
-    }
-    manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
-    if let Some(e) = &p.setup.erosion {
-        manifest.set("erosion", e.manifest());
-    }
-    if p.scene.speed.reference != crate::incidence::SpeedReference::Horizontal {
-        manifest.set_run(
-            "speed_reference",
-            toml::Value::String(p.scene.speed.reference.name().into()),
-        );
-    }
+    super::scene_entries(&mut manifest, &p.scene, p.setup.erosion.as_ref());
     manifest.set_run("delta_xi_deg", f(round(wall.delta_xi.to_degrees(), 6)));
     manifest.set_run("delta_zeta_deg", f(round(wall.delta_zeta.to_degrees(), 6)));
     let total: u64 = tallies.iter().map(|t| t.counters.particles).sum();

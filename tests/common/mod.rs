@@ -169,8 +169,8 @@ impl Default for Dir {
     }
 }
 
-/// Runs `rebound COMMAND --case CASE --out OUT EXTRA…`, which must succeed; returns `out`.
-pub fn run_case(command: &str, case: &Path, out: &Path, extra: &[&str]) -> PathBuf {
+/// Runs `rebound COMMAND --case CASE --out OUT EXTRA…` and returns what it gave.
+pub fn rebound_case(command: &str, case: &Path, out: &Path, extra: &[&str]) -> Run {
     let mut args = vec![
         command,
         "--case",
@@ -179,7 +179,12 @@ pub fn run_case(command: &str, case: &Path, out: &Path, extra: &[&str]) -> PathB
         out.to_str().unwrap(),
     ];
     args.extend_from_slice(extra);
-    rebound(&args).ok();
+    rebound(&args)
+}
+
+/// Runs `rebound COMMAND --case CASE --out OUT EXTRA…`, which must succeed; returns `out`.
+pub fn run_case(command: &str, case: &Path, out: &Path, extra: &[&str]) -> PathBuf {
+    rebound_case(command, case, out, extra).ok();
     out.to_path_buf()
 }
 

@@ -224,14 +224,14 @@ pub fn run(cli: Cli) -> Result<()> {
         .num_threads(threads)
         .build()
         .map_err(|e| Error::Io(format!("thread pool: {e}")))?;
-    // Warnings are printed once the command has succeeded, so that an error is always the
-    // one line a failed run prints.
-    // (`install` runs the command on a pool thread: capture there.)
     if cli.quiet {
         roughwall::progress::hide();
     }
     let t0 = std::time::Instant::now();
-    let (result, warnings) = pool.install(|| roughwall::case::capture_warnings(|| dispatch(&cli)));
+    // Warnings are printed once the command has succeeded, so that an error is always the
+    // one line a failed run prints. `install` runs the command on a pool thread: its
+    // warnings are kept there.
+    let (result, warnings) = pool.install(|| (dispatch(&cli), commands::take_warnings()));
     let summary = result?;
     for w in warnings {
         eprintln!("warning: {w}");

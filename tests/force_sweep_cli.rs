@@ -221,7 +221,7 @@ fn a_section_of_another_command_is_a_warning_naming_it() {
     .unwrap();
     let r = rebound_case("stochastic", &case, &dir.path().join("o"), &[]).ok();
     assert!(
-        r.stderr.contains("warning: section [particle] is not read by `stochastic` (did you mean [particles]?): only `force-sweep` read it"),
+        r.stderr.contains("warning: section [particle] is not read by `stochastic` (did you mean [particles]?): it is read by `force-sweep` only"),
         "{}",
         r.stderr
     );

@@ -20,7 +20,7 @@ pub mod stochastic;
 pub mod values;
 pub mod wall;
 
-pub use crate::warning::{capture_warnings, warn, Warning};
+pub use crate::warning::Warning;
 pub use load::{load, load_text, parse, resolve_path, DEFAULT_SEED};
 pub use scene::{IncidentCondition, Scene, SpeedLaw};
 pub use schema::*;

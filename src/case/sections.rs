@@ -88,7 +88,7 @@ pub fn unread(case: &Case, command: &str) -> Vec<Warning> {
             ""
         };
         out.push(Warning(format!(
-            "section [{name}] is not read by `{command}`{hint}: only {by} read it"
+            "section [{name}] is not read by `{command}`{hint}: it is read by {by} only"
         )));
     }
     out
@@ -112,7 +112,7 @@ mod tests {
         );
         assert_eq!(
             w,
-            ["section [particle] is not read by `stochastic` (did you mean [particles]?): only `force-sweep` read it"]
+            ["section [particle] is not read by `stochastic` (did you mean [particles]?): it is read by `force-sweep` only"]
         );
     }
 
@@ -127,7 +127,7 @@ mod tests {
         // `surface` reads the wall only.
         let w = warnings(scene, "surface");
         assert_eq!(w.len(), 6, "{w:?}");
-        assert!(w[0].starts_with("section [incidence] is not read by `surface`: only `deterministic`, `stochastic`, `calibrate` read it"), "{w:?}");
+        assert!(w[0].starts_with("section [incidence] is not read by `surface`: it is read by `deterministic`, `stochastic`, `calibrate` only"), "{w:?}");
     }
 
     #[test]
@@ -142,7 +142,7 @@ mod tests {
         );
         assert_eq!(
             w,
-            ["section [stats] is not read by `force-sweep`: only `surface` read it"]
+            ["section [stats] is not read by `force-sweep`: it is read by `surface` only"]
         );
     }
 

@@ -2,13 +2,13 @@
 //! on the deterministic simulation of a case (`roughwall::deterministic::calibrate`).
 
 use crate::cli::CalibrateArgs;
-use crate::commands::{context, counted, grouped, warn, Summary, Wrote};
+use crate::commands::{begin_out, context, counted, grouped, warn, Summary, Wrote};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::generate_surface;
 use roughwall::deterministic::{calibrate::escape_counts, Tracker};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::check_out;
-use roughwall::output::{write_atomic, OutputDir};
+use roughwall::output::write_atomic;
 use roughwall::runner::TallyOverrides;
 use roughwall::stochastic::escape_table::EscapeTable;
 use roughwall::surface::stats::measured_deviations;
@@ -40,7 +40,7 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     // The reduced angles use the deviations the surface has, not the ones it was meant to
     // have: the table must not absorb the surface's discretisation (a few per cent).
     let measured = measured_deviations(&field);
-    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
+    let out = begin_out(&ctx.out_dir)?;
     let t0 = std::time::Instant::now();
     let mut setup = p.setup;
     setup.wall = measured;

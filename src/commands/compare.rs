@@ -2,7 +2,7 @@
 //! the PDFs of two runs (see `roughwall::compare`, which reads and computes; this writes).
 
 use crate::cli::CompareArgs;
-use crate::commands::{Summary, Wrote};
+use crate::commands::{begin_out, Summary, Wrote};
 use roughwall::compare::{compare_runs, comparison_table, read_run, unmatched_table};
 use roughwall::error::{Error, Result};
 use roughwall::output::{out_dir, write_atomic};
@@ -67,7 +67,7 @@ fn run_compare(
             b_dir.display()
         )));
     }
-    let staged = out_dir::OutputDir::begin(out, "--out")?;
+    let staged = begin_out(out)?;
     let dir = staged.path();
     comparison_table(&rows).write(&dir.join("comparison.csv"))?;
     unmatched_table(&unmatched).write(&dir.join("unmatched.csv"))?;

@@ -3,13 +3,12 @@
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
 use crate::cli::DeterministicArgs;
-use crate::commands::{context, warn, Summary};
+use crate::commands::{begin_out, context, warn, Summary};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::scene::build_surface;
 use roughwall::deterministic::{fill_block, Tracker};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::{check_distinct, check_out};
-use roughwall::output::OutputDir;
 use roughwall::runner;
 use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
@@ -76,7 +75,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     }
     // The surface is valid: lock and stage the output directory (a shard's own directory for
     // a shard run), then compute.
-    let out = OutputDir::begin(&target, "--out")?;
+    let out = begin_out(&target)?;
     let t1 = std::time::Instant::now();
     let (setup, conditions, seed) = (&p.setup, &p.scene.conditions, ctx.seed);
     let done = runner::execute(&plan, "deterministic", |k, start, end, block| {

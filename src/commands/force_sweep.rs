@@ -15,7 +15,7 @@
 //!
 //! `--out` is written as a whole (staging directory, lock, swap: `roughwall::output::out_dir`).
 use crate::cli::ForceSweepArgs;
-use crate::commands::{context, grouped, Summary, Wrote};
+use crate::commands::{begin_out, context, grouped, Summary, Wrote};
 use roughwall::case::{builtin, force::resolve};
 use roughwall::error::Result;
 use roughwall::figures;
@@ -24,13 +24,12 @@ use roughwall::force::tables::{
     accuracy_table, convergence_outputs, convergence_runs, manifest_table, rows_table,
 };
 use roughwall::force::Model;
-use roughwall::output::OutputDir;
 
 /// Runs the subcommand.
 pub fn run(args: &ForceSweepArgs) -> Result<Summary> {
     let mut ctx = context(&args.common, "force-sweep", builtin::FORCE_SWEEP)?;
     let (material, sweep) = resolve(&ctx.case)?;
-    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
+    let out = begin_out(&ctx.out_dir)?;
     let rows = sweep.rows(&material)?;
     let dir = out.path().to_path_buf();
     rows_table(&rows).write(&dir.join("force_sweep.csv"))?;

@@ -2,11 +2,10 @@
 //! become the outputs of one run, byte for byte (see `crate::runner::merge`).
 
 use crate::cli::MergeArgs;
-use crate::commands::{warn, Summary};
+use crate::commands::{begin_out, warn, Summary};
 use roughwall::case::{deterministic, stochastic};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::{check_distinct, check_out};
-use roughwall::output::OutputDir;
 use roughwall::run_context::Context;
 use roughwall::runner::{self, overrides_of};
 use roughwall::tally::partial::RunIdentity;
@@ -62,7 +61,7 @@ pub fn run(args: &MergeArgs) -> Result<Summary> {
     let (_, o) = overrides_of(id)?;
     // The merged outputs replace `--out` as a whole: it must not be one of the shards read.
     check_distinct(&ctx.out_dir, "--out", &inputs)?;
-    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
+    let out = begin_out(&ctx.out_dir)?;
     let mut manifest = ctx.manifest;
     manifest.set_run("merged_shards", toml::Value::Integer(merged.shards as i64));
     manifest.set_run(

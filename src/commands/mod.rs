@@ -12,6 +12,7 @@ pub mod surface;
 use crate::cli::CommonArgs;
 use roughwall::case::Warning;
 use roughwall::error::Result;
+use roughwall::output::OutputDir;
 use roughwall::run_context::Context;
 use roughwall::tally::{ConditionTally, Shard};
 use std::path::{Path, PathBuf};
@@ -126,10 +127,7 @@ fn listing(dir: &Path) -> String {
     let figures = names.iter().filter(|n| n.ends_with(".svg")).count();
     let mut shown: Vec<String> = names.into_iter().filter(|n| !n.ends_with(".svg")).collect();
     if figures > 0 {
-        shown.push(format!(
-            "{figures} SVG figure{}",
-            if figures == 1 { "" } else { "s" }
-        ));
+        shown.push(counted(figures, "SVG figure"));
     }
     shown.join(", ")
 }
@@ -148,10 +146,25 @@ pub fn context(common: &CommonArgs, command: &str, default_toml: &str) -> Result
     Ok(ctx)
 }
 
-/// Hands the warnings of the library to the binary's stderr: `cli::run` prints them, in
-/// order, once the command has succeeded (an error is always the one line a failed run prints).
+/// Begins writing `--out` at `dir` ([`OutputDir::begin`]) and hands its warnings on.
+pub fn begin_out(dir: &Path) -> Result<OutputDir> {
+    let mut out = OutputDir::begin(dir, "--out")?;
+    warn(out.take_warnings());
+    Ok(out)
+}
+
+thread_local! {
+    /// The warnings of the command running on this thread, in order.
+    static WARNINGS: std::cell::RefCell<Vec<Warning>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// Keeps the warnings the library returned: `cli::run` prints them, in order, once the
+/// command has succeeded (an error is always the one line a failed run prints).
 pub fn warn(warnings: impl IntoIterator<Item = Warning>) {
-    for w in warnings {
-        roughwall::case::warn(&w.0);
-    }
+    WARNINGS.with(|list| list.borrow_mut().extend(warnings));
+}
+
+/// The warnings kept on this thread so far (emptied).
+pub fn take_warnings() -> Vec<Warning> {
+    WARNINGS.with(|list| std::mem::take(&mut *list.borrow_mut()))
 }

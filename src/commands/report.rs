@@ -20,7 +20,7 @@ pub fn run(args: &ReportArgs) -> Result<Summary> {
     }
     roughwall::report::write_report(&args.results)?;
     Ok(Summary {
-        work: format!("the report of {}", args.results.display()),
+        work: format!("read {}", args.results.display()),
         rate: None,
         wrote: Wrote::Files(vec![args.results.join("REPORT.md")]),
     })

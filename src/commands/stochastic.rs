@@ -2,10 +2,9 @@
 //! (Sec. 3.6, Fig. 13; notes §3) for every incident condition of the case.
 
 use crate::cli::StochasticArgs;
-use crate::commands::{context, warn, Summary};
+use crate::commands::{begin_out, context, warn, Summary};
 use roughwall::case::{builtin, stochastic::prepare};
 use roughwall::error::Result;
-use roughwall::output::OutputDir;
 use roughwall::runner;
 use roughwall::stochastic::simulate::fill_block;
 use roughwall::tally::engine::ConditionStats;
@@ -38,7 +37,7 @@ pub fn run(args: &StochasticArgs) -> Result<Summary> {
         Some(shard) => ctx.shard_dir(args.common.out.as_deref(), shard),
         None => ctx.out_dir.clone(),
     };
-    let out = OutputDir::begin(&target, "--out")?;
+    let out = begin_out(&target)?;
     let t0 = std::time::Instant::now();
     let (setup, conditions, seed) = (&p.setup, &p.scene.conditions, ctx.seed);
     let done = runner::execute(&plan, "stochastic", |k, start, end, block| {

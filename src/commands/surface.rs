@@ -8,11 +8,11 @@
 //! moves with the swap, one outside it is written on its own (atomically).
 
 use crate::cli::SurfaceArgs;
-use crate::commands::{context, warn, Summary, Wrote};
+use crate::commands::{begin_out, context, counted, warn, Summary, Wrote};
 use roughwall::case::builtin;
 use roughwall::error::Result;
 use roughwall::figures;
-use roughwall::output::out_dir::{place_file, OutputDir};
+use roughwall::output::out_dir::place_file;
 use roughwall::surface::dilation::effective_roughness;
 use roughwall::surface::generate;
 use roughwall::surface::heights_io::write_heights;
@@ -47,7 +47,7 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
         .as_deref()
         .map(|h| place_file(h, "--heights", &ctx.out_dir, &OUTPUT_FILES))
         .transpose()?;
-    let out = OutputDir::begin(&ctx.out_dir, "--out")?;
+    let out = begin_out(&ctx.out_dir)?;
 
     let t0 = Instant::now();
     let field = generate(&spec, ctx.seed);
@@ -108,17 +108,19 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
         .set_run("stats_s", toml::Value::Float(round_ms(t_stats)));
     ctx.manifest.write(&dir)?;
     let dir = out.commit()?;
+    // The grid the case asked for: a surface constant along z is stored with one row.
     let mut work = format!(
-        "{} × {} surface, {} rotated frame{}",
-        field.nx,
-        field.nz,
-        betas.len(),
-        if betas.len() == 1 { "" } else { "s" }
+        "{n} × {n} surface, {}",
+        counted(betas.len(), "rotated frame"),
+        n = spec.nodes
     );
     if !diameters.is_empty() {
-        work += &format!(", effective roughness of {} diameters", diameters.len());
+        work += &format!(
+            ", effective roughness of {}",
+            counted(diameters.len(), "diameter")
+        );
     }
-    let nodes = (field.nx as u64).saturating_mul(field.nz as u64);
+    let nodes = (spec.nodes as u64).saturating_mul(spec.nodes as u64);
     Ok(Summary {
         work,
         rate: Some((nodes, "nodes")),

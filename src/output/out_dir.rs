@@ -31,6 +31,7 @@
 //!   `--out`, which holds the lock and so knows that no live run owns them.
 
 use crate::error::{Error, Result};
+use crate::warning::Warning;
 use std::ffi::{OsStr, OsString};
 use std::fs::{self, File};
 use std::io;
@@ -52,6 +53,8 @@ pub struct OutputDir {
     staging: PathBuf,
     _lock: Option<File>,
     committed: bool,
+    /// What the caller should tell the user (a file system without locks).
+    warnings: Vec<Warning>,
 }
 
 impl OutputDir {
@@ -66,7 +69,8 @@ impl OutputDir {
         fs::create_dir_all(&parent).map_err(|e| Error::io(&parent, e))?;
         let key = key_of(&name);
         let lock_path = parent.join(format!(".{key}.lock"));
-        let lock = lock(&lock_path, target)?;
+        let mut warnings = Vec::new();
+        let lock = lock(&lock_path, target, &mut warnings)?;
         recover(&parent, &key, &resolved)?;
         // The state may have changed while we were not holding the lock.
         check_out(target, option)?;
@@ -79,7 +83,13 @@ impl OutputDir {
             staging,
             _lock: lock,
             committed: false,
+            warnings,
         })
+    }
+
+    /// The warnings of [`Self::begin`], for the caller to print (taken once).
+    pub fn take_warnings(&mut self) -> Vec<Warning> {
+        std::mem::take(&mut self.warnings)
     }
 
     /// Where the run writes its outputs (the staging directory).
@@ -344,8 +354,9 @@ fn key_of(name: &OsStr) -> String {
     }
 }
 
-/// Opens (creating it if needed) and locks the lock file of `shown`.
-fn lock(path: &Path, shown: &Path) -> Result<Option<File>> {
+/// Opens (creating it if needed) and locks the lock file of `shown`; a file system that has no
+/// locks is a warning in `warnings`, not an error.
+fn lock(path: &Path, shown: &Path, warnings: &mut Vec<Warning>) -> Result<Option<File>> {
     let mut opts = fs::OpenOptions::new();
     opts.read(true).write(true).create(true).truncate(false);
     #[cfg(unix)]
@@ -370,11 +381,11 @@ fn lock(path: &Path, shown: &Path) -> Result<Option<File>> {
                     )))
                 }
                 Some(c) if c == libc::ENOLCK || c == libc::EOPNOTSUPP || c == libc::ENOSYS => {
-                    crate::warning::warn(&format!(
+                    warnings.push(Warning(format!(
                         "`{}` cannot be locked ({e}): concurrent runs on `{}` are not detected",
                         path.display(),
                         shown.display()
-                    ));
+                    )));
                     Ok(Some(file))
                 }
                 _ => Err(Error::io(path, e)),

@@ -189,7 +189,7 @@ fn later_collisions_follow_the_table_of_the_later_stage() {
     let t = EscapeTable::builtin();
     let mut lower = 0;
     for x_out in [0.2, 0.4, 0.6, 0.8] {
-        if t.p_escape(Stage::Later, -1.0, x_out) < t.p_escape(Stage::First, -1.0, x_out) {
+        if t.p_escape(Stage::later(-0.75), -1.0, x_out) < t.p_escape(Stage::FIRST, -1.0, x_out) {
             lower += 1;
         }
     }

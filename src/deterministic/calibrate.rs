@@ -43,6 +43,18 @@ pub fn escape_counts(
                     let h = history_observed(tracker, setup, cond, &prefix, i, |hit: &HitInfo| {
                         hits.push((hit.u_in, hit.u_out, hit.normal))
                     });
+                    // Every collision's stage: a later one by the element just left, seen
+                    // from the new direction (its memory `q`).
+                    let stages: Vec<Stage> = (0..hits.len())
+                        .map(|j| match j {
+                            0 => Stage::FIRST,
+                            _ => {
+                                let beta = incident_angles(&hits[j].0).1;
+                                let dg = delta_gamma(&setup.wall, beta);
+                                Stage::later(gamma_from_normal(&hits[j - 1].2, beta).0 / dg)
+                            }
+                        })
+                        .collect();
                     // Every collision's element beside a shadow-law draw for its direction.
                     let mut model_stream = model_prefix.stream(i);
                     for (j, (u_in, _, normal)) in hits.iter().enumerate() {
@@ -58,9 +70,8 @@ pub fn escape_counts(
                         };
                         let (g_det, _) = gamma_from_normal(normal, beta);
                         let g_model = shadow.sample(&mut model_stream);
-                        let stage = if j == 0 { Stage::First } else { Stage::Later };
                         counts.push_element(
-                            stage,
+                            stages[j],
                             reduced_angle(u_in, &setup.wall),
                             g_det / dg,
                             g_model / dg,
@@ -69,8 +80,7 @@ pub fn escape_counts(
                     if h.fate == Fate::Escaped {
                         let last = hits.len().saturating_sub(1);
                         for (j, (u_in, u_out, _)) in hits.iter().enumerate() {
-                            let stage = if j == 0 { Stage::First } else { Stage::Later };
-                            counts.push(stage, u_in, u_out, &setup.wall, j == last);
+                            counts.push(stages[j], u_in, u_out, &setup.wall, j == last);
                         }
                     }
                     (counts, hits)

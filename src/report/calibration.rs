@@ -148,9 +148,11 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
         "`[stochastic] model = \"calibrated\"` keeps the paper's virtual walls (Eqs. 26, 29–33) but \
          replaces the single-collision law (Eq. 34) by an escape probability \
          P(escape | stage, α/Δγ(β), α⁺/Δγ(β⁺)), corrects the shadow law's γ (Eq. 31) by a weight \
-         w(stage, α/Δγ(β), γ/Δγ(β)), both measured by `rebound calibrate` on the deterministic \
+         w(stage, α/Δγ(β), (γ − α)/Δγ(β)), both measured by `rebound calibrate` on the deterministic \
          simulation, and follows multiple collisions instead of redrawing them (a trapped particle meets \
-         the wall again with its rebound velocity). The shipped table is calibrated on the (2.5°, 7.5°) \
+         the wall again with its rebound velocity; the stage of a later collision remembers the \
+         inclination of the element it has just left, because a trapped particle meets the other side \
+         of its valley). The shipped table is calibrated on the (2.5°, 7.5°) \
          wall only ({}). Both models run here with the deviations **measured on the deterministic \
          surface** (its `run.toml`: the generated, triangulated surfaces have a few per cent less slope than \
          nominal, and run with the nominal deviations a model is also judged on that difference), {n} particles per condition \
@@ -211,13 +213,13 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
          another surface (seed 7) against the first: the deterministic run's own noise, surface \
          realisation included (it is not 0.0019: a new surface moves the PDFs more than a new set of \
          particles does). `calibrated` is within that noise (all three columns no larger) on: {}. Max KS of α⁺ (|α⁻| ≥ 2.5°), paper → \
-         calibrated: {}. The first element's law now follows the deterministic one (column `max KS γ \
-         first`); what remains is in the histories with more than one collision: the model matches the \
-         deterministic single-collision fraction and the single-collision rebounds, but a trapped \
-         particle's later collisions end at other angles than on the surface (diagnosis and numbers: \
-         [models.md](../docs/models.md#the-calibrated-model)). ns/rebound is the whole run's compute time \
-         on 2 threads (measured while other jobs ran; `docs/models.md` has the cost against the paper \
-         model).\n\n",
+         calibrated: {}. The first element's law follows the deterministic one (column `max KS γ \
+         first`), and so do the single-collision rebounds and, with the valley's memory, the \
+         two-collision ones at grazing incidence; what remains is in the histories of three or more \
+         collisions, in the two-collision histories at steep incidence, and in the spread of β⁺ − β⁻ \
+         (diagnosis and numbers: [models.md](../docs/models.md#the-calibrated-model)). ns/rebound is the whole run's compute time \
+         on 2 threads (it varies with the machine's load; `docs/models.md` has the cost against the \
+         paper model per rebound on one core).\n\n",
         name(&all_ok),
         name(&steep_ok),
         name(&within),

@@ -236,9 +236,8 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
                 "`calibrated` (the paper's walls with laws measured on a deterministic run; next \
                  section) runs here, like every row, with the wall's *nominal* deviations: mean max \
                  KS {:.4} (α⁺) and {:.4} (β⁺ − β⁻), {:.1}× and {:.1}× the paper model's. With nominal \
-                 deviations it is not better than the paper model: the generated surfaces have a few \
-                 per cent less slope than nominal, and that difference, not the model, dominates \
-                 here. Against the surface's measured deviations (next section) it is.\n",
+                 deviations the generated surfaces' few per cent less slope than nominal adds to \
+                 both models' error; the next section compares them without it.\n",
                 cal.1,
                 cal.2,
                 cal.1 / paper.1.max(1e-12),

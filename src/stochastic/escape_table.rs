@@ -7,15 +7,16 @@
 //! within the deterministic noise"): at grazing incidence a particle hits near the asperity
 //! tops and escapes more easily, and after a first collision it starts low, in a valley.
 //! So the table is indexed by the collision's stage (first, or a later one of the same
-//! history), by the incident direction and by the rebound direction, both in units of the
-//! wall's roughness angle in their own plane:
+//! history, remembering the element the particle has just left: [`Stage::later`]), by the
+//! incident direction and by the rebound direction, both in units of the wall's roughness
+//! angle in their own plane:
 //!
 //! `x_in = α/Δγ(β)` of the velocity before the collision (negative: descending; positive:
 //! a rebound that was trapped and meets the wall again while rising), and
 //! `x_out = α⁺/Δγ(β⁺)` of the rebound (`Δγ(β)` of Eq. 26/35, `√(cos²β Δξ² + sin²β Δζ²)`).
 //!
 //! The grid is fixed (so tables are comparable and a file cannot disagree with the code
-//! about it): `x_in ∈ [−6, 6]` in 24 bins, `x_out ∈ [0, 4]` in 40 bins, two stages. The
+//! about it): `x_in ∈ [−6, 6]` in 24 bins, `x_out ∈ [0, 4]` in 40 bins, five stages. The
 //! probability is read bilinearly between bin centres (clamped at the edges); beyond
 //! `x_out = 4` it is 1 (the deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
 
@@ -34,50 +35,77 @@ pub const X_IN_BINS: usize = 24;
 pub const X_OUT_MAX: f64 = 4.0;
 /// Bins along `x_out`.
 pub const X_OUT_BINS: usize = 40;
-/// Stages: the first collision of a history, and the later ones.
-pub const STAGES: usize = 2;
+/// Slices: the first collision of a history, and the later ones by the memory `q`
+/// ([`Q_EDGES`]).
+pub const SLICES: usize = 2 + Q_EDGES.len();
 /// Cells of a table.
-pub const CELLS: usize = STAGES * X_IN_BINS * X_OUT_BINS;
+pub const CELLS: usize = SLICES * X_IN_BINS * X_OUT_BINS;
 /// Collisions a cell needs to stand on its own (one standard error of `p` is then at most
 /// `√(0.25/50) ≈ 0.07`); sparser cells take their neighbour's value.
 pub const MIN_COUNT: u64 = 50;
 /// Shadow-law draws a first-element cell needs for its weight (the weight's relative
 /// noise is about `√(2/n)`: 4.5 % here); sparser cells keep the shadow law (weight 1).
 pub const ELEMENT_MIN_COUNT: u64 = 1000;
-/// Lower edge of the reduced element angle `g = γ/Δγ(β)`: the Gaussian factor
-/// `exp(−g²/2)` of Eq. (31) leaves less than 4·10⁻⁵ of its mass below −4; the range reaches
-/// 6 above because the shadow weighting shifts the draws towards the particle. Outside it
-/// the weight is 1.
-pub const G_MIN: f64 = -4.0;
-/// Upper edge of `g`.
-pub const G_MAX: f64 = 6.0;
-/// Bins along `g`.
-pub const G_BINS: usize = 100;
-/// Cells of the first-element correction.
-pub const ELEMENT_CELLS: usize = STAGES * X_IN_BINS * G_BINS;
+/// Lower edge of the element's reduced local impact angle `s = (γ − α)/Δγ(β)` (`α` clamped
+/// to the `x_in` range): an element the particle can reach has `s > 0`, and the shadow law
+/// of Eq. (31) vanishes like `sin(α + γ)` there. Reading the correction in `s` rather than in
+/// `γ` lines up that cut-off for the directions a cell mixes. Outside the range the weight
+/// is 1 (the Gaussian factor leaves less than 4·10⁻⁵ of its mass beyond it).
+pub const G_MIN: f64 = 0.0;
+/// Upper edge of `s`.
+pub const G_MAX: f64 = 10.0;
+/// Bins along `s`.
+pub const G_BINS: usize = 125;
+/// Edges of the memory axis of the later collisions: `q = γ_prev/Δγ(β)`, the inclination
+/// of the element the particle has just left, seen from its new direction `β` (negative:
+/// it left down a slope). A trapped particle meets a valley's other side: on the
+/// deterministic surface its next element is 0.3–0.6 Δγ steeper after a steep downslope
+/// than after a flat one, and a rising particle escapes less often after an upslope.
+pub const Q_EDGES: [f64; 3] = [-1.25, -0.5, 0.25];
+/// Cells of the element correction.
+pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
-pub const MAGIC: &str = "# roughwall escape table v2";
+pub const MAGIC: &str = "# roughwall escape table v3";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
-const ELEMENT_HEADER: &str = "element_stage,x_in,g,deterministic,model,weight";
+const ELEMENT_HEADER: &str = "element_stage,x_in,s,deterministic,model,weight";
 const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
 
 const DX_IN: f64 = (X_IN_MAX - X_IN_MIN) / X_IN_BINS as f64;
 const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
 
-/// Which collision of a history.
+/// Which collision of a history: the first, or a later one with the memory of the element
+/// the particle has just left (its `q` bin, [`Q_EDGES`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Stage {
-    /// The first collision (the particle comes from the flow).
-    First = 0,
-    /// A later one (the particle was trapped by the roughness).
-    Later = 1,
-}
+pub struct Stage(usize);
 
 impl Stage {
-    fn name(self) -> &'static str {
-        match self {
-            Stage::First => "first",
-            Stage::Later => "later",
+    /// The first collision (the particle comes from the flow).
+    pub const FIRST: Stage = Stage(0);
+
+    /// A later collision (the particle was trapped by the roughness) of a particle that has
+    /// just left an element of reduced inclination `q = γ_prev/Δγ(β)`, seen from its new
+    /// direction `β` (a NaN counts as 0).
+    #[inline]
+    pub fn later(q: f64) -> Stage {
+        let q = if q.is_nan() { 0.0 } else { q };
+        Stage(1 + Q_EDGES.iter().filter(|&&e| q >= e).count())
+    }
+
+    /// Every stage, in table order.
+    pub fn all() -> impl Iterator<Item = Stage> {
+        (0..SLICES).map(Stage)
+    }
+
+    /// Whether this is the first collision.
+    pub fn is_first(self) -> bool {
+        self.0 == 0
+    }
+
+    /// The stage's name in a table file: `first`, `later-q0`, `later-q1`, ….
+    fn name(self) -> String {
+        match self.0 {
+            0 => "first".to_string(),
+            k => format!("later-q{}", k - 1),
         }
     }
 }
@@ -92,7 +120,7 @@ pub fn reduced_angle(u: &Vector3<f64>, wall: &Deviations) -> f64 {
 }
 
 fn cell(stage: Stage, i_in: usize, i_out: usize) -> usize {
-    (stage as usize * X_IN_BINS + i_in) * X_OUT_BINS + i_out
+    (stage.0 * X_IN_BINS + i_in) * X_OUT_BINS + i_out
 }
 
 fn bin_in(x_in: f64) -> usize {
@@ -122,13 +150,15 @@ impl Default for EscapeCounts {
     }
 }
 
-/// The cell of `(stage, x_in, g)` in the element tables (`None` outside the `g` range).
+/// The cell of `(slice, x_in, g)` in the element tables, `g = γ/Δγ(β)` (`None` outside
+/// the `s` range).
 fn element_cell(stage: Stage, x_in: f64, g: f64) -> Option<usize> {
-    if !(G_MIN..G_MAX).contains(&g) || x_in.is_nan() {
+    let s = g - x_in.clamp(X_IN_MIN, X_IN_MAX);
+    if !(G_MIN..G_MAX).contains(&s) || x_in.is_nan() {
         return None;
     }
-    let i_g = (((g - G_MIN) / DG) as usize).min(G_BINS - 1);
-    Some((stage as usize * X_IN_BINS + bin_in(x_in)) * G_BINS + i_g)
+    let i_s = (((s - G_MIN) / DG) as usize).min(G_BINS - 1);
+    Some((stage.0 * X_IN_BINS + bin_in(x_in)) * G_BINS + i_s)
 }
 
 impl EscapeCounts {
@@ -204,10 +234,9 @@ impl EscapeCounts {
 pub struct EscapeTable {
     counts: EscapeCounts,
     p: Vec<f64>,
-    /// First-element correction: the ratio of the deterministic first elements' law to the
-    /// shadow law per `(x_in, g)` cell (1 where the model drew fewer than
-    /// [`ELEMENT_MIN_COUNT`]),
-    /// and its largest value per `x_in` row (the rejection bound).
+    /// Element correction: the ratio of the deterministic elements' law to the shadow law
+    /// per `(stage, x_in, s)` cell (sparse cells: see [`EscapeTable::from_counts`]), and its
+    /// largest value per `x_in` row (the rejection bound).
     weight: Vec<f64>,
     row_max: Vec<f64>,
     /// Where the table came from (the `# source:` line of its file).
@@ -216,29 +245,41 @@ pub struct EscapeTable {
 
 impl EscapeTable {
     /// The table of `counts`. A cell with fewer than [`MIN_COUNT`] collisions takes the
-    /// value of the nearest cell along `x_in` (same stage and `x_out`) that has enough;
-    /// a column with none takes the first stage's filled value, and a column empty in both
-    /// stages is 1 (the rebound is steep enough that no run saw it trapped).
+    /// value of the nearest cell along `x_in` (same stage and `x_out`) that has enough; a
+    /// later stage's column with none takes the later stages' pooled counts (nearest along
+    /// `x_in`), then the first stage's filled value, and a column empty everywhere is 1 (the
+    /// rebound is steep enough that no run saw it trapped). An element cell with fewer than
+    /// [`ELEMENT_MIN_COUNT`] draws takes, for a later stage, the later stages' pooled ratio,
+    /// else 1.
     pub fn from_counts(counts: EscapeCounts, source: &str) -> EscapeTable {
         let mut p = vec![f64::NAN; CELLS];
-        for stage in [Stage::First, Stage::Later] {
+        // The later stages pooled: the fallback of a sparse later cell.
+        let plane = X_IN_BINS * X_OUT_BINS;
+        let pooled = |c: usize, v: &[u64]| -> u64 { (1..SLICES).map(|k| v[k * plane + c]).sum() };
+        let (pooled_c, pooled_e): (Vec<u64>, Vec<u64>) = (0..plane)
+            .map(|c| (pooled(c, &counts.collisions), pooled(c, &counts.escaped)))
+            .unzip();
+        for stage in Stage::all() {
             for i_out in 0..X_OUT_BINS {
-                let own = |i_in: usize| {
-                    let c = cell(stage, i_in, i_out);
-                    (counts.collisions[c] >= MIN_COUNT)
-                        .then(|| counts.escaped[c] as f64 / counts.collisions[c] as f64)
-                };
-                for i_in in 0..X_IN_BINS {
-                    // Nearest populated bin along x_in, the lower one first on a tie.
-                    let v = (0..X_IN_BINS).find_map(|d| {
+                // Nearest populated bin along x_in, the lower one first on a tie.
+                let nearest = |c: &[u64], e: &[u64], i_in: usize, k: usize| {
+                    let own = |i: usize| {
+                        let j = k + i * X_OUT_BINS + i_out;
+                        (c[j] >= MIN_COUNT).then(|| e[j] as f64 / c[j] as f64)
+                    };
+                    (0..X_IN_BINS).find_map(|d| {
                         let lo = i_in.checked_sub(d).and_then(own);
                         let hi = (i_in + d < X_IN_BINS).then(|| own(i_in + d)).flatten();
                         lo.or(hi)
-                    });
-                    let v = match (v, stage) {
-                        (Some(v), _) => v,
-                        (None, Stage::Later) => p[cell(Stage::First, i_in, i_out)],
-                        (None, Stage::First) => f64::NAN,
+                    })
+                };
+                for i_in in 0..X_IN_BINS {
+                    let own = nearest(&counts.collisions, &counts.escaped, i_in, stage.0 * plane);
+                    let v = match own {
+                        Some(v) => v,
+                        None if stage.is_first() => f64::NAN,
+                        None => nearest(&pooled_c, &pooled_e, i_in, 0)
+                            .unwrap_or(p[cell(Stage::FIRST, i_in, i_out)]),
                     };
                     p[cell(stage, i_in, i_out)] = v;
                 }
@@ -249,11 +290,24 @@ impl EscapeTable {
                 *v = 1.0;
             }
         }
+        // A later stage's sparse cell takes the later stages' pooled ratio.
+        let plane = X_IN_BINS * G_BINS;
+        let pooled = |c: usize, counts: &[u64]| -> u64 {
+            (1..SLICES).map(|k| counts[k * plane + c % plane]).sum()
+        };
         let weight: Vec<f64> = (0..ELEMENT_CELLS)
             .map(|c| {
-                let m = counts.element_model[c];
+                let (d, m) = (counts.element_deterministic[c], counts.element_model[c]);
+                let (d, m) = if m >= ELEMENT_MIN_COUNT || c < plane {
+                    (d, m)
+                } else {
+                    (
+                        pooled(c, &counts.element_deterministic),
+                        pooled(c, &counts.element_model),
+                    )
+                };
                 if m >= ELEMENT_MIN_COUNT {
-                    counts.element_deterministic[c] as f64 / m as f64
+                    d as f64 / m as f64
                 } else {
                     1.0
                 }
@@ -272,17 +326,19 @@ impl EscapeTable {
         }
     }
 
-    /// The first-element weight `w(x_in, g)` (bilinear between cell centres, 1 outside the
-    /// `g` range): the calibrated model accepts a shadow-law draw with `w / bound(x_in)`.
+    /// The element weight `w(stage, x_in, s)` of an element of reduced inclination
+    /// `g = γ/Δγ(β)`, read at `s = g − x_in` (bilinear between cell centres, 1 outside the
+    /// `s` range): the calibrated model accepts a shadow-law draw with `w / bound(x_in)`.
     #[inline]
     pub fn element_weight(&self, stage: Stage, x_in: f64, g: f64) -> f64 {
-        if g.is_nan() || !(G_MIN..G_MAX).contains(&g) {
+        let x_in = if x_in.is_nan() { 0.0 } else { x_in };
+        let s = g - x_in.clamp(X_IN_MIN, X_IN_MAX);
+        if s.is_nan() || !(G_MIN..G_MAX).contains(&s) {
             return 1.0;
         }
-        let x_in = if x_in.is_nan() { 0.0 } else { x_in };
         let (i0, i1, ti) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
-        let (g0, g1, tg) = axis(g, G_MIN, DG, G_BINS);
-        let row = stage as usize * X_IN_BINS;
+        let (g0, g1, tg) = axis(s, G_MIN, DG, G_BINS);
+        let row = stage.0 * X_IN_BINS;
         let at = |i: usize, j: usize| self.weight[(row + i) * G_BINS + j];
         let lo = at(i0, g0) + (at(i0, g1) - at(i0, g0)) * tg;
         let hi = at(i1, g0) + (at(i1, g1) - at(i1, g0)) * tg;
@@ -295,7 +351,7 @@ impl EscapeTable {
     pub fn element_bound(&self, stage: Stage, x_in: f64) -> f64 {
         let x_in = if x_in.is_nan() { 0.0 } else { x_in };
         let (i0, i1, _) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
-        let row = stage as usize * X_IN_BINS;
+        let row = stage.0 * X_IN_BINS;
         self.row_max[row + i0].max(self.row_max[row + i1]).max(1.0)
     }
 
@@ -333,7 +389,7 @@ impl EscapeTable {
     /// The table as a file: the magic line, `# source:`, then one row per cell.
     pub fn to_csv(&self) -> String {
         let mut s = format!("{MAGIC}\n# source: {}\n{HEADER}\n", self.source);
-        for stage in [Stage::First, Stage::Later] {
+        for stage in Stage::all() {
             for i_in in 0..X_IN_BINS {
                 for i_out in 0..X_OUT_BINS {
                     let c = cell(stage, i_in, i_out);
@@ -351,10 +407,10 @@ impl EscapeTable {
         }
         s.push_str(ELEMENT_HEADER);
         s.push('\n');
-        for stage in [Stage::First, Stage::Later] {
+        for stage in Stage::all() {
             for i_in in 0..X_IN_BINS {
                 for i_g in 0..G_BINS {
-                    let c = (stage as usize * X_IN_BINS + i_in) * G_BINS + i_g;
+                    let c = (stage.0 * X_IN_BINS + i_in) * G_BINS + i_g;
                     s.push_str(&format!(
                         "{},{:.3},{:.3},{},{},{:.6}\n",
                         stage.name(),
@@ -400,17 +456,17 @@ impl EscapeTable {
         let mut counts = EscapeCounts::default();
         let mut written_p = vec![0.0; CELLS];
         let mut rows = 0usize;
-        for stage in [Stage::First, Stage::Later] {
+        for stage in Stage::all() {
             for i_in in 0..X_IN_BINS {
                 for i_out in 0..X_OUT_BINS {
                     let cell_x = (i_out as f64 + 0.5) * DX_OUT;
                     let (n, l) = lines.next().ok_or_else(|| {
                         Error::Input(format!(
-                            "{what}: truncated after {rows} of {CELLS} rows (the grid is {STAGES} stages × {X_IN_BINS} × {X_OUT_BINS})"
+                            "{what}: truncated after {rows} of {CELLS} rows (the grid is {SLICES} stages × {X_IN_BINS} × {X_OUT_BINS})"
                         ))
                     })?;
-                    let (c, e, p) =
-                        parse_row(l, (stage, i_in), ("x_out", cell_x)).map_err(|m| bad(n, &m))?;
+                    let (c, e, p) = parse_row(l, (&stage.name(), i_in), ("x_out", cell_x))
+                        .map_err(|m| bad(n, &m))?;
                     if e > c {
                         return Err(bad(n, &format!("{e} escapes out of {c} collisions")));
                     }
@@ -429,18 +485,18 @@ impl EscapeTable {
             &format!("after the {CELLS} escape rows"),
         )?;
         let mut written_w = vec![0.0; ELEMENT_CELLS];
-        for stage in [Stage::First, Stage::Later] {
+        for stage in Stage::all() {
             for i_in in 0..X_IN_BINS {
                 for i_g in 0..G_BINS {
-                    let k = (stage as usize * X_IN_BINS + i_in) * G_BINS + i_g;
+                    let k = (stage.0 * X_IN_BINS + i_in) * G_BINS + i_g;
                     let cell_g = G_MIN + (i_g as f64 + 0.5) * DG;
                     let (n, l) = lines.next().ok_or_else(|| {
                         Error::Input(format!(
                             "{what}: truncated after {k} of {ELEMENT_CELLS} element rows"
                         ))
                     })?;
-                    let (d, m, w) =
-                        parse_row(l, (stage, i_in), ("g", cell_g)).map_err(|m| bad(n, &m))?;
+                    let (d, m, w) = parse_row(l, (&stage.name(), i_in), ("s", cell_g))
+                        .map_err(|m| bad(n, &m))?;
                     if w < 0.0 {
                         return Err(bad(n, &format!("weight = {w} is negative")));
                     }
@@ -518,7 +574,7 @@ pub const BUILTIN: &str = include_str!("../../configs/calibration/aniso-escape.c
 /// must be (the grid is fixed), the two counts and the value; the error without the line.
 fn parse_row(
     line: &str,
-    (stage, i_in): (Stage, usize),
+    (stage, i_in): (&str, usize),
     (axis_name, axis_value): (&str, f64),
 ) -> std::result::Result<(u64, u64, f64), String> {
     let f: Vec<&str> = line.split(',').collect();
@@ -536,11 +592,9 @@ fn parse_row(
             .map_err(|_| format!("`{}` is not a non-negative integer", f[j]))
     };
     let x_in = X_IN_MIN + (i_in as f64 + 0.5) * DX_IN;
-    if f[0] != stage.name() || (num(1)? - x_in).abs() > 1e-9 || (num(2)? - axis_value).abs() > 1e-9
-    {
+    if f[0] != stage || (num(1)? - x_in).abs() > 1e-9 || (num(2)? - axis_value).abs() > 1e-9 {
         return Err(format!(
-            "expected the cell ({}, x_in = {x_in}, {axis_name} = {axis_value}): the table does not match this version's grid",
-            stage.name()
+            "expected the cell ({stage}, x_in = {x_in}, {axis_name} = {axis_value}): the table does not match this version's grid"
         ));
     }
     Ok((int(3)?, int(4)?, num(5)?))
@@ -571,7 +625,7 @@ mod tests {
     fn the_builtin_table_parses_and_is_a_probability() {
         let t = EscapeTable::builtin();
         assert!(t.counts().total() > 1_000_000);
-        for stage in [Stage::First, Stage::Later] {
+        for stage in Stage::all() {
             for x_in in [-7.0, -3.3, -0.1, 0.0, 0.4, 2.0, 9.0] {
                 let mut last = 0.0;
                 for k in 0..=90 {
@@ -579,7 +633,7 @@ mod tests {
                     let p = t.p_escape(stage, x_in, x_out);
                     assert!((0.0..=1.0).contains(&p), "{p}");
                     // (The later stage is sparse and noisier: range only.)
-                    if stage == Stage::First && k > 0 && x_out < 3.0 {
+                    if stage.is_first() && k > 0 && x_out < 3.0 {
                         // Steeper rebounds escape more often (up to the counting noise).
                         assert!(
                             p > last - 0.08,
@@ -590,10 +644,10 @@ mod tests {
                 }
             }
         }
-        assert_eq!(t.p_escape(Stage::First, -1.0, 0.0), 0.0);
-        assert_eq!(t.p_escape(Stage::First, -1.0, -0.3), 0.0);
-        assert_eq!(t.p_escape(Stage::First, -1.0, 4.0), 1.0);
-        assert!(t.p_escape(Stage::First, f64::NAN, 1.0).is_finite());
+        assert_eq!(t.p_escape(Stage::FIRST, -1.0, 0.0), 0.0);
+        assert_eq!(t.p_escape(Stage::FIRST, -1.0, -0.3), 0.0);
+        assert_eq!(t.p_escape(Stage::FIRST, -1.0, 4.0), 1.0);
+        assert!(t.p_escape(Stage::FIRST, f64::NAN, 1.0).is_finite());
     }
 
     #[test]
@@ -605,12 +659,12 @@ mod tests {
             let a = 0.001 + 0.0004 * k as f64;
             let u_out = Vector3::new(a.cos(), a.sin(), 0.1);
             let stage = if k % 3 == 0 {
-                Stage::Later
+                Stage::later(-2.0 + 0.001 * k as f64)
             } else {
-                Stage::First
+                Stage::FIRST
             };
             c.push(stage, &u_in, &u_out, &w, k % 5 != 0);
-            let g = -2.0 + 0.004 * k as f64;
+            let g = -1.0 + 0.004 * k as f64;
             c.push_element(stage, -1.2, g, g + 0.3);
         }
         let t = EscapeTable::from_counts(c.clone(), "test");
@@ -625,7 +679,7 @@ mod tests {
         let mut c = EscapeCounts::default();
         // One populated cell column: x_in bin 10, every x_out bin, p = i_out/40.
         for i_out in 0..X_OUT_BINS {
-            let k = cell(Stage::First, 10, i_out);
+            let k = cell(Stage::FIRST, 10, i_out);
             c.collisions[k] = 400;
             c.escaped[k] = 10 * i_out as u64;
         }
@@ -633,13 +687,41 @@ mod tests {
         let x_in = X_IN_MIN + 10.5 * DX_IN;
         for i_out in 0..X_OUT_BINS {
             let x_out = (i_out as f64 + 0.5) * DX_OUT;
-            let p = t.p_escape(Stage::First, x_in, x_out);
+            let p = t.p_escape(Stage::FIRST, x_in, x_out);
             assert!((p - i_out as f64 / 40.0).abs() < 1e-12);
         }
         // Half way between two centres: the mean; sparse bins take the populated one's value,
-        // and the later stage (empty) the first stage's.
-        let p = t.p_escape(Stage::Later, -5.9, 1.0);
+        // and the later stages (empty) the first stage's.
+        let p = t.p_escape(Stage::later(0.0), -5.9, 1.0);
         assert!((p - 0.5 * (9.0 + 10.0) / 40.0).abs() < 1e-12, "{p}");
+        // A later stage without counts of its own takes the later stages' pooled ones.
+        let mut c = EscapeCounts::default();
+        for i_out in 0..X_OUT_BINS {
+            c.collisions[cell(Stage::later(-2.0), 10, i_out)] = 400;
+            c.escaped[cell(Stage::later(-2.0), 10, i_out)] = 100;
+            c.collisions[cell(Stage::later(1.0), 10, i_out)] = 400;
+            c.escaped[cell(Stage::later(1.0), 10, i_out)] = 300;
+            c.collisions[cell(Stage::later(-1.0), 10, i_out)] = 20;
+        }
+        let t = EscapeTable::from_counts(c, "t");
+        assert!((t.p_escape(Stage::later(-2.0), x_in, 1.0) - 0.25).abs() < 1e-12);
+        assert!((t.p_escape(Stage::later(1.0), x_in, 1.0) - 0.75).abs() < 1e-12);
+        let pooled = t.p_escape(Stage::later(-1.0), x_in, 1.0);
+        assert!((pooled - 400.0 / 820.0).abs() < 1e-12, "{pooled}");
+    }
+
+    #[test]
+    fn later_stages_are_binned_by_the_element_just_left() {
+        assert_eq!(Stage::later(-3.0), Stage::later(-1.3));
+        assert_ne!(Stage::later(-1.3), Stage::later(-1.2));
+        assert_eq!(Stage::later(f64::NAN), Stage::later(0.0));
+        assert_eq!(Stage::later(f64::INFINITY), Stage::later(9.0));
+        let names: Vec<String> = Stage::all().map(|s| s.name()).collect();
+        assert_eq!(
+            names,
+            ["first", "later-q0", "later-q1", "later-q2", "later-q3"]
+        );
+        assert!(Stage::all().filter(|s| s.is_first()).eq([Stage::FIRST]));
     }
 
     #[test]
@@ -655,13 +737,13 @@ mod tests {
         let fields: Vec<&str> = row.split(',').collect();
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v2", "v9", 1), "not an escape table"),
+            (good.replacen("v3", "v9", 1), "not an escape table"),
             (edit(1, "source"), "# source"),
             (edit(2, "a,b"), "header"),
             (lines[..100].join("\n"), "truncated after 97"),
             (edit(10, "first,1,2"), "3 fields"),
             (
-                edit(10, &format!("later,{}", fields[1..].join(","))),
+                edit(10, &format!("later-q0,{}", fields[1..].join(","))),
                 "does not match this version's grid",
             ),
             (
@@ -745,30 +827,33 @@ mod tests {
     #[test]
     fn element_weights_are_the_count_ratio_and_bounded() {
         let mut c = EscapeCounts::default();
-        // Row x_in ∈ [−1.5, −1): the deterministic run saw twice the shadow law's count above
-        // g = 0 and the same below.
+        // Row x_in ∈ [−1.5, −1), centre −1.25: the deterministic run saw twice the shadow
+        // law's count above s = γ/Δγ − x_in = 1.25 (g = 0 at the centre) and the same below.
         for k in 0..200 {
-            let g = -2.0 + 0.02 * k as f64 + 0.01;
-            let n = if g > 0.0 {
+            let s = 0.02 * k as f64 + 0.01;
+            let n = if s > 1.25 {
                 2 * ELEMENT_MIN_COUNT
             } else {
                 ELEMENT_MIN_COUNT
             };
-            let cell = element_cell(Stage::First, -1.2, g).unwrap();
+            let cell = element_cell(Stage::FIRST, -1.25, s - 1.25).unwrap();
             c.element_deterministic[cell] = n;
             c.element_model[cell] = ELEMENT_MIN_COUNT;
         }
+        // Out of reach (s < 0) and beyond the range: no cell.
+        assert_eq!(element_cell(Stage::FIRST, -1.25, -1.3), None);
+        assert_eq!(element_cell(Stage::FIRST, -1.25, 9.0), None);
         let t = EscapeTable::from_counts(c, "w");
-        assert!((t.element_weight(Stage::First, -1.25, 1.05) - 2.0).abs() < 1e-12);
-        assert!((t.element_weight(Stage::First, -1.25, -1.05) - 1.0).abs() < 1e-12);
-        // Empty cells and the other stage keep the shadow law; outside the g range too.
-        assert_eq!(t.element_weight(Stage::Later, -1.25, 1.05), 1.0);
-        assert_eq!(t.element_weight(Stage::First, -1.25, 7.0), 1.0);
-        assert!(t.element_bound(Stage::First, -1.25) >= 2.0);
+        assert!((t.element_weight(Stage::FIRST, -1.25, 1.05) - 2.0).abs() < 1e-12);
+        assert!((t.element_weight(Stage::FIRST, -1.25, -0.5) - 1.0).abs() < 1e-12);
+        // Empty cells and the other stages keep the shadow law; outside the range too.
+        assert_eq!(t.element_weight(Stage::later(0.0), -1.25, 1.05), 1.0);
+        assert_eq!(t.element_weight(Stage::FIRST, -1.25, 9.0), 1.0);
+        assert!(t.element_bound(Stage::FIRST, -1.25) >= 2.0);
         for k in 0..400 {
             let (x, g) = (-3.0 + 0.01 * k as f64, -4.0 + 0.025 * k as f64);
             assert!(
-                t.element_weight(Stage::First, x, g) <= t.element_bound(Stage::First, x) + 1e-12
+                t.element_weight(Stage::FIRST, x, g) <= t.element_bound(Stage::FIRST, x) + 1e-12
             );
         }
     }

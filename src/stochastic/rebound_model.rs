@@ -124,9 +124,9 @@ impl Incidence {
         self.wall_given_gamma(gamma, rng)
     }
 
-    /// [`Self::draw_wall`] with the first element's `γ` law corrected by the calibrated
-    /// weight `w(x_in, γ/Δγ(β⁻))` of [`EscapeTable::element_weight`]: a shadow-law draw is
-    /// accepted with `w / bound` (rejection sampling: exact for the corrected law).
+    /// [`Self::draw_wall`] with the element's `γ` law corrected by the calibrated weight
+    /// `w(stage, x_in, γ/Δγ(β⁻) − x_in)` of [`EscapeTable::element_weight`]: a shadow-law
+    /// draw is accepted with `w / bound` (rejection sampling: exact for the corrected law).
     #[inline]
     fn draw_wall_corrected<R: Rng + ?Sized>(
         &self,
@@ -547,7 +547,10 @@ fn rebound_repeated<R: Rng + ?Sized>(
 /// the particle leaves with the calibrated probability `P(escape | stage, α/Δγ(β),
 /// α⁺/Δγ(β⁺))` of [`super::escape_table`] — or it is trapped and meets the wall again *with
 /// its rebound velocity* (rising or not: the shadow law continued to `α > 0`,
-/// [`ShadowSampler::rising`]). Radenkovic & Simonin 2021 instead reject the trapped rebound
+/// [`ShadowSampler::rising`]). A later collision's stage remembers the element just left
+/// ([`Stage::later`]: its inclination seen from the new direction), because a trapped
+/// particle meets the other side of the valley it is in. Radenkovic & Simonin 2021 instead
+/// reject the trapped rebound
 /// and redraw for the same incident particle (Eq. 34, Fig. 13), which makes every
 /// multiple-collision history end like a single collision. Every collision is reported to
 /// `observe` as accepted (each is an impact).
@@ -568,9 +571,16 @@ fn rebound_calibrated<R: Rng + ?Sized>(
         omega_in,
         rng,
         observe,
-        // Per hit, once: its stage and the element weight's bound at its reduced angle.
-        |k, cur| {
-            let stage = if k == 0 { Stage::First } else { Stage::Later };
+        // Per hit, once: its stage (for a later hit, by the inclination of the element just
+        // left, seen from the new direction: the valley's memory) and the element weight's
+        // bound at its reduced angle.
+        |cur, left| {
+            let stage = match left {
+                None => Stage::FIRST,
+                Some(n) => {
+                    Stage::later(gamma_from_normal(n, cur.beta).0 / cur.moments.delta_gamma())
+                }
+            };
             (stage, table.element_bound(stage, cur.x_in))
         },
         |cur, state, rng| cur.draw_wall_corrected(table, state, rng),
@@ -610,7 +620,8 @@ impl<'a> Hits<'a> {
         }
     }
 
-    /// Hit `k = 0, 1, …` with velocity `u` and its incidence: `at_hit(k, incidence)` once,
+    /// Hit `k = 0, 1, …` with velocity `u` and its incidence: `at_hit(incidence, the normal
+    /// of the element just left (None for the first hit))` once,
     /// then `draw(incidence, state, rng)` an element the particle can reach (redrawn while
     /// `U·n ≥ 0`), the collision law, then `leaves(incidence, state, u⁺, rng)` or the next
     /// hit with `u⁺` from its own incidence; the mean wall after [`MAX_TRIES`].
@@ -621,7 +632,7 @@ impl<'a> Hits<'a> {
         omega_in: Vector3<f64>,
         rng: &mut R,
         mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
-        at_hit: impl Fn(u32, &Incidence) -> S,
+        at_hit: impl Fn(&Incidence, Option<&Vector3<f64>>) -> S,
         mut draw: impl FnMut(&Incidence, &S, &mut R) -> SeenWall,
         mut leaves: impl FnMut(&Incidence, &S, &Vector3<f64>, &mut R) -> bool,
     ) -> Rebound {
@@ -629,7 +640,7 @@ impl<'a> Hits<'a> {
         let mut cur = *self.inc;
         let mut candidates = 0u32;
         let mut first = SeenWall::FLAT;
-        let mut state = at_hit(0, &cur);
+        let mut state = at_hit(&cur, None);
         for tries in 1..=MAX_TRIES {
             let seen = draw(&cur, &state, rng);
             if u.dot(&seen.normal) >= 0.0 {
@@ -654,7 +665,7 @@ impl<'a> Hits<'a> {
                 alpha.min(-1e-12)
             };
             cur = Incidence::with_variant(alpha, beta, self.wall, self.inc.variant);
-            state = at_hit(candidates, &cur);
+            state = at_hit(&cur, Some(&seen.normal));
         }
         guard_rebound(u, w, self.law, self.diameter_m, candidates, first, observe)
     }
@@ -808,15 +819,18 @@ mod tests {
         let mut c = EscapeCounts::default();
         let mut probe = EscapeCounts::default();
         for k in 0..100 {
-            let g = -4.0 + 0.1 * k as f64 + 0.05;
-            probe.push_element(Stage::First, x_in, g, g);
-            let cell = probe.element_model.iter().position(|&n| n > 0).unwrap();
+            // Cell centres in s = g − x_in (the reachable elements, s > 0).
+            let g = x_in + 0.08 * k as f64 + 0.04;
+            probe.push_element(Stage::FIRST, x_in, g, g);
+            let Some(cell) = probe.element_model.iter().position(|&n| n > 0) else {
+                continue;
+            };
             probe.element_model[cell] = 0;
             c.element_model[cell] = ELEMENT_MIN_COUNT;
             c.element_deterministic[cell] = if g > 0.0 { 3 } else { 1 } * ELEMENT_MIN_COUNT;
         }
         let table = EscapeTable::from_counts(c, "w");
-        let state = (Stage::First, table.element_bound(Stage::First, inc.x_in));
+        let state = (Stage::FIRST, table.element_bound(Stage::FIRST, inc.x_in));
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
         let n = 200_000;
         let plain = (0..n)
@@ -827,11 +841,38 @@ mod tests {
             .filter(|_| inc.draw_wall_corrected(&table, &state, &mut rng).gamma > 0.0)
             .count() as f64
             / n as f64;
-        // Bilinear reading smooths the step over one bin on either side of 0 (±0.1 Δγ).
+        // Bilinear reading smooths the step over one bin on either side of 0 (±0.08 Δγ).
         let want = 3.0 * plain / (3.0 * plain + (1.0 - plain));
         assert!(
             (corrected - want).abs() < 0.01,
             "{corrected} vs {want} (plain {plain})"
+        );
+    }
+
+    #[test]
+    fn a_trapped_particle_meets_steeper_elements_after_a_downslope() {
+        // The built-in table's memory (escape_table::Q_EDGES): on the deterministic surface a
+        // particle that has just left a steep downslope (q < −1.25) meets the valley's other
+        // side, steeper than after an upslope (q ≥ 0.25), at the same incidence.
+        let wall = Deviations {
+            delta_xi: 0.05,
+            delta_zeta: 0.05,
+        };
+        let inc = Incidence::with_variant(-0.0125, 0.0, &wall, Variant::calibrated(None));
+        let table = EscapeTable::builtin();
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(9);
+        let mut mean = |stage: Stage| {
+            let state = (stage, table.element_bound(stage, inc.x_in));
+            let n = 100_000;
+            (0..n)
+                .map(|_| inc.draw_wall_corrected(table, &state, &mut rng).gamma / 0.05)
+                .sum::<f64>()
+                / n as f64
+        };
+        let (down, up) = (mean(Stage::later(-2.0)), mean(Stage::later(0.5)));
+        assert!(
+            down - up > 0.15,
+            "after a downslope {down}, after an upslope {up}"
         );
     }
 }

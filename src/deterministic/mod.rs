@@ -133,7 +133,7 @@ const CHUNK: u64 = 4096;
 
 /// Tallies histories `start..end` of a condition into `block`, in particle order.
 ///
-/// Histories are traced in parallel in chunks of [`CHUNK`] and tallied in particle order, so
+/// Histories are traced in parallel in chunks of `CHUNK` (4096) and tallied in particle order, so
 /// that a run with fewer blocks than threads (a few thousand particles) still uses every
 /// thread, and the tally is the same for any thread count.
 pub fn fill_block(

@@ -56,7 +56,7 @@ fn distinct(values: impl Iterator<Item = f64>) -> Vec<f64> {
 }
 
 /// Writes the figures of a sweep into `dir` (see the module documentation); `name` (the
-/// case's) heads every title, `material` is the particle of [`sphere_check`].
+/// case's) heads every title, `material` is the particle of `sphere_check`.
 pub fn write(
     dir: &Path,
     name: &str,

@@ -131,6 +131,7 @@ fn bad_tables_are_refused_in_one_line() {
     let half: Vec<&str> = good.lines().take(900).collect();
     let truncated = write("trunc.csv", &half.join("\n"));
     let not_table = write("other.csv", "alpha,beta\n1,2\n");
+    let old_format = write("old.csv", &good.replacen("table v3", "table v2", 1));
     let lines: Vec<&str> = good.lines().collect();
     let mut shifted = lines.clone();
     shifted[3] = "first,-5.500,0.050,10,1,0.100000";
@@ -145,6 +146,11 @@ fn bad_tables_are_refused_in_one_line() {
             "calibrated",
             not_table.display().to_string(),
             "not an escape table",
+        ),
+        (
+            "calibrated",
+            old_format.display().to_string(),
+            "another format",
         ),
         (
             "calibrated",

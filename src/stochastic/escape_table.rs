@@ -66,6 +66,8 @@ pub const Q_EDGES: [f64; 3] = [-1.25, -0.5, 0.25];
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
 pub const MAGIC: &str = "# roughwall escape table v3";
+/// What every version's first line starts with.
+const MAGIC_STEM: &str = "# roughwall escape table v";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
 const ELEMENT_HEADER: &str = "element_stage,x_in,s,deterministic,model,weight";
 const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
@@ -434,6 +436,12 @@ impl EscapeTable {
         let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end()));
         match lines.next() {
             Some((_, l)) if l == MAGIC => {}
+            // Another version of the format: say so, rather than "not a table".
+            Some((_, l)) if l.starts_with(MAGIC_STEM) => {
+                return Err(Error::Input(format!(
+                    "{what}: an escape table of another format (`{l}`); this version reads `{MAGIC}`: run `rebound calibrate` again"
+                )))
+            }
             _ => {
                 return Err(Error::Input(format!(
                     "{what}: not an escape table (the first line must be `{MAGIC}`; `rebound calibrate` writes one)"
@@ -737,7 +745,11 @@ mod tests {
         let fields: Vec<&str> = row.split(',').collect();
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v3", "v9", 1), "not an escape table"),
+            (good.replacen("v3", "v2", 1), "another format"),
+            (
+                good.replacen("# roughwall", "# other", 1),
+                "not an escape table",
+            ),
             (edit(1, "source"), "# source"),
             (edit(2, "a,b"), "header"),
             (lines[..100].join("\n"), "truncated after 97"),

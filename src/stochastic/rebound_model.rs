@@ -550,9 +550,8 @@ fn rebound_repeated<R: Rng + ?Sized>(
 /// [`ShadowSampler::rising`]). A later collision's stage remembers the element just left
 /// ([`Stage::later`]: its inclination seen from the new direction), because a trapped
 /// particle meets the other side of the valley it is in. Radenkovic & Simonin 2021 instead
-/// reject the trapped rebound
-/// and redraw for the same incident particle (Eq. 34, Fig. 13), which makes every
-/// multiple-collision history end like a single collision. Every collision is reported to
+/// reject the trapped rebound and redraw for the same incident particle (Eq. 34, Fig. 13),
+/// which makes every multiple-collision history end like a single collision. Every collision is reported to
 /// `observe` as accepted (each is an impact).
 #[allow(clippy::too_many_arguments)]
 fn rebound_calibrated<R: Rng + ?Sized>(

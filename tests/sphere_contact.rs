@@ -122,6 +122,32 @@ fn a_sphere_needs_its_scale_and_size_and_must_fit() {
 }
 
 #[test]
+fn the_sphere_run_does_not_repeat_the_scene_warnings() {
+    // `effective_for_diameter` resolves the case's deterministic sphere run too; the
+    // scene's warnings (here the roughness beyond Eq. 6's range) are given once.
+    let tmp = Dir::new();
+    let body = case(
+        "250",
+        "contact = \"sphere\"\n[stochastic]\neffective_for_diameter = true",
+    )
+    .replace("delta_zeta_deg = 7.5", "delta_zeta_deg = 9.0");
+    let c = write_case(tmp.path(), "eff9.toml", &body);
+    let out = tmp.path().join("eff9");
+    let r = rebound(&[
+        "stochastic",
+        "--case",
+        c.to_str().unwrap(),
+        "--particles",
+        "200",
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .ok();
+    let n = r.stderr.matches("low-roughness approximation").count();
+    assert_eq!(n, 1, "{}", r.stderr);
+}
+
+#[test]
 fn the_stochastic_model_takes_the_deviations_a_sphere_sees() {
     let tmp = Dir::new();
     let body = case(

@@ -133,8 +133,12 @@ fn effective_wall(
     d.contact = Some("sphere".into());
     sphere_case.deterministic = Some(d);
     let det = super::deterministic::prepare(&sphere_case, &TallyOverrides::default(), None)?;
-    // The scene's warnings again (as the deterministic run of the case would print them).
-    warnings.extend(det.warnings);
+    // The sphere run's own warnings; the scene's, which it repeats, were already given.
+    for w in det.warnings {
+        if !warnings.contains(&w) {
+            warnings.push(w);
+        }
+    }
     let (Some(plan), Some(diameter)) = (&det.surface, det.options.sphere_diameter_m) else {
         return Err(Error::Internal("no surface plan for the sphere".into()));
     };

@@ -27,8 +27,7 @@ else
 fi
 stage_end
 N=$(particles 1000000 2000)
-SCENES="cases/aniso cases/aniso-rev cases/glass-steel cases/glass-steel-2d cases/glass-steel-iso calibration/test-5-5 calibration/test-4-1"
-for s in $SCENES; do
+for s in $P_CALIBRATION_SCENES; do
   scene=$(basename "$s")
   stage_start "Calibration: $scene"
   det="$C/$scene/$P_DETERMINISTIC"

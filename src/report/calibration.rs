@@ -3,14 +3,18 @@
 //! surface, against `deterministic` at 10⁶ particles per condition; writes
 //! `calibration/calibration.csv`. Every number is read from the runs' `compare` outputs.
 
-use super::paths::{CALIBRATION, CALIBRATION_NOISE, CALIBRATION_TABLE, COMPARE, STOCHASTIC};
+use super::paths::{
+    calibration_scene_name, CALIBRATION, CALIBRATION_NOISE, CALIBRATION_SCENES, CALIBRATION_TABLE,
+    COMPARE, STOCHASTIC,
+};
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
 use std::fmt::Write;
 use std::path::Path;
 
-const SCENES: [(&str, &str); 7] = [
+/// What each scene of [`CALIBRATION_SCENES`] is, for the table.
+const LABELS: [(&str, &str); 7] = [
     (
         "aniso",
         "Sec. 3, (2.5°, 7.5°), elastic — the calibration wall",
@@ -25,6 +29,14 @@ const SCENES: [(&str, &str); 7] = [
 /// The two models, and `noise`: `deterministic` on another surface (seed 7) against the
 /// first — the deterministic run's own noise, surface realisation included.
 const MODELS: [&str; 3] = ["radenkovic-simonin-2021", "calibrated", CALIBRATION_NOISE];
+
+/// A scene's label ([`LABELS`]; its name if it has none).
+fn label(scene: &str) -> &str {
+    LABELS
+        .iter()
+        .find(|(s, _)| *s == scene)
+        .map_or(scene, |(_, l)| l)
+}
 
 /// Worst case over the conditions with `|α⁻| ≥ min_alpha`.
 #[derive(Clone, Copy, Debug, Default)]
@@ -87,7 +99,8 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
     let mut particles = None;
     // (scene, model, |α⁻| ≥ 2.5°, |α⁻| ≥ 5°)
     let mut scores: Vec<(&str, &str, Worst, Worst)> = Vec::new();
-    for (scene, label) in SCENES {
+    for scene in CALIBRATION_SCENES.map(calibration_scene_name) {
+        let label = label(scene);
         for model in MODELS {
             let run = dir.join(scene).join(model);
             let Some(c) = Rows::read(&run.join(COMPARE).join("comparison.csv"))? else {
@@ -226,4 +239,18 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
         improved.join("; "),
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_calibration_scene_has_a_label() {
+        for case in CALIBRATION_SCENES {
+            let scene = calibration_scene_name(case);
+            assert_ne!(label(scene), scene, "{case}");
+        }
+        assert_eq!(calibration_scene_name("calibration/test-4-1"), "test-4-1");
+    }
 }

@@ -77,6 +77,23 @@ pub const WALL_MODELS_SCENES: [&str; 9] = [
     "sec4-glass-steel-fig17-2d",
 ];
 
+/// The calibration benchmark's scenes (`scripts/calibrate.sh`): their case files under
+/// `configs/` without `.toml`; under [`CALIBRATION`] each has a directory named like the file.
+pub const CALIBRATION_SCENES: [&str; 7] = [
+    "cases/aniso",
+    "cases/aniso-rev",
+    "cases/glass-steel",
+    "cases/glass-steel-2d",
+    "cases/glass-steel-iso",
+    "calibration/test-5-5",
+    "calibration/test-4-1",
+];
+
+/// A calibration scene's directory name: its case file's name ([`CALIBRATION_SCENES`]).
+pub fn calibration_scene_name(case: &str) -> &str {
+    case.rsplit('/').next().unwrap_or(case)
+}
+
 /// A scene's name: its directory under [`RADENKOVIC2021`] without the [`SEC3`]/[`SEC4`] prefix.
 pub fn scene_name(dir: &str) -> &str {
     dir.strip_prefix(SEC3)
@@ -117,7 +134,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 39] = [
+pub const SHELL: [(&str, &[&str]); 40] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -149,6 +166,7 @@ pub const SHELL: [(&str, &[&str]); 39] = [
     ("VS_REFERENCE", &[VS_REFERENCE]),
     ("CALIBRATION_TABLE", &[CALIBRATION_TABLE]),
     ("CALIBRATION_NOISE", &[CALIBRATION_NOISE]),
+    ("CALIBRATION_SCENES", &CALIBRATION_SCENES),
     ("FINITE_SIZE_DIAMETERS_UM", &FINITE_SIZE_DIAMETERS_UM),
     ("FINITE_SIZE_DIAMETER", &[FINITE_SIZE_DIAMETER]),
     ("STOCHASTIC_EFFECTIVE", &[STOCHASTIC_EFFECTIVE]),
@@ -190,7 +208,7 @@ mod tests {
     }
 
     #[test]
-    fn shell_names_are_unique_and_values_are_plain_words() {
+    fn shell_names_are_unique_and_values_are_plain_words_or_paths() {
         let mut names: Vec<&str> = SHELL.iter().map(|(n, _)| *n).collect();
         names.sort_unstable();
         names.dedup();
@@ -203,7 +221,9 @@ mod tests {
                 assert!(
                     !v.is_empty()
                         && v.chars()
-                            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c)),
+                            .all(|c| c.is_ascii_alphanumeric() || "-_./".contains(c))
+                        && !v.starts_with('/')
+                        && !v.contains(".."),
                     "{name}: {v:?}"
                 );
             }

@@ -15,17 +15,16 @@ if [ "$QUICK" = 1 ]; then
 else
   ALPHAS="-1.0, -2.0, -3.0, -5.0, -7.5, -10.0, -12.5, -15.0, -17.5, -20.0, -25.0, -30.0, -35.0, -40.0, -45.0, -50.0, -60.0, -70.0, -80.0, -90.0"
 fi
-# wall name, Δξ, Δζ (degrees). Isotropic: the same mean-square slope as the Sec. 3 walls,
-# √((2.5² + 7.5²)/2) = 5.59°; 2-D: the larger Sec. 3 deviation along x only.
-WALLS="smooth:0.0:0.0 iso:5.59:5.59 2d:7.5:0.0 aniso:2.5:7.5 aniso-rev:7.5:2.5"
-for w in $WALLS; do
+# The walls, name:Δξ:Δζ (degrees), and the directions β⁻: src/report/paths.rs (paths.sh).
+BETAS=$(echo "$P_EROSION_BETAS_DEG" | sed 's/ /, /g')
+for w in $P_EROSION_WALLS; do
   IFS=: read -r name dxi dze <<< "$w"
   case_file="$E/cases/$name.toml"
   sed -e "s/^name = .*/name = \"erosion-$name\"/" \
       -e "s/^delta_xi_deg = .*/delta_xi_deg = $dxi/" \
       -e "s/^delta_zeta_deg = .*/delta_zeta_deg = $dze/" \
       -e "s/^alpha_deg = .*/alpha_deg = [$ALPHAS]/" \
-      -e "s/^beta_deg = .*/beta_deg = [0.0, 45.0, 90.0]/" \
+      -e "s/^beta_deg = .*/beta_deg = [$BETAS]/" \
       configs/cases/erosion-glass-steel.toml > "$case_file"
   grep -q "delta_xi_deg = $dxi" "$case_file" || { echo "erosion.sh: could not write $case_file" >&2; exit 1; }
   stage_start "Erosion $name: deterministic + stochastic"

@@ -3,7 +3,7 @@
 //! models. Writes `erosion/erosion.csv`, `erosion/erosion.svg` and
 //! `erosion/erosion_ratios.svg`; every number is read from the runs' `summary.csv`.
 
-use super::paths::{DETERMINISTIC, EROSION, STOCHASTIC};
+use super::paths::{erosion_wall_name, DETERMINISTIC, EROSION, EROSION_WALLS, STOCHASTIC};
 use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, run_toml, Rows};
@@ -12,7 +12,11 @@ use std::fmt::Write;
 use std::path::Path;
 
 /// The walls of the study, in the order the script runs them.
-const WALLS: [&str; 5] = ["smooth", "iso", "2d", "aniso", "aniso-rev"];
+fn wall_names() -> [&'static str; 5] {
+    EROSION_WALLS.map(erosion_wall_name)
+}
+/// The incident directions β⁻ (degrees): `paths::EROSION_BETAS_DEG`, which the script
+/// reads (a test keeps the two equal).
 const BETAS: [f64; 3] = [0.0, 45.0, 90.0];
 const MODELS: [&str; 2] = [DETERMINISTIC, STOCHASTIC];
 /// mm³ in m³: the figures' unit.
@@ -138,7 +142,7 @@ pub fn erosion(results: &Path, md: &mut String) -> Result<()> {
     md.push_str("## Erosion on rough walls (beyond the papers)\n\n");
     let dir = results.join(EROSION);
     let mut walls = Vec::new();
-    for name in WALLS {
+    for name in wall_names() {
         let mut points: [Vec<Point>; 2] = [Vec::new(), Vec::new()];
         let mut dev = None;
         for (k, model) in MODELS.iter().enumerate() {
@@ -450,4 +454,27 @@ pub fn erosion(results: &Path, md: &mut String) -> Result<()> {
         "![erosion](erosion/erosion.svg)\n\n![erosion over smooth](erosion/erosion_ratios.svg)\n\n",
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_study_reads_the_walls_and_directions_the_script_runs() {
+        let script: Vec<f64> = super::super::paths::EROSION_BETAS_DEG
+            .iter()
+            .map(|b| b.parse().unwrap())
+            .collect();
+        assert_eq!(script, BETAS);
+        assert_eq!(wall_names(), ["smooth", "iso", "2d", "aniso", "aniso-rev"]);
+        for w in EROSION_WALLS {
+            let f: Vec<&str> = w.split(':').collect();
+            assert_eq!(f.len(), 3, "{w}");
+            assert!(
+                f[1].parse::<f64>().is_ok() && f[2].parse::<f64>().is_ok(),
+                "{w}"
+            );
+        }
+    }
 }

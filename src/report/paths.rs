@@ -89,6 +89,26 @@ pub const CALIBRATION_SCENES: [&str; 7] = [
     "calibration/test-4-1",
 ];
 
+/// The erosion study's walls (`scripts/erosion.sh`), `name:Δξ:Δζ` (degrees), in the order
+/// the script runs them; under [`EROSION`] each has a directory named `name`. Isotropic: the
+/// mean-square slope of the Sec. 3 walls, √((2.5² + 7.5²)/2) = 5.59°; 2-D: the larger Sec. 3
+/// deviation along x only.
+pub const EROSION_WALLS: [&str; 5] = [
+    "smooth:0.0:0.0",
+    "iso:5.59:5.59",
+    "2d:7.5:0.0",
+    "aniso:2.5:7.5",
+    "aniso-rev:7.5:2.5",
+];
+
+/// An erosion wall's name ([`EROSION_WALLS`]).
+pub fn erosion_wall_name(wall: &str) -> &str {
+    wall.split(':').next().unwrap_or(wall)
+}
+
+/// The erosion study's incident directions β⁻ (degrees).
+pub const EROSION_BETAS_DEG: [&str; 3] = ["0.0", "45.0", "90.0"];
+
 /// A calibration scene's directory name: its case file's name ([`CALIBRATION_SCENES`]).
 pub fn calibration_scene_name(case: &str) -> &str {
     case.rsplit('/').next().unwrap_or(case)
@@ -134,7 +154,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 40] = [
+pub const SHELL: [(&str, &[&str]); 42] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -167,6 +187,8 @@ pub const SHELL: [(&str, &[&str]); 40] = [
     ("CALIBRATION_TABLE", &[CALIBRATION_TABLE]),
     ("CALIBRATION_NOISE", &[CALIBRATION_NOISE]),
     ("CALIBRATION_SCENES", &CALIBRATION_SCENES),
+    ("EROSION_WALLS", &EROSION_WALLS),
+    ("EROSION_BETAS_DEG", &EROSION_BETAS_DEG),
     ("FINITE_SIZE_DIAMETERS_UM", &FINITE_SIZE_DIAMETERS_UM),
     ("FINITE_SIZE_DIAMETER", &[FINITE_SIZE_DIAMETER]),
     ("STOCHASTIC_EFFECTIVE", &[STOCHASTIC_EFFECTIVE]),
@@ -221,7 +243,7 @@ mod tests {
                 assert!(
                     !v.is_empty()
                         && v.chars()
-                            .all(|c| c.is_ascii_alphanumeric() || "-_./".contains(c))
+                            .all(|c| c.is_ascii_alphanumeric() || "-_./:".contains(c))
                         && !v.starts_with('/')
                         && !v.contains(".."),
                     "{name}: {v:?}"

@@ -14,7 +14,7 @@ use roughwall::erosion::{finnie::Finnie, ErosionModel, ErosionSetup};
 use roughwall::output::OutputDir;
 use roughwall::run_context::Context;
 use roughwall::runner::{self, TallyOverrides};
-use roughwall::surface::HeightField;
+use roughwall::surface::{HeightField, Triangulation};
 use roughwall::tally::BlockTally;
 use roughwall::wall::Deviations;
 use roughwall::writers::deterministic::finish;
@@ -26,7 +26,7 @@ const UNIT: SpeedLaw = SpeedLaw::horizontal(1.0, 0.0);
 /// The surface `deterministic` would choose for the wall (default scene options).
 fn surface(dxi: f64, dze: f64, seed: u64) -> HeightField {
     let c = choose_surface(dxi.to_radians(), dze.to_radians(), &SceneOptions::default()).unwrap();
-    generate_surface(&SurfacePlan::Auto(c), seed).unwrap()
+    generate_surface(&SurfacePlan::Auto(c), seed, Triangulation::default()).unwrap()
 }
 
 /// Histories `0..n` of one condition, tallied in one block on one thread (tracker, collision
@@ -66,6 +66,16 @@ fn histories(c: &mut Criterion) {
     g.bench_function("histories_aniso_a-12.5_b0_one_core", |b| {
         b.iter(|| one_block(&t, n))
     });
+    // Issue 13: the alternating triangulation (the default) against the uniform one.
+    let f_uniform = HeightField {
+        triangulation: Triangulation::Uniform,
+        ..f.clone()
+    };
+    let t_uniform = Tracker::new(&f_uniform, 1000).unwrap();
+    g.bench_function(
+        "histories_aniso_a-12.5_b0_one_core_uniform_triangulation",
+        |b| b.iter(|| one_block(&t_uniform, n)),
+    );
     let t_plain = Tracker::new(&f, 1000).unwrap().without_tiles();
     g.bench_function("histories_aniso_a-12.5_b0_one_core_no_tile_map", |b| {
         b.iter(|| one_block(&t_plain, n))
@@ -107,7 +117,14 @@ fn run_case(dir: &Path) {
     let (count, target) = (p.scene.count as u64, p.scene.target_se_deg);
     let plan = runner::plan(p.specs.clone(), count, target, None).unwrap();
     let sphere = p.options.sphere_diameter_m;
-    let built = build_surface(p.surface.as_ref(), None, sphere, ctx.seed).unwrap();
+    let built = build_surface(
+        p.surface.as_ref(),
+        None,
+        sphere,
+        ctx.seed,
+        p.options.triangulation,
+    )
+    .unwrap();
     let tracker = Tracker::new(&built.field, p.options.max_collisions).unwrap();
     let out = OutputDir::begin(&ctx.out_dir, "--out").unwrap();
     let t0 = std::time::Instant::now();

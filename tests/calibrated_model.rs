@@ -38,7 +38,7 @@ fn the_table_reads_back_equal_to_its_source_run() {
     use roughwall::deterministic::{calibrate::escape_counts, Tracker};
     let case = roughwall::case::parse(CASE, "cal").unwrap();
     let p = prepare(&case, &Default::default(), None).unwrap();
-    let field = generate_surface(p.surface.as_ref().unwrap(), 7).unwrap();
+    let field = generate_surface(p.surface.as_ref().unwrap(), 7, p.options.triangulation).unwrap();
     let tracker = Tracker::new(&field, p.options.max_collisions).unwrap();
     let mut setup = p.setup;
     setup.wall = roughwall::surface::stats::measured_deviations(&field);

@@ -118,6 +118,14 @@ fn bad_deterministic_section() {
         "deterministic.spacing_per_corr_length",
     );
     refuses(
+        &[(
+            "side_per_corr_length = 20.0",
+            "side_per_corr_length = 20.0\ntriangulation = \"diagonal\"",
+        )],
+        &[],
+        "deterministic.triangulation",
+    );
+    refuses(
         &[("side_per_corr_length = 20.0", "colisions = 3")],
         &[],
         "colisions",
@@ -245,4 +253,53 @@ fn a_saved_surface_is_reused_and_a_damaged_one_refused() {
     let cut = dir.path().join("cut.rbhf");
     std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
     refuses(&[], &["--surface", cut.to_str().unwrap()], "cut.rbhf");
+}
+
+/// `[deterministic] triangulation` reaches the tracker and the manifest: the alternating
+/// split gives other histories on the same surface (its mirror symmetry is tested in the
+/// library, `alternating_triangulation_is_mirror_symmetric`), nearly the same measured
+/// deviations (each cell's two x-slopes and two z-slopes are the same edges either way; only
+/// their pairing changes), and `run.toml` says which one ran.
+#[test]
+fn the_triangulation_key_reaches_the_tracker() {
+    let dir = Dir::new();
+    let mut summaries = Vec::new();
+    let mut measured = Vec::new();
+    for tri in ["uniform", "alternating"] {
+        let case = case_with(
+            dir.path(),
+            &[(
+                "side_per_corr_length = 20.0",
+                &format!("side_per_corr_length = 20.0\ntriangulation = \"{tri}\""),
+            )],
+        );
+        let out = dir.path().join(tri);
+        run_ok(&[
+            "deterministic",
+            "--case",
+            case.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let manifest = std::fs::read_to_string(out.join("run.toml")).unwrap();
+        assert!(
+            manifest.contains(&format!("triangulation = \"{tri}\"")),
+            "run.toml does not record {tri}"
+        );
+        let m: Vec<f64> = manifest
+            .lines()
+            .filter_map(|l| l.strip_prefix("measured_delta_"))
+            .map(|l| l.split(" = ").nth(1).unwrap().parse().unwrap())
+            .collect();
+        assert_eq!(m.len(), 2, "{manifest}");
+        measured.push(m);
+        summaries.push(std::fs::read(out.join("summary.csv")).unwrap());
+    }
+    assert_ne!(
+        summaries[0], summaries[1],
+        "the triangulation changed nothing"
+    );
+    for (u, a) in measured[0].iter().zip(&measured[1]) {
+        assert!((u - a).abs() < 0.01, "measured deviations {measured:?}");
+    }
 }

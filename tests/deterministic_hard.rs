@@ -73,6 +73,7 @@ fn flat_wall_is_a_mirror_for_the_elastic_law() {
         dx: 1e-6,
         dz: 1e-6,
         heights: vec![0.0; 256],
+        triangulation: Default::default(),
     };
     let t = Tracker::new(&f, 1000).unwrap();
     let dv = dev(0.0, 0.0);

@@ -31,6 +31,50 @@ fn sec3(dxi: f64, dze: f64, seed: u64) -> Vec<(f64, f64, ConditionRun)> {
     out
 }
 
+/// `f` mirrored in z (`z → −z`, node `iz` ↦ `(nz − iz) mod nz`) or in x.
+fn mirrored(f: &roughwall::surface::HeightField, in_z: bool) -> roughwall::surface::HeightField {
+    let mut g = f.clone();
+    for iz in 0..f.nz {
+        for ix in 0..f.nx {
+            let (sx, sz) = if in_z {
+                (ix, (f.nz - iz) % f.nz)
+            } else {
+                ((f.nx - ix) % f.nx, iz)
+            };
+            g.heights[iz * f.nx + ix] = f.heights[sz * f.nx + sx];
+        }
+    }
+    g
+}
+
+/// Mean β⁺ − β⁻ and its standard error along the principal directions of the `sec3` wall of
+/// `seed`, on the wall and on its mirror image that maps the direction onto itself (z for
+/// β⁻ = 0°, x for 90°): (α⁻, β⁻, (mean, se) on the wall, (mean, se) on the mirror image).
+type PrincipalPair = (f64, f64, (f64, f64), (f64, f64));
+
+fn principal_pairs(dxi: f64, dze: f64, seed: u64) -> Vec<PrincipalPair> {
+    let f = wall(dxi, dze, 8.0, 40.0, seed);
+    let dv = dev(dxi, dze);
+    let t = Tracker::new(&f, 1000).unwrap();
+    let mut out = Vec::new();
+    for (b, in_z) in [(0.0, true), (90.0, false)] {
+        let g = mirrored(&f, in_z);
+        let tg = Tracker::new(&g, 1000).unwrap();
+        for (i, a) in [-2.5, -12.5, -32.5].into_iter().enumerate() {
+            let k = 100 + 3 * usize::from(in_z) + i;
+            let on = |t: &Tracker<'_>| {
+                let (m, se, _) = stats(
+                    &run(t, &CollisionLaw::Elastic, &dv, a, b, k as u64, N, UNIT),
+                    |o| o.dbeta,
+                );
+                (m, se)
+            };
+            out.push((a, b, on(&t), on(&tg)));
+        }
+    }
+    out
+}
+
 fn find(rs: &[(f64, f64, ConditionRun)], a: f64, b: f64) -> &ConditionRun {
     &rs.iter().find(|r| r.0 == a && r.1 == b).unwrap().2
 }
@@ -112,11 +156,21 @@ fn sec3_walls_reproduce_the_papers_findings() {
             let (mm, sem, _) = stats(find(ws, a, -60.0), |o| o.dbeta);
             let se = (sep * sep + sem * sem).sqrt();
             assert!((mp + mm).abs() < 3.0 * se, "a {a}: {mp} vs {mm} ± {se}");
-            // Along a principal direction the mean deviation vanishes.
-            for b in [0.0, 90.0] {
-                let (m, se, _) = stats(find(ws, a, b), |o| o.dbeta);
-                assert!(m.abs() < 3.0 * se, "a {a} b {b}: mean dbeta {m} ± {se}");
-            }
+        }
+    }
+    // Along a principal direction the mean deviation vanishes on the statistical wall. One
+    // finite surface has its own small asymmetry (of the order of the particle noise here:
+    // a realisation, not a property of the model), which its mirror image reverses; so the
+    // two together must average to 0 within the particle noise. A tracker or triangulation
+    // that broke the mirror symmetry would not (the uniform split breaks it).
+    for (dxi, dze, seed) in [(2.5, 7.5, 1), (7.5, 2.5, 2)] {
+        for (a, b, (m, se), (mm, sem)) in principal_pairs(dxi, dze, seed) {
+            let se2 = (se * se + sem * sem).sqrt();
+            eprintln!("({dxi}, {dze}) a {a} b {b}: mean dbeta {m:.4} ± {se:.4}, mirror image {mm:.4} ± {sem:.4}");
+            assert!(
+                (m + mm).abs() < 3.0 * se2,
+                "({dxi}, {dze}) a {a} b {b}: mean dbeta {m} and on the mirror image {mm}, ± {se2}"
+            );
         }
     }
     let checked: usize = [(&w1, dev(2.5, 7.5)), (&w2, dev(7.5, 2.5))]

@@ -214,6 +214,7 @@ fn documented(kind: Kind) -> Vec<(&'static str, &'static str, Value)> {
             ("deterministic", "spacing_per_corr_length", f(8.0)),
             ("deterministic", "side_per_corr_length", f(20.0)),
             ("deterministic", "rms_height_um", f(1.0)),
+            ("deterministic", "triangulation", s("alternating")),
         ]),
         Kind::Surface => v.extend([
             ("surface", "length_um", f(256.0)),

@@ -9,6 +9,7 @@ use crate::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
 use crate::erosion::ErosionSetup;
 use crate::error::{Error, Result};
 use crate::runner::TallyOverrides;
+use crate::surface::Triangulation;
 use crate::tally::TallySpec;
 use std::path::Path;
 
@@ -28,6 +29,26 @@ pub struct DeterministicOptions {
     /// A sphere of this diameter (m) bounces (its centre on the dilated surface);
     /// `None`: the particle centre bounces on the surface (the paper's).
     pub sphere_diameter_m: Option<f64>,
+    /// How the surface's cells are split into triangles (`[deterministic] triangulation`).
+    pub triangulation: Triangulation,
+}
+
+/// `[deterministic] triangulation`, validated: how the cells of a generated or read surface
+/// are split into triangles (`deterministic`, `calibrate`, and `surface`'s statistics).
+pub fn triangulation(case: &Case) -> Result<Triangulation> {
+    let given = case
+        .deterministic
+        .as_ref()
+        .and_then(|d| d.triangulation.as_deref());
+    let names = Triangulation::NAMES;
+    let k = check_value(
+        "deterministic.triangulation",
+        given.unwrap_or(Triangulation::default().name()),
+        &names,
+        "\"alternating\" (the diagonal alternates between neighbouring cells, mirror symmetric; the default) or \"uniform\" (every cell split along the same diagonal, the earlier default)",
+    )?;
+    Triangulation::from_name(names[k])
+        .ok_or_else(|| Error::Internal(format!("triangulation `{}`", names[k])))
 }
 
 /// Validates `[deterministic]` (keys named in one-line errors).
@@ -105,8 +126,10 @@ pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
     } else {
         None
     };
+    let triangulation = triangulation(case)?;
     Ok(DeterministicOptions {
         max_collisions: mc as u32,
+        triangulation,
         scene: SceneOptions {
             spacing_per_corr_length: spc,
             side_per_corr_length: side,

@@ -193,6 +193,10 @@ pub struct DeterministicSection {
     /// surface).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub contact: Option<String>,
+    /// How each grid cell is split into two triangles: `"uniform"` (one diagonal, the
+    /// default) or `"alternating"` (checkerboard, mirror symmetric).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub triangulation: Option<String>,
 }
 
 /// `[impactor]` (formerly `[particle]`) for `force-sweep`: a material preset or explicit

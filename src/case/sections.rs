@@ -49,7 +49,12 @@ fn present(case: &Case) -> Vec<(&'static str, &'static [&'static str])> {
         ("collision", case.collision.is_some(), MONTE_CARLO),
         ("output", case.output.is_some(), MONTE_CARLO),
         ("stochastic", case.stochastic.is_some(), MONTE_CARLO),
-        ("deterministic", case.deterministic.is_some(), MONTE_CARLO),
+        // `surface` reads its `triangulation` (the statistics are of the tracker's triangles).
+        (
+            "deterministic",
+            case.deterministic.is_some(),
+            SURFACE_AND_MONTE_CARLO,
+        ),
         ("erosion", case.erosion.is_some(), MONTE_CARLO),
         ("impactor", case.impactor.is_some(), &["force-sweep"]),
         ("particle", case.particle.is_some(), &["force-sweep"]),
@@ -124,9 +129,10 @@ mod tests {
         for command in MONTE_CARLO {
             assert!(warnings(scene, command).is_empty(), "{command}");
         }
-        // `surface` reads the wall only.
+        // `surface` reads the wall (and [deterministic] triangulation) only.
         let w = warnings(scene, "surface");
-        assert_eq!(w.len(), 6, "{w:?}");
+        assert_eq!(w.len(), 5, "{w:?}");
+        assert!(!w.iter().any(|w| w.contains("[deterministic]")), "{w:?}");
         assert!(w[0].starts_with("section [incidence] is not read by `surface`: it is read by `deterministic`, `stochastic`, `calibrate` only"), "{w:?}");
     }
 

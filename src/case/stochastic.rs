@@ -142,7 +142,8 @@ fn effective_wall(
     let (Some(plan), Some(diameter)) = (&det.surface, det.options.sphere_diameter_m) else {
         return Err(Error::Internal("no surface plan for the sphere".into()));
     };
-    let field = crate::deterministic::scene::generate_surface(plan, seed)?;
+    let field =
+        crate::deterministic::scene::generate_surface(plan, seed, det.options.triangulation)?;
     let nominal = crate::surface::stats::measured_deviations(&field);
     let dil =
         crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;

@@ -31,7 +31,7 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
         return Err(Error::Internal("no surface plan".into()));
     };
     check_out(&ctx.out_dir, "--out")?;
-    let field = generate_surface(plan, ctx.seed)?;
+    let field = generate_surface(plan, ctx.seed, p.options.triangulation)?;
     let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| match e {
         // A surface this tool generated and the tracker refuses: a bug, not the input.
         Error::Input(m) => Error::Internal(format!("generated surface: {m}")),
@@ -54,13 +54,14 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
         ));
     }
     let source = format!(
-        "case {} seed {} particles {} conditions {} wall (measured) {:.4} {:.4} deg",
+        "case {} seed {} particles {} conditions {} wall (measured) {:.4} {:.4} deg triangulation {}",
         ctx.case.name,
         ctx.seed,
         count,
         p.scene.conditions.len(),
         measured.delta_xi.to_degrees(),
-        measured.delta_zeta.to_degrees()
+        measured.delta_zeta.to_degrees(),
+        field.triangulation.name()
     );
     let table = EscapeTable::from_counts(counts, &source);
     write_atomic(

@@ -46,7 +46,13 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     }
     // Everything the user gave is checked; now the surface (the only slow input step).
     let sphere = p.options.sphere_diameter_m;
-    let built = build_surface(p.surface.as_ref(), file, sphere, ctx.seed)?;
+    let built = build_surface(
+        p.surface.as_ref(),
+        file,
+        sphere,
+        ctx.seed,
+        p.options.triangulation,
+    )?;
     let tracker = Tracker::new(&built.field, p.options.max_collisions).map_err(|e| {
         match (e, file) {
             (Error::Input(m), Some(path)) => {

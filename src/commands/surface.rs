@@ -31,6 +31,7 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
     let spec = ctx.case.surface_spec(&mut warnings)?;
     warn(warnings);
     let betas = ctx.case.beta_star()?;
+    let triangulation = roughwall::case::deterministic::triangulation(&ctx.case)?;
     let diameters = ctx.case.effective_diameters(spec.length_m)?;
     if !diameters.is_empty() {
         let nodes = (spec.nodes as u64).saturating_mul(spec.nodes as u64);
@@ -50,7 +51,8 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
     let out = begin_out(&ctx.out_dir)?;
 
     let t0 = Instant::now();
-    let field = generate(&spec, ctx.seed);
+    let mut field = generate(&spec, ctx.seed);
+    field.triangulation = triangulation;
     let t_gen = t0.elapsed().as_secs_f64();
     let half_range = (4.0 * target.delta_xi.max(target.delta_zeta)).max(1f64.to_radians());
     let hist = HistogramSpec {

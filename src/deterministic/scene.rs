@@ -10,7 +10,7 @@
 
 use crate::error::{Error, Result};
 use crate::surface::heights_io::read_heights;
-use crate::surface::{generate, HeightField, SurfaceSpec};
+use crate::surface::{generate, HeightField, SurfaceSpec, Triangulation};
 use std::path::Path;
 
 /// Knobs of the choice (case section `[deterministic]`).
@@ -189,8 +189,15 @@ impl SurfacePlan {
 
 /// Generates the planned surface with the Garcia–Stoll generator of `crate::surface`
 /// (Radenkovic & Simonin 2021, Eqs. 1–2).
-pub fn generate_surface(plan: &SurfacePlan, seed: u64) -> Result<HeightField> {
-    Ok(generate(plan.spec(), seed))
+/// `triangulation` is how the tracker and the statistics split its cells.
+pub fn generate_surface(
+    plan: &SurfacePlan,
+    seed: u64,
+    triangulation: Triangulation,
+) -> Result<HeightField> {
+    let mut field = generate(plan.spec(), seed);
+    field.triangulation = triangulation;
+    Ok(field)
 }
 
 /// Reads a height field saved by `rebound surface --heights FILE`; every problem is a
@@ -236,13 +243,15 @@ pub fn build_surface(
     file: Option<&Path>,
     sphere_diameter_m: Option<f64>,
     seed: u64,
+    triangulation: Triangulation,
 ) -> Result<BuiltSurface> {
     let t0 = std::time::Instant::now();
-    let (field, source) = match (file, plan) {
+    let (mut field, source) = match (file, plan) {
         (Some(path), _) => (read_surface(path)?, "file"),
-        (None, Some(plan)) => (generate_surface(plan, seed)?, plan.source()),
+        (None, Some(plan)) => (generate_surface(plan, seed, triangulation)?, plan.source()),
         (None, None) => return Err(Error::Internal("no surface plan".into())),
     };
+    field.triangulation = triangulation;
     let generate_s = t0.elapsed().as_secs_f64();
     let Some(d) = sphere_diameter_m else {
         return Ok(BuiltSurface {

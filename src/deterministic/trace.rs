@@ -138,6 +138,8 @@ pub struct Tracker<'a> {
     max_collisions: u32,
     max_steps: u64,
     tiles: Option<Tiles>,
+    /// The field's cells alternate their diagonal ([`crate::surface::Triangulation`]).
+    alternating: bool,
 }
 
 impl std::fmt::Debug for Tracker<'_> {
@@ -245,6 +247,7 @@ impl<'a> Tracker<'a> {
             max_collisions,
             max_steps,
             tiles,
+            alternating: field.triangulation == crate::surface::Triangulation::Alternating,
         })
     }
 
@@ -315,19 +318,30 @@ impl<'a> Tracker<'a> {
         )
     }
 
+    /// Whether the cell is split along the other diagonal, `(ix+1, iz)`–`(ix, iz+1)`
+    /// ([`HeightField::flipped`]). Such a cell is walked in its mirror image `u = 1 − s_x`
+    /// (corners `(h10, h00, h11, h01)`, `dq` of the mirrored direction), where its
+    /// diagonal is `u = s_z` like every other cell's; the cell edges are not mirrored.
+    #[inline]
+    fn flipped(&self, c: &Cell) -> bool {
+        self.alternating && (c.wx + c.wz) & 1 == 1
+    }
+
     /// Slopes `(∂y/∂x, ∂y/∂z)` of triangle `tri` of a cell with corners `hc`
     /// (the triangulation of [`HeightField::cell_normals`]).
     #[inline]
-    fn slopes(&self, hc: (f64, f64, f64, f64), tri: u8) -> (f64, f64) {
+    fn slopes(&self, hc: (f64, f64, f64, f64), tri: u8, flip: bool) -> (f64, f64) {
         let (h00, h10, h01, h11) = hc;
-        if tri == 0 {
-            ((h10 - h00) / self.dx, (h11 - h10) / self.dz)
-        } else {
-            ((h11 - h01) / self.dx, (h01 - h00) / self.dz)
+        match (tri, flip) {
+            (0, false) => ((h10 - h00) / self.dx, (h11 - h10) / self.dz),
+            (_, false) => ((h11 - h01) / self.dx, (h01 - h00) / self.dz),
+            (0, true) => ((h10 - h00) / self.dx, (h01 - h00) / self.dz),
+            (_, true) => ((h11 - h01) / self.dx, (h11 - h10) / self.dz),
         }
     }
 
-    /// Height of triangle `tri` at local coordinates `(sx, sz) ∈ [0, 1]²`.
+    /// Height of triangle `tri` at local coordinates `(sx, sz) ∈ [0, 1]²` of the cell
+    /// *as walked*: for a flipped cell `hc` are the mirrored corners and `sx` is `u`.
     #[inline]
     fn plane(hc: (f64, f64, f64, f64), tri: u8, sx: f64, sz: f64) -> f64 {
         let (h00, h10, h01, h11) = hc;
@@ -335,6 +349,27 @@ impl<'a> Tracker<'a> {
             h00 + (h10 - h00) * sx + (h11 - h10) * sz
         } else {
             h00 + (h11 - h01) * sx + (h01 - h00) * sz
+        }
+    }
+
+    /// The corners and local `x` coordinate of a cell as walked (mirrored if `flip`).
+    #[inline]
+    fn walked(hc: (f64, f64, f64, f64), sx: f64, flip: bool) -> ((f64, f64, f64, f64), f64) {
+        if flip {
+            ((hc.1, hc.0, hc.3, hc.2), 1.0 - sx)
+        } else {
+            (hc, sx)
+        }
+    }
+
+    /// [`Self::tri_at`] in a cell that may be flipped; `dqf` is `dq` of the mirrored
+    /// direction, `d(u − s_z)/dt`.
+    #[inline]
+    fn tri_in(flip: bool, sx: f64, sz: f64, dq: f64, dqf: f64) -> u8 {
+        if flip {
+            Self::tri_at(1.0 - sx, sz, dqf)
+        } else {
+            Self::tri_at(sx, sz, dq)
         }
     }
 
@@ -367,8 +402,8 @@ impl<'a> Tracker<'a> {
         let c = self.cell_of(x, z);
         let sx = (x / self.dx - c.ix as f64).clamp(0.0, 1.0);
         let sz = (z / self.dz - c.iz as f64).clamp(0.0, 1.0);
-        let hc = self.corners(&c);
-        Self::plane(hc, Self::tri_at(sx, sz, 0.0), sx, sz)
+        let (hv, sv) = Self::walked(self.corners(&c), sx, self.flipped(&c));
+        Self::plane(hv, Self::tri_at(sv, sz, 0.0), sv, sz)
     }
 
     /// Follows one particle whose centre starts at `(x0, top, z0)` with velocity
@@ -431,9 +466,10 @@ impl<'a> Tracker<'a> {
             let sx = (o.x / self.dx - cell.ix as f64).clamp(0.0, 1.0);
             let sz = (o.z / self.dz - cell.iz as f64).clamp(0.0, 1.0);
             let dq = d.x / self.dx - d.z / self.dz;
+            let dqf = -d.x / self.dx - d.z / self.dz;
             let tri = match exclude {
                 Some((_, _, k)) => k,
-                None => Self::tri_at(sx, sz, dq),
+                None => Self::tri_in(self.flipped(&cell), sx, sz, dq, dqf),
             };
             // On the surface after a hit; at the start the clearance is computed by
             // the walk only if the first tile is not skipped (saves a cache miss).
@@ -476,7 +512,7 @@ impl<'a> Tracker<'a> {
                         c.iz -= szp * self.nz as i64;
                         p.z -= szp as f64 * lz;
                     }
-                    let (a, b) = self.slopes(self.corners(&c), k);
+                    let (a, b) = self.slopes(self.corners(&c), k, self.flipped(&c));
                     let n = Vector3::new(-a, 1.0, -b).normalize();
                     let (d_new, w_new) = collide(d, w, n);
                     observe(&HitInfo {
@@ -525,6 +561,7 @@ impl<'a> Tracker<'a> {
         let sgx: i64 = if d.x > 0.0 { 1 } else { -1 };
         let sgz: i64 = if d.z > 0.0 { 1 } else { -1 };
         let dq = d.x / dx - d.z / dz;
+        let dqf = -d.x / dx - d.z / dz;
         // Segment limit in height: escape above the top, leak below the bottom.
         let t_y = if d.y > 0.0 {
             ((self.hmax - o.y) / d.y).max(0.0)
@@ -561,7 +598,7 @@ impl<'a> Tracker<'a> {
                     g_cur = g_new;
                     let sx = ((o.x + d.x * t_cur) / dx - cell.ix as f64).clamp(0.0, 1.0);
                     let sz = ((o.z + d.z * t_cur) / dz - cell.iz as f64).clamp(0.0, 1.0);
-                    tri = Self::tri_at(sx, sz, dq);
+                    tri = Self::tri_in(self.flipped(&cell), sx, sz, dq, dqf);
                     if t_cur >= t_y {
                         return if d.y > 0.0 {
                             Walk::Escape
@@ -575,12 +612,16 @@ impl<'a> Tracker<'a> {
                 }
             }
             let hc = self.corners(&cell);
+            let flip = self.flipped(&cell);
+            let hv = if flip { (hc.1, hc.0, hc.3, hc.2) } else { hc };
+            let dqv = if flip { dqf } else { dq };
             let x0 = cell.ix as f64 * dx;
             let z0 = cell.iz as f64 * dz;
             if g_cur.is_nan() {
                 let sx = (((o.x + d.x * t_cur) - x0) / dx).clamp(0.0, 1.0);
                 let sz = (((o.z + d.z * t_cur) - z0) / dz).clamp(0.0, 1.0);
-                g_cur = o.y + d.y * t_cur - Self::plane(hc, tri, sx, sz);
+                let sv = if flip { 1.0 - sx } else { sx };
+                g_cur = o.y + d.y * t_cur - Self::plane(hv, tri, sv, sz);
             }
             let t_x = if d.x > 0.0 {
                 ((x0 + dx - o.x) * inv_ux).max(t_cur)
@@ -600,23 +641,26 @@ impl<'a> Tracker<'a> {
             if !t_exit.is_finite() {
                 return Walk::Lost(LostReason::StepBudget);
             }
-            // Diagonal crossing inside the cell.
+            // Diagonal crossing inside the cell (as walked).
             let sx_c = ((o.x + d.x * t_cur) - x0) / dx;
             let sz_c = ((o.z + d.z * t_cur) - z0) / dz;
-            let q = sx_c - sz_c;
-            let t_d = if tri == 0 && dq < 0.0 {
-                t_cur + q.max(0.0) / (-dq)
-            } else if tri == 1 && dq > 0.0 {
-                t_cur + (-q).max(0.0) / dq
+            let q = if flip { 1.0 - sx_c - sz_c } else { sx_c - sz_c };
+            let t_d = if tri == 0 && dqv < 0.0 {
+                t_cur + q.max(0.0) / (-dqv)
+            } else if tri == 1 && dqv > 0.0 {
+                t_cur + (-q).max(0.0) / dqv
             } else {
                 f64::INFINITY
             };
             if t_d < t_exit {
                 let sx = ((o.x + d.x * t_d) - x0) / dx;
                 let sz = ((o.z + d.z * t_d) - z0) / dz;
-                let s = (0.5 * (sx + sz)).clamp(0.0, 1.0);
-                let g_d = o.y + d.y * t_d - lerp(hc.0, hc.3, s);
-                if let Some(t) = self.piece(hc, &cell, tri, exclude, d, t_cur, g_cur, t_d, g_d) {
+                let sv = if flip { 1.0 - sx } else { sx };
+                let s = (0.5 * (sv + sz)).clamp(0.0, 1.0);
+                let g_d = o.y + d.y * t_d - lerp(hv.0, hv.3, s);
+                if let Some(t) =
+                    self.piece(hc, flip, &cell, tri, exclude, d, t_cur, g_cur, t_d, g_d)
+                {
                     return Walk::Hit { t, cell, tri };
                 }
                 t_cur = t_d;
@@ -626,9 +670,10 @@ impl<'a> Tracker<'a> {
             // Clearance at the end of the piece.
             let y_exit = o.y + d.y * t_exit;
             let g_exit = if t_exit == t_y {
-                let sx = ((o.x + d.x * t_exit) - x0) / dx;
+                let sx = (((o.x + d.x * t_exit) - x0) / dx).clamp(0.0, 1.0);
                 let sz = ((o.z + d.z * t_exit) - z0) / dz;
-                y_exit - Self::plane(hc, tri, sx.clamp(0.0, 1.0), sz.clamp(0.0, 1.0))
+                let sv = if flip { 1.0 - sx } else { sx };
+                y_exit - Self::plane(hv, tri, sv, sz.clamp(0.0, 1.0))
             } else if t_exit == t_x {
                 let sz = (((o.z + d.z * t_exit) - z0) / dz).clamp(0.0, 1.0);
                 if d.x > 0.0 {
@@ -644,7 +689,9 @@ impl<'a> Tracker<'a> {
                     y_exit - lerp(hc.0, hc.1, sx)
                 }
             };
-            if let Some(t) = self.piece(hc, &cell, tri, exclude, d, t_cur, g_cur, t_exit, g_exit) {
+            if let Some(t) = self.piece(
+                hc, flip, &cell, tri, exclude, d, t_cur, g_cur, t_exit, g_exit,
+            ) {
                 return Walk::Hit { t, cell, tri };
             }
             if t_exit == t_y {
@@ -659,12 +706,12 @@ impl<'a> Tracker<'a> {
                 let sz = (((o.z + d.z * t_exit) - z0) / dz).clamp(0.0, 1.0);
                 self.step_x(&mut cell, sgx);
                 let sx = if sgx > 0 { 0.0 } else { 1.0 };
-                tri = Self::tri_at(sx, sz, dq);
+                tri = Self::tri_in(self.flipped(&cell), sx, sz, dq, dqf);
             } else {
                 let sx = (((o.x + d.x * t_exit) - x0) / dx).clamp(0.0, 1.0);
                 self.step_z(&mut cell, sgz);
                 let sz = if sgz > 0 { 0.0 } else { 1.0 };
-                tri = Self::tri_at(sx, sz, dq);
+                tri = Self::tri_in(self.flipped(&cell), sx, sz, dq, dqf);
             }
             t_cur = t_exit;
             g_cur = g_exit;
@@ -698,6 +745,7 @@ impl<'a> Tracker<'a> {
     fn piece(
         &self,
         hc: (f64, f64, f64, f64),
+        flip: bool,
         cell: &Cell,
         tri: u8,
         exclude: Option<(i64, i64, u8)>,
@@ -713,7 +761,7 @@ impl<'a> Tracker<'a> {
         if exclude == Some((cell.ix, cell.iz, tri)) {
             return None;
         }
-        let (a, b) = self.slopes(hc, tri);
+        let (a, b) = self.slopes(hc, tri, flip);
         let dn = d.y - a * d.x - b * d.z;
         if dn >= 0.0 {
             return None;
@@ -852,6 +900,7 @@ impl<'a> Tracker<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::surface::Triangulation;
     use rand::{Rng, SeedableRng};
     use rand_xoshiro::Xoshiro256PlusPlus;
 
@@ -872,6 +921,7 @@ mod tests {
             dx,
             dz,
             heights,
+            triangulation: Default::default(),
         }
     }
 
@@ -950,8 +1000,14 @@ mod tests {
 
     #[test]
     fn elastic_energy_is_conserved_and_the_centre_stays_above_the_surface() {
-        let f = bumps(64, 3.0, 5);
-        for tiles in [true, false] {
+        for (tiles, triangulation) in [
+            (true, Triangulation::Uniform),
+            (false, Triangulation::Uniform),
+            (true, Triangulation::Alternating),
+            (false, Triangulation::Alternating),
+        ] {
+            let mut f = bumps(64, 3.0, 5);
+            f.triangulation = triangulation;
             let mut t = Tracker::new(&f, 1000).unwrap();
             if !tiles {
                 t = t.without_tiles();
@@ -973,6 +1029,11 @@ mod tests {
                     multi += 1;
                 }
                 for (k, hi) in hits.iter().enumerate() {
+                    // The normal is one of the cell's two (HeightField::cell_normals, the
+                    // triangulation the statistics use), the one of the triangle reported.
+                    let c = f.cell_normals(hi.cell.0, hi.cell.1)[hi.triangle as usize];
+                    let c = Vector3::new(c[0], c[1], c[2]).normalize();
+                    assert!((c - hi.normal).norm() < 1e-12, "{triangulation:?}");
                     let s = t.surface_height(hi.point.x, hi.point.z);
                     assert!(
                         (hi.point.y - s).abs() < 1e-9,
@@ -1007,9 +1068,16 @@ mod tests {
 
     #[test]
     fn tiles_do_not_change_the_histories() {
-        let f = bumps(64, 3.0, 9);
-        let t1 = Tracker::new(&f, 1000).unwrap();
-        let t2 = Tracker::new(&f, 1000).unwrap().without_tiles();
+        for triangulation in [Triangulation::Uniform, Triangulation::Alternating] {
+            let mut f = bumps(64, 3.0, 9);
+            f.triangulation = triangulation;
+            tiles_do_not_change(&f);
+        }
+    }
+
+    fn tiles_do_not_change(f: &HeightField) {
+        let t1 = Tracker::new(f, 1000).unwrap();
+        let t2 = Tracker::new(f, 1000).unwrap().without_tiles();
         let mut r = Xoshiro256PlusPlus::seed_from_u64(3);
         for i in 0..2000 {
             let a = [-0.01, -2.5, -12.5, -32.5][i % 4];
@@ -1024,8 +1092,15 @@ mod tests {
 
     #[test]
     fn rays_along_grid_lines_and_diagonals() {
-        let f = bumps(32, 2.0, 11);
-        let t = Tracker::new(&f, 1000).unwrap();
+        for triangulation in [Triangulation::Uniform, Triangulation::Alternating] {
+            let mut f = bumps(32, 2.0, 11);
+            f.triangulation = triangulation;
+            rays_along_grid_lines(&f);
+        }
+    }
+
+    fn rays_along_grid_lines(f: &HeightField) {
+        let t = Tracker::new(f, 1000).unwrap();
         for b in [0.0, 90.0, 180.0, -90.0, 45.0, -45.0, 135.0, -135.0] {
             for a in [-0.01, -5.0, -30.0, -90.0] {
                 for (x, z) in [
@@ -1042,6 +1117,64 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Mirror symmetry `β → −β` (physics notes §1): the mirror image `z → −z` of a
+    /// particle on the mirror image of a surface has the mirror image of its history. On a
+    /// grid with even node counts the alternating triangulation is mapped onto itself; the
+    /// uniform one is mapped onto the other diagonal, so there the histories differ.
+    #[test]
+    fn alternating_triangulation_is_mirror_symmetric() {
+        let n = 64;
+        let mut f = bumps(n, 3.0, 13);
+        let mut g = f.clone();
+        for iz in 0..n {
+            for ix in 0..n {
+                g.heights[iz * n + ix] = f.heights[((n - iz) % n) * n + ix];
+            }
+        }
+        let lz = n as f64 * f.dz;
+        let mut differ = [0usize; 2];
+        let mut multi = 0;
+        for (k, triangulation) in [Triangulation::Uniform, Triangulation::Alternating]
+            .into_iter()
+            .enumerate()
+        {
+            f.triangulation = triangulation;
+            g.triangulation = triangulation;
+            let tf = Tracker::new(&f, 1000).unwrap();
+            let tg = Tracker::new(&g, 1000).unwrap();
+            let mut r = Xoshiro256PlusPlus::seed_from_u64(17);
+            for i in 0..2000 {
+                let a = [-2.5, -12.5, -32.5, -60.0][i % 4];
+                let u = incident(a, r.gen::<f64>() * 360.0 - 180.0);
+                let (x, z) = (r.gen::<f64>() * n as f64, r.gen::<f64>() * lz);
+                let hf = tf.trace(x, z, u, Vector3::zeros(), reflect);
+                let um = Vector3::new(u.x, u.y, -u.z);
+                let hg = tg.trace(x, lz - z, um, Vector3::zeros(), reflect);
+                assert_eq!(hf.fate, Fate::Escaped);
+                let v = hf.velocity;
+                let mirrored = Vector3::new(v.x, v.y, -v.z);
+                if hf.collisions != hg.collisions || (mirrored - hg.velocity).norm() > 1e-9 {
+                    differ[k] += 1;
+                }
+                multi += usize::from(k == 1 && hf.collisions > 1);
+            }
+        }
+        assert_eq!(
+            differ[1], 0,
+            "alternating: {} of 2000 histories not mirrored",
+            differ[1]
+        );
+        assert!(
+            multi > 20,
+            "too few multiple collisions to test anything: {multi}"
+        );
+        assert!(
+            differ[0] > 1000,
+            "uniform: only {} of 2000 differ",
+            differ[0]
+        );
     }
 
     #[test]

@@ -44,15 +44,31 @@ fn style(m: Model) -> Kind {
     }
 }
 
-/// The values in first-seen order, each once.
+/// The values in first-seen order, each once (`==`: 0 and −0 are one value; the sweep's
+/// values are finite). A set, not a scan of the output: a sweep may list 10⁵ speeds.
 fn distinct(values: impl Iterator<Item = f64>) -> Vec<f64> {
-    let mut out: Vec<f64> = Vec::new();
-    for v in values {
-        if !out.contains(&v) {
-            out.push(v);
-        }
+    let mut seen = std::collections::HashSet::new();
+    values
+        .filter(|v| seen.insert((v + 0.0).to_bits()))
+        .collect()
+}
+
+/// Most speeds the sphere check simulates: it is a figure, and each point is an ODE
+/// integration (~25 µs); a longer sweep is thinned to this many, evenly through its sorted
+/// speeds.
+const SPHERE_CHECK_POINTS: usize = 400;
+
+/// `us` if it has at most `SPHERE_CHECK_POINTS` values, else that many of them, evenly
+/// through their sorted order, the smallest and the largest included.
+fn thinned(mut us: Vec<f64>) -> Vec<f64> {
+    if us.len() <= SPHERE_CHECK_POINTS {
+        return us;
     }
-    out
+    us.sort_by(f64::total_cmp);
+    let last = us.len() - 1;
+    (0..SPHERE_CHECK_POINTS)
+        .map(|k| us[k * last / (SPHERE_CHECK_POINTS - 1)])
+        .collect()
 }
 
 /// Writes the figures of a sweep into `dir` (see the module documentation); `name` (the
@@ -182,7 +198,7 @@ pub fn write(
 /// Fig. 4 analogue: the ODE of Eq. (1) (`hertz-dynamic`, λ = 1) against Eq. (3), over the
 /// sweep's U_N (or 0.01–20 m/s if it has fewer than two), for each D of the sweep.
 fn sphere_check(dir: &Path, name: &str, sweep: &Sweep, material: &Particle) -> Result<()> {
-    let mut us: Vec<f64> = distinct(sweep.u_ns.iter().copied().filter(|&u| u > 0.0));
+    let mut us: Vec<f64> = thinned(distinct(sweep.u_ns.iter().copied().filter(|&u| u > 0.0)));
     if us.len() < 2 {
         us = (0..12)
             .map(|i| 10f64.powf(-2.0 + 3.30103 * i as f64 / 11.0))
@@ -242,4 +258,30 @@ fn sphere_check(dir: &Path, name: &str, sweep: &Sweep, material: &Particle) -> R
             ..Plot::default()
         },
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn distinct_keeps_first_seen_order_and_merges_signed_zeros() {
+        let v = distinct([3.0, 1.0, 3.0, -0.0, 0.0, 2.0, 1.0].into_iter());
+        assert_eq!(v.len(), 4);
+        assert_eq!(v[..2], [3.0, 1.0]);
+        assert!(v[2] == 0.0 && v[2].is_sign_negative());
+        assert_eq!(v[3], 2.0);
+    }
+
+    #[test]
+    fn the_sphere_check_thins_long_sweeps_only() {
+        let short: Vec<f64> = (1..=SPHERE_CHECK_POINTS).rev().map(|i| i as f64).collect();
+        assert_eq!(thinned(short.clone()), short);
+        let long: Vec<f64> = (0..100_000).rev().map(|i| 1e-3 * (i + 1) as f64).collect();
+        let t = thinned(long);
+        assert_eq!(t.len(), SPHERE_CHECK_POINTS);
+        assert_eq!(t[0], 1e-3);
+        assert_eq!(*t.last().unwrap(), 100.0);
+        assert!(t.windows(2).all(|w| w[0] < w[1]));
+    }
 }

@@ -285,6 +285,7 @@ mod tests {
             dx: 1e-6,
             dz: 1e-6,
             heights: (0..n).map(|i| (i as f64 * 0.3).sin() * 1e-7).collect(),
+            triangulation: Default::default(),
         };
         let dir = tempfile::tempdir().unwrap();
         let p = dir.path().join("map.svg");

@@ -47,8 +47,9 @@ pub fn accuracy(rows: &[Row]) -> Vec<Accuracy> {
         let k = key(r);
         hu.insert((k.0, k.1, k.2, r.beta_deg.to_bits()), r.result.xi);
     }
-    // Groups in first-seen order.
+    // Groups in first-seen order (indexed: a sweep may have 10⁵ points).
     let mut order: Vec<(Model, PointKey)> = Vec::new();
+    let mut index: std::collections::HashMap<(Model, PointKey), usize> = Default::default();
     let mut groups: BTreeMap<(usize, PointKey), Vec<(f64, f64)>> = BTreeMap::new();
     for r in rows.iter().filter(|r| r.model != Model::Hu2021) {
         let k = key(r);
@@ -58,13 +59,10 @@ pub fn accuracy(rows: &[Row]) -> Vec<Accuracy> {
         if xi_hu <= 0.0 {
             continue;
         }
-        let gi = match order.iter().position(|g| *g == (r.model, k)) {
-            Some(i) => i,
-            None => {
-                order.push((r.model, k));
-                order.len() - 1
-            }
-        };
+        let gi = *index.entry((r.model, k)).or_insert_with(|| {
+            order.push((r.model, k));
+            order.len() - 1
+        });
         groups
             .entry((gi, k))
             .or_default()

@@ -9,6 +9,7 @@ mod common;
 pub mod erosion;
 pub mod finite_size;
 pub mod hu2021;
+pub mod mirror;
 pub mod paths;
 pub mod radenkovic2021;
 pub mod speed_vs_error;
@@ -37,6 +38,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     hu2021::hu(results, &mut md)?;
     wall_models::wall_models(results, &mut md)?;
     calibration::calibration(results, &mut md)?;
+    mirror::mirror(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
     finite_size::finite_size(results, &mut md)?;
     spin::spin(results, &mut md)?;

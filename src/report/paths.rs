@@ -26,6 +26,8 @@ pub const FINITE_SIZE: &str = "finite-size";
 pub const SPIN: &str = "spin";
 /// Speed against error (`scripts/speed-vs-error.sh`).
 pub const SPEED_VS_ERROR: &str = "speed-vs-error";
+/// Mirror symmetry of the deterministic wall (`scripts/mirror.sh`).
+pub const MIRROR: &str = "mirror";
 
 /// A scene's `rebound deterministic` run.
 pub const DETERMINISTIC: &str = "deterministic";
@@ -135,6 +137,13 @@ pub const CALIBRATION_TABLE: &str = "table";
 /// Calibration: `deterministic` on another surface, compared with the first.
 pub const CALIBRATION_NOISE: &str = "noise";
 
+/// Mirror symmetry: the triangulations run, one directory each under [`MIRROR`].
+pub const MIRROR_TRIANGULATIONS: [&str; 2] = ["alternating", "uniform"];
+/// Mirror symmetry: the surfaces' seeds (full mode; quick mode runs the first two).
+pub const MIRROR_SEEDS: [&str; 8] = ["1", "2", "3", "4", "5", "6", "7", "8"];
+/// Mirror symmetry: prefix of one surface's run (`seed1`, …).
+pub const MIRROR_SEED: &str = "seed";
+
 /// Finite size: the sphere diameters (µm), one run directory each.
 pub const FINITE_SIZE_DIAMETERS_UM: [&str; 4] = ["50", "100", "250", "500"];
 /// Finite size: prefix of the runs of one diameter (`d50`, …).
@@ -154,7 +163,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 42] = [
+pub const SHELL: [(&str, &[&str]); 46] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -197,6 +206,10 @@ pub const SHELL: [(&str, &[&str]); 42] = [
     ("COMPARE_NOMINAL", &[COMPARE_NOMINAL]),
     ("FINITE_SIZE_GRID", &[FINITE_SIZE_GRID]),
     ("FINITE_SIZE_LAW", &[FINITE_SIZE_LAW]),
+    ("MIRROR", &[MIRROR]),
+    ("MIRROR_TRIANGULATIONS", &MIRROR_TRIANGULATIONS),
+    ("MIRROR_SEEDS", &MIRROR_SEEDS),
+    ("MIRROR_SEED", &[MIRROR_SEED]),
 ];
 
 /// The text of `scripts/paths.sh`: one `P_<NAME>=<value>` line per entry of [`SHELL`].

@@ -43,6 +43,7 @@ impl Dilated {
                 dx: f.dx,
                 dz: f.dz,
                 heights,
+                triangulation: f.triangulation,
             },
             contact_fraction: count as f64 / touched.len() as f64,
         }
@@ -353,6 +354,7 @@ mod tests {
             dx: 1e-6,
             dz: 0.7e-6,
             heights: h,
+            triangulation: Default::default(),
         }
     }
 

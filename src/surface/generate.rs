@@ -64,6 +64,7 @@ pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
         dx: d,
         dz: d,
         heights: vec![0.0; n * nz],
+        triangulation: Default::default(),
     };
     if p.rms_height_m == 0.0 {
         return flat(if p.corr_length_z_m.is_none() { 1 } else { n });
@@ -79,6 +80,7 @@ pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
                 dx: d,
                 dz: d,
                 heights,
+                triangulation: Default::default(),
             }
         }
         (None, Some(cz)) => {
@@ -96,6 +98,7 @@ pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
                 dx: d,
                 dz: d,
                 heights,
+                triangulation: Default::default(),
             }
         }
         (Some(cx), Some(cz)) => {
@@ -108,6 +111,7 @@ pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
                 dx: d,
                 dz: d,
                 heights,
+                triangulation: Default::default(),
             }
         }
     }

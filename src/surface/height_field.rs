@@ -14,6 +14,51 @@ pub struct HeightField {
     pub dx: f64,
     pub dz: f64,
     pub heights: Vec<f64>,
+    /// Which diagonal splits each cell into its two triangles.
+    pub triangulation: Triangulation,
+}
+
+/// How every grid cell is split into two triangles (physics notes §5: "two triangles a
+/// cell"; the notes and the papers do not say along which diagonal).
+///
+/// `Alternating` (the default) splits the cells with `ix + iz` even along the diagonal from
+/// node `(ix, iz)` to `(ix+1, iz+1)` and the others along the diagonal from `(ix+1, iz)` to
+/// `(ix, iz+1)` (a checkerboard): mirroring the grid in `x` or `z` maps it onto itself,
+/// shifted by one cell, when the node counts are even, so the wall keeps the mirror symmetry
+/// `β⁻ → −β⁻` of the statistics it was generated with. `Uniform` splits every cell along the
+/// first diagonal (the earlier default; CHANGELOG): that pairs each facet's two slopes
+/// the same way everywhere and gives an isotropic wall a systematic asymmetry (mean α⁺
+/// 0.08–0.15° higher at β⁻ = +30°…+60° than at −30°…−60° on the (5°, 5°) wall, 2–4 standard
+/// errors over 8 surfaces; docs/models.md, "The triangulation and mirror symmetry").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Triangulation {
+    /// The diagonal alternates between neighbouring cells (checkerboard; the default).
+    #[default]
+    Alternating,
+    /// Every cell split along the diagonal `(ix, iz)`–`(ix+1, iz+1)`.
+    Uniform,
+}
+
+impl Triangulation {
+    /// The case-file spellings, in the order the error messages list them.
+    pub const NAMES: [&'static str; 2] = ["alternating", "uniform"];
+
+    /// The case-file spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            Triangulation::Uniform => "uniform",
+            Triangulation::Alternating => "alternating",
+        }
+    }
+
+    /// Parses a case-file spelling.
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "uniform" => Some(Triangulation::Uniform),
+            "alternating" => Some(Triangulation::Alternating),
+            _ => None,
+        }
+    }
 }
 
 impl HeightField {
@@ -41,22 +86,39 @@ impl HeightField {
             .fold(f64::NEG_INFINITY, f64::max)
     }
 
+    /// Whether cell `(ix, iz)` (indices modulo the grid) is split along the other
+    /// diagonal, from node `(ix+1, iz)` to `(ix, iz+1)` ([`Triangulation`]).
+    #[inline]
+    pub fn flipped(&self, ix: usize, iz: usize) -> bool {
+        self.triangulation == Triangulation::Alternating
+            && ((ix % self.nx) + (iz % self.nz)) % 2 == 1
+    }
+
     /// Unnormalised upward normals of the two triangles of cell `(ix, iz)`.
     ///
-    /// Triangulation convention: the diagonal runs from node `(ix, iz)` to node
-    /// `(ix+1, iz+1)`. Triangle 0 is `(00, 10, 11)` (below the diagonal, where the
-    /// local coordinate `s_x ≥ s_z`), triangle 1 is `(00, 11, 01)` (`s_z > s_x`).
-    /// For `y = f(x, z)` the normal is `(−∂f/∂x, 1, −∂f/∂z)` (physics notes §1).
+    /// Along the diagonal from node `(ix, iz)` to `(ix+1, iz+1)`: triangle 0 is
+    /// `(00, 10, 11)` (below the diagonal, where the local coordinate `s_x ≥ s_z`),
+    /// triangle 1 is `(00, 11, 01)` (`s_z > s_x`). In a [`flipped`](Self::flipped) cell the
+    /// cell is seen mirrored in `x` (`u = 1 − s_x`), so the diagonal from `(ix+1, iz)` to
+    /// `(ix, iz+1)` is `u = s_z`: triangle 0 is `(10, 00, 01)` (`u ≥ s_z`), triangle 1
+    /// `(10, 01, 11)`. The `x`-slopes of the two triangles are the same edges either way;
+    /// the `z`-slopes trade places. For `y = f(x, z)` the normal is `(−∂f/∂x, 1, −∂f/∂z)`
+    /// (physics notes §1).
     #[inline]
     pub fn cell_normals(&self, ix: usize, iz: usize) -> [[f64; 3]; 2] {
         let h00 = self.at(ix, iz);
         let h10 = self.at(ix + 1, iz);
         let h01 = self.at(ix, iz + 1);
         let h11 = self.at(ix + 1, iz + 1);
-        // Triangle 0: slopes from the edges 00→10 (x) and 10→11 (z).
-        let t0 = [-(h10 - h00) / self.dx, 1.0, -(h11 - h10) / self.dz];
-        // Triangle 1: slopes from the edges 01→11 (x) and 00→01 (z).
-        let t1 = [-(h11 - h01) / self.dx, 1.0, -(h01 - h00) / self.dz];
+        // Triangle 0: slopes from the edges 00→10 (x) and 10→11 (z); flipped: 00→01 (z).
+        // Triangle 1: slopes from the edges 01→11 (x) and 00→01 (z); flipped: 10→11 (z).
+        let (gz0, gz1) = if self.flipped(ix, iz) {
+            (h01 - h00, h11 - h10)
+        } else {
+            (h11 - h10, h01 - h00)
+        };
+        let t0 = [-(h10 - h00) / self.dx, 1.0, -gz0 / self.dz];
+        let t1 = [-(h11 - h01) / self.dx, 1.0, -gz1 / self.dz];
         [t0, t1]
     }
 }
@@ -81,9 +143,22 @@ mod tests {
             dx,
             dz,
             heights,
+            triangulation: Default::default(),
         };
-        for t in f.cell_normals(1, 1) {
-            assert!((t[0] + 0.1).abs() < 1e-12 && (t[2] - 0.2).abs() < 1e-12);
+        for triangulation in [Triangulation::Alternating, Triangulation::Uniform] {
+            let f = HeightField {
+                triangulation,
+                ..f.clone()
+            };
+            for (ix, iz) in [(1, 1), (1, 2), (2, 1)] {
+                assert_eq!(
+                    f.flipped(ix, iz),
+                    triangulation == Triangulation::Alternating && ix + iz == 3
+                );
+                for t in f.cell_normals(ix, iz) {
+                    assert!((t[0] + 0.1).abs() < 1e-12 && (t[2] - 0.2).abs() < 1e-12);
+                }
+            }
         }
     }
 }

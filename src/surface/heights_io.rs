@@ -165,6 +165,7 @@ pub fn read_heights(path: &Path) -> Result<HeightField> {
         dx,
         dz,
         heights,
+        triangulation: Default::default(),
     })
 }
 
@@ -179,6 +180,7 @@ mod tests {
             dx: 1e-6,
             dz: 2e-6,
             heights: (0..15).map(|i| (i as f64 - 7.0) * 1.25e-7).collect(),
+            triangulation: Default::default(),
         }
     }
 

@@ -6,5 +6,5 @@ pub mod heights_io;
 pub mod spec;
 pub mod stats;
 pub use generate::generate;
-pub use height_field::HeightField;
+pub use height_field::{HeightField, Triangulation};
 pub use spec::SurfaceSpec;

@@ -272,6 +272,14 @@ fn row_gradients(f: &HeightField, iz: usize, gx: &mut [f64], gz: &mut [f64]) {
     gz0[n - 1] = t0[2];
     gx1[n - 1] = t1[0];
     gz1[n - 1] = t1[2];
+    // A flipped cell's triangles pair the same x-slopes with each other's z-slope.
+    if f.triangulation == crate::surface::Triangulation::Alternating {
+        for ix in 0..n - 1 {
+            if f.flipped(ix, iz) {
+                std::mem::swap(&mut gz0[ix], &mut gz1[ix]);
+            }
+        }
+    }
 }
 
 /// Lanes of the partial sums: a fixed width, so the summation order (and thus every
@@ -785,6 +793,7 @@ pub fn measured_deviations(f: &HeightField) -> crate::wall::Deviations {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::surface::Triangulation;
 
     fn field(nx: usize, nz: usize, heights: Vec<f64>) -> HeightField {
         HeightField {
@@ -793,6 +802,7 @@ mod tests {
             dx: 1.0,
             dz: 1.0,
             heights,
+            triangulation: Default::default(),
         }
     }
 
@@ -800,23 +810,26 @@ mod tests {
     fn row_gradients_are_bit_identical_to_cell_normals() {
         let (nx, nz) = (7, 5);
         let mut rng = crate::rng::stream(3, &[99]);
-        let heights = (0..nx * nz)
+        let heights: Vec<f64> = (0..nx * nz)
             .map(|_| rand::Rng::gen_range(&mut rng, -1.0..1.0))
             .collect();
-        let f = HeightField {
-            nx,
-            nz,
-            dx: 0.3,
-            dz: 0.7,
-            heights,
-        };
-        let (mut gx, mut gz) = (vec![0.0; 2 * nx], vec![0.0; 2 * nx]);
-        for iz in 0..nz {
-            row_gradients(&f, iz, &mut gx, &mut gz);
-            for ix in 0..nx {
-                let [t0, t1] = f.cell_normals(ix, iz);
-                assert_eq!((gx[ix], gz[ix]), (t0[0], t0[2]));
-                assert_eq!((gx[nx + ix], gz[nx + ix]), (t1[0], t1[2]));
+        for triangulation in [Triangulation::Uniform, Triangulation::Alternating] {
+            let f = HeightField {
+                nx,
+                nz,
+                dx: 0.3,
+                dz: 0.7,
+                heights: heights.clone(),
+                triangulation,
+            };
+            let (mut gx, mut gz) = (vec![0.0; 2 * nx], vec![0.0; 2 * nx]);
+            for iz in 0..nz {
+                row_gradients(&f, iz, &mut gx, &mut gz);
+                for ix in 0..nx {
+                    let [t0, t1] = f.cell_normals(ix, iz);
+                    assert_eq!((gx[ix], gz[ix]), (t0[0], t0[2]));
+                    assert_eq!((gx[nx + ix], gz[nx + ix]), (t1[0], t1[2]));
+                }
             }
         }
     }

@@ -69,6 +69,7 @@ pub fn surface_table(
     }
     t.insert("grid_nx".into(), toml::Value::Integer(field.nx as i64));
     t.insert("grid_nz".into(), toml::Value::Integer(field.nz as i64));
+    t.insert("triangulation".into(), field.triangulation.name().into());
     if measure {
         let m = measured_deviations(field);
         t.insert(

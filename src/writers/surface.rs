@@ -134,6 +134,7 @@ pub fn grid_table(f: &HeightField) -> toml::Value {
     t.insert("nz".into(), toml::Value::Integer(f.nz as i64));
     t.insert("dx_m".into(), toml::Value::Float(f.dx));
     t.insert("dz_m".into(), toml::Value::Float(f.dz));
+    t.insert("triangulation".into(), f.triangulation.name().into());
     t.insert(
         "statistics".into(),
         "every triangle of the grid (two per cell), equally weighted".into(),

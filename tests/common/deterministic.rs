@@ -82,6 +82,7 @@ pub fn gaussian_surface(
         dx: d,
         dz: d,
         heights,
+        triangulation: Default::default(),
     }
 }
 

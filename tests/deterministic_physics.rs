@@ -166,7 +166,6 @@ fn sec3_walls_reproduce_the_papers_findings() {
     for (dxi, dze, seed) in [(2.5, 7.5, 1), (7.5, 2.5, 2)] {
         for (a, b, (m, se), (mm, sem)) in principal_pairs(dxi, dze, seed) {
             let se2 = (se * se + sem * sem).sqrt();
-            eprintln!("({dxi}, {dze}) a {a} b {b}: mean dbeta {m:.4} ± {se:.4}, mirror image {mm:.4} ± {sem:.4}");
             assert!(
                 (m + mm).abs() < 3.0 * se2,
                 "({dxi}, {dze}) a {a} b {b}: mean dbeta {m} and on the mirror image {mm}, ± {se2}"

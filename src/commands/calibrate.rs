@@ -32,6 +32,7 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     };
     check_out(&ctx.out_dir, "--out")?;
     let field = generate_surface(plan, ctx.seed, p.options.triangulation)?;
+    warn(field.triangulation_seam());
     let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| match e {
         // A surface this tool generated and the tracker refuses: a bug, not the input.
         Error::Input(m) => Error::Internal(format!("generated surface: {m}")),

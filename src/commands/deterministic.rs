@@ -53,6 +53,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
         ctx.seed,
         p.options.triangulation,
     )?;
+    warn(built.field.triangulation_seam());
     let tracker = Tracker::new(&built.field, p.options.max_collisions).map_err(|e| {
         match (e, file) {
             (Error::Input(m), Some(path)) => {

@@ -53,6 +53,7 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
     let t0 = Instant::now();
     let mut field = generate(&spec, ctx.seed);
     field.triangulation = triangulation;
+    warn(field.triangulation_seam());
     let t_gen = t0.elapsed().as_secs_f64();
     let half_range = (4.0 * target.delta_xi.max(target.delta_zeta)).max(1f64.to_radians());
     let hist = HistogramSpec {

@@ -352,13 +352,23 @@ impl<'a> Tracker<'a> {
         }
     }
 
-    /// The corners and local `x` coordinate of a cell as walked (mirrored if `flip`).
+    /// The corners `(h00, h10, h01, h11)` of a cell as walked (mirrored in `x` if `flip`).
     #[inline]
-    fn walked(hc: (f64, f64, f64, f64), sx: f64, flip: bool) -> ((f64, f64, f64, f64), f64) {
+    fn walked_corners(hc: (f64, f64, f64, f64), flip: bool) -> (f64, f64, f64, f64) {
         if flip {
-            ((hc.1, hc.0, hc.3, hc.2), 1.0 - sx)
+            (hc.1, hc.0, hc.3, hc.2)
         } else {
-            (hc, sx)
+            hc
+        }
+    }
+
+    /// The local `x` coordinate as walked: `u = 1 − s_x` in a flipped cell.
+    #[inline]
+    fn walked_x(sx: f64, flip: bool) -> f64 {
+        if flip {
+            1.0 - sx
+        } else {
+            sx
         }
     }
 
@@ -366,11 +376,7 @@ impl<'a> Tracker<'a> {
     /// direction, `d(u − s_z)/dt`.
     #[inline]
     fn tri_in(flip: bool, sx: f64, sz: f64, dq: f64, dqf: f64) -> u8 {
-        if flip {
-            Self::tri_at(1.0 - sx, sz, dqf)
-        } else {
-            Self::tri_at(sx, sz, dq)
-        }
+        Self::tri_at(Self::walked_x(sx, flip), sz, if flip { dqf } else { dq })
     }
 
     /// The cell holding the point `(x, z)` (any real coordinates).
@@ -402,8 +408,14 @@ impl<'a> Tracker<'a> {
         let c = self.cell_of(x, z);
         let sx = (x / self.dx - c.ix as f64).clamp(0.0, 1.0);
         let sz = (z / self.dz - c.iz as f64).clamp(0.0, 1.0);
-        let (hv, sv) = Self::walked(self.corners(&c), sx, self.flipped(&c));
-        Self::plane(hv, Self::tri_at(sv, sz, 0.0), sv, sz)
+        let flip = self.flipped(&c);
+        let sv = Self::walked_x(sx, flip);
+        Self::plane(
+            Self::walked_corners(self.corners(&c), flip),
+            Self::tri_at(sv, sz, 0.0),
+            sv,
+            sz,
+        )
     }
 
     /// Follows one particle whose centre starts at `(x0, top, z0)` with velocity
@@ -613,15 +625,14 @@ impl<'a> Tracker<'a> {
             }
             let hc = self.corners(&cell);
             let flip = self.flipped(&cell);
-            let hv = if flip { (hc.1, hc.0, hc.3, hc.2) } else { hc };
+            let hv = Self::walked_corners(hc, flip);
             let dqv = if flip { dqf } else { dq };
             let x0 = cell.ix as f64 * dx;
             let z0 = cell.iz as f64 * dz;
             if g_cur.is_nan() {
                 let sx = (((o.x + d.x * t_cur) - x0) / dx).clamp(0.0, 1.0);
                 let sz = (((o.z + d.z * t_cur) - z0) / dz).clamp(0.0, 1.0);
-                let sv = if flip { 1.0 - sx } else { sx };
-                g_cur = o.y + d.y * t_cur - Self::plane(hv, tri, sv, sz);
+                g_cur = o.y + d.y * t_cur - Self::plane(hv, tri, Self::walked_x(sx, flip), sz);
             }
             let t_x = if d.x > 0.0 {
                 ((x0 + dx - o.x) * inv_ux).max(t_cur)
@@ -644,7 +655,7 @@ impl<'a> Tracker<'a> {
             // Diagonal crossing inside the cell (as walked).
             let sx_c = ((o.x + d.x * t_cur) - x0) / dx;
             let sz_c = ((o.z + d.z * t_cur) - z0) / dz;
-            let q = if flip { 1.0 - sx_c - sz_c } else { sx_c - sz_c };
+            let q = Self::walked_x(sx_c, flip) - sz_c;
             let t_d = if tri == 0 && dqv < 0.0 {
                 t_cur + q.max(0.0) / (-dqv)
             } else if tri == 1 && dqv > 0.0 {
@@ -655,8 +666,7 @@ impl<'a> Tracker<'a> {
             if t_d < t_exit {
                 let sx = ((o.x + d.x * t_d) - x0) / dx;
                 let sz = ((o.z + d.z * t_d) - z0) / dz;
-                let sv = if flip { 1.0 - sx } else { sx };
-                let s = (0.5 * (sv + sz)).clamp(0.0, 1.0);
+                let s = (0.5 * (Self::walked_x(sx, flip) + sz)).clamp(0.0, 1.0);
                 let g_d = o.y + d.y * t_d - lerp(hv.0, hv.3, s);
                 if let Some(t) =
                     self.piece(hc, flip, &cell, tri, exclude, d, t_cur, g_cur, t_d, g_d)
@@ -672,8 +682,7 @@ impl<'a> Tracker<'a> {
             let g_exit = if t_exit == t_y {
                 let sx = (((o.x + d.x * t_exit) - x0) / dx).clamp(0.0, 1.0);
                 let sz = ((o.z + d.z * t_exit) - z0) / dz;
-                let sv = if flip { 1.0 - sx } else { sx };
-                y_exit - Self::plane(hv, tri, sv, sz.clamp(0.0, 1.0))
+                y_exit - Self::plane(hv, tri, Self::walked_x(sx, flip), sz.clamp(0.0, 1.0))
             } else if t_exit == t_x {
                 let sz = (((o.z + d.z * t_exit) - z0) / dz).clamp(0.0, 1.0);
                 if d.x > 0.0 {

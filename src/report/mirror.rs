@@ -9,6 +9,7 @@ use super::paths::{MIRROR, MIRROR_SEED, MIRROR_TRIANGULATIONS};
 use crate::error::Result;
 use crate::output::csv::num;
 use crate::output::{fmt_num, CsvTable};
+use crate::tally::moments::ShiftedSums;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::Path;
@@ -23,13 +24,10 @@ const QUANTITIES: [(&str, &str, f64); 3] = [
 
 /// Mean over the surfaces and its standard error (`None` with fewer than two surfaces).
 fn mean_se(d: &[f64]) -> (f64, Option<f64>) {
-    let n = d.len() as f64;
-    let m = d.iter().sum::<f64>() / n;
-    if d.len() < 2 {
-        return (m, None);
-    }
-    let var = d.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (n - 1.0);
-    (m, Some((var / n).sqrt()))
+    let mut sums = ShiftedSums::default();
+    d.iter().for_each(|&x| sums.push(x));
+    let m = sums.moments();
+    (m.mean, m.se().filter(|_| m.n >= 2))
 }
 
 /// One triangulation's runs: (α⁻, β⁻) in thousandths of a degree → column → one value per

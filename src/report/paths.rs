@@ -137,8 +137,9 @@ pub const CALIBRATION_TABLE: &str = "table";
 /// Calibration: `deterministic` on another surface, compared with the first.
 pub const CALIBRATION_NOISE: &str = "noise";
 
-/// Mirror symmetry: the triangulations run, one directory each under [`MIRROR`].
-pub const MIRROR_TRIANGULATIONS: [&str; 2] = ["alternating", "uniform"];
+/// Mirror symmetry: the triangulations run (every one the case key accepts), one directory
+/// each under [`MIRROR`].
+pub const MIRROR_TRIANGULATIONS: [&str; 2] = crate::surface::Triangulation::NAMES;
 /// Mirror symmetry: the surfaces' seeds (full mode; quick mode runs the first two).
 pub const MIRROR_SEEDS: [&str; 8] = ["1", "2", "3", "4", "5", "6", "7", "8"];
 /// Mirror symmetry: prefix of one surface's run (`seed1`, …).

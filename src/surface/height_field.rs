@@ -94,6 +94,27 @@ impl HeightField {
             && ((ix % self.nx) + (iz % self.nz)) % 2 == 1
     }
 
+    /// A warning when the alternating split cannot close over the periodic seam: with an
+    /// odd node count along an axis, the last and the first cells of a row share a
+    /// diagonal, so the wall is mirror symmetric only up to that one line of cells
+    /// ([`Triangulation`]). The automatic grid always has an even count (8 × 5-smooth).
+    pub fn triangulation_seam(&self) -> Option<crate::warning::Warning> {
+        if self.triangulation != Triangulation::Alternating {
+            return None;
+        }
+        let odd: Vec<String> = [("nx", self.nx), ("nz", self.nz)]
+            .into_iter()
+            .filter(|&(_, n)| n > 1 && n % 2 == 1)
+            .map(|(k, n)| format!("{k} = {n}"))
+            .collect();
+        (!odd.is_empty()).then(|| {
+            crate::warning::Warning(format!(
+                "the surface has an odd node count ({}): the alternating triangulation repeats a diagonal at the periodic seam, so the wall is mirror symmetric only up to that one line of cells; an even count closes it",
+                odd.join(", ")
+            ))
+        })
+    }
+
     /// Unnormalised upward normals of the two triangles of cell `(ix, iz)`.
     ///
     /// Along the diagonal from node `(ix, iz)` to `(ix+1, iz+1)`: triangle 0 is
@@ -160,5 +181,30 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn an_odd_node_count_warns_only_for_the_alternating_split() {
+        let f = |nx: usize, nz: usize, triangulation| HeightField {
+            nx,
+            nz,
+            dx: 1.0,
+            dz: 1.0,
+            heights: vec![0.0; nx * nz],
+            triangulation,
+        };
+        assert!(f(8, 6, Triangulation::Alternating)
+            .triangulation_seam()
+            .is_none());
+        assert!(f(8, 1, Triangulation::Alternating)
+            .triangulation_seam()
+            .is_none());
+        assert!(f(7, 5, Triangulation::Uniform)
+            .triangulation_seam()
+            .is_none());
+        let w = f(8, 5, Triangulation::Alternating)
+            .triangulation_seam()
+            .unwrap();
+        assert!(w.0.contains("nz = 5") && !w.0.contains("nx"), "{}", w.0);
     }
 }

@@ -12,7 +12,7 @@
 //! Work is split in fixed chunks of grid rows (never by thread count) and the partial
 //! moments are merged in chunk order, so results are bit-identical for any thread count.
 
-use crate::surface::HeightField;
+use crate::surface::{HeightField, Triangulation};
 use rayon::prelude::*;
 use std::ops::Range;
 
@@ -273,7 +273,7 @@ fn row_gradients(f: &HeightField, iz: usize, gx: &mut [f64], gz: &mut [f64]) {
     gx1[n - 1] = t1[0];
     gz1[n - 1] = t1[2];
     // A flipped cell's triangles pair the same x-slopes with each other's z-slope.
-    if f.triangulation == crate::surface::Triangulation::Alternating {
+    if f.triangulation == Triangulation::Alternating {
         for ix in 0..n - 1 {
             if f.flipped(ix, iz) {
                 std::mem::swap(&mut gz0[ix], &mut gz1[ix]);
@@ -793,7 +793,6 @@ pub fn measured_deviations(f: &HeightField) -> crate::wall::Deviations {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::Triangulation;
 
     fn field(nx: usize, nz: usize, heights: Vec<f64>) -> HeightField {
         HeightField {

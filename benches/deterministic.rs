@@ -9,7 +9,7 @@ use roughwall::collision::CollisionLaw;
 use roughwall::deterministic::scene::{
     build_surface, choose_surface, generate_surface, SceneOptions, SurfacePlan,
 };
-use roughwall::deterministic::{fill_block, tally_spec, ModelSetup, Tracker};
+use roughwall::deterministic::{fill_block, tally_spec, ModelSetup, Realisations, Tracker};
 use roughwall::erosion::{finnie::Finnie, ErosionModel, ErosionSetup};
 use roughwall::output::OutputDir;
 use roughwall::run_context::Context;
@@ -31,12 +31,12 @@ fn surface(dxi: f64, dze: f64, seed: u64) -> HeightField {
 
 /// Histories `0..n` of one condition, tallied in one block on one thread (tracker, collision
 /// law and tally; no parallelism, so the figure is per core).
-fn one_block(t: &Tracker<'_>, n: u64) -> BlockTally {
+fn one_block(t: &Realisations<'_>, n: u64) -> BlockTally {
     one_block_eroding(t, n, None)
 }
 
 /// [`one_block`] with an erosion law (or none).
-fn one_block_eroding(t: &Tracker<'_>, n: u64, erosion: Option<ErosionSetup>) -> BlockTally {
+fn one_block_eroding(t: &Realisations<'_>, n: u64, erosion: Option<ErosionSetup>) -> BlockTally {
     let wall = Deviations {
         delta_xi: 2.5f64.to_radians(),
         delta_zeta: 7.5f64.to_radians(),
@@ -58,7 +58,7 @@ fn one_block_eroding(t: &Tracker<'_>, n: u64, erosion: Option<ErosionSetup>) -> 
 
 fn histories(c: &mut Criterion) {
     let f = surface(2.5, 7.5, 1);
-    let t = Tracker::new(&f, 1000).unwrap();
+    let t = Realisations::from(Tracker::new(&f, 1000).unwrap());
     let n = 100_000;
     let mut g = c.benchmark_group("deterministic");
     g.throughput(Throughput::Elements(n));
@@ -71,12 +71,12 @@ fn histories(c: &mut Criterion) {
         triangulation: Triangulation::Uniform,
         ..f.clone()
     };
-    let t_uniform = Tracker::new(&f_uniform, 1000).unwrap();
+    let t_uniform = Realisations::from(Tracker::new(&f_uniform, 1000).unwrap());
     g.bench_function(
         "histories_aniso_a-12.5_b0_one_core_uniform_triangulation",
         |b| b.iter(|| one_block(&t_uniform, n)),
     );
-    let t_plain = Tracker::new(&f, 1000).unwrap().without_tiles();
+    let t_plain = Realisations::from(Tracker::new(&f, 1000).unwrap().without_tiles());
     g.bench_function("histories_aniso_a-12.5_b0_one_core_no_tile_map", |b| {
         b.iter(|| one_block(&t_plain, n))
     });
@@ -125,7 +125,7 @@ fn run_case(dir: &Path) {
         p.options.triangulation,
     )
     .unwrap();
-    let tracker = Tracker::new(&built.field, p.options.max_collisions).unwrap();
+    let tracker = Realisations::from(Tracker::new(&built.field, p.options.max_collisions).unwrap());
     let out = OutputDir::begin(&ctx.out_dir, "--out").unwrap();
     let t0 = std::time::Instant::now();
     let done = runner::execute(&plan, "deterministic", |k, start, end, block| {

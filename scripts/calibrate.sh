@@ -8,6 +8,11 @@
 #     the surface's discretisation (the generated surfaces have 1-3 % less slope than nominal).
 #     Two walls the table was not calibrated on: (5°, 5°) and (4°, 1°). The deterministic
 #     run's own noise: the same scene on another surface (seed 7) against the first.
+#  3. The same against an ensemble: `deterministic` with `[deterministic] surfaces =
+#     $P_CALIBRATION_SURFACES` (the histories spread over that many surfaces), its noise another
+#     ensemble (seed 7), the models with the deviations measured over the ensemble. One
+#     100-c_L surface has quirks of its own (another surface moves mean α⁺ by up to 0.2°); a
+#     statistical wall model stands for the ensemble, and the goal is judged against it.
 # Writes $REBOUND_RESULTS/calibration/; `rebound report` turns it into a REPORT.md section.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
@@ -27,27 +32,42 @@ else
 fi
 stage_end
 N=$(particles 1000000 2000)
-for s in $P_CALIBRATION_SCENES; do
-  scene=$(basename "$s")
-  stage_start "Calibration: $scene"
-  det="$C/$scene/$P_DETERMINISTIC"
-  run deterministic --case "$s.toml" --particles "$N" --out "$det"
-  # The deterministic run's own noise: the same scene on another surface (another seed),
+SURFACES=$(particles "$P_CALIBRATION_SURFACES" 2)
+# benchmark CASE DIR TAG: `deterministic` on CASE, its noise (seed 7) and both models against
+# it, under DIR; TAG names the generated stochastic cases.
+benchmark() {
+  local s=$1 d=$2 tag=$3
+  local det="$d/$P_DETERMINISTIC"
+  run deterministic --case "$s" --particles "$N" --out "$det"
+  # The deterministic run's own noise: the same scene on other surfaces (another seed),
   # compared with the first; a model is within the noise when it is no farther than this.
-  run deterministic --case "$s.toml" --particles "$N" --seed 7 --out "$C/$scene/$P_CALIBRATION_NOISE/$P_DETERMINISTIC"
-  run compare --a "$det" --b "$C/$scene/$P_CALIBRATION_NOISE/$P_DETERMINISTIC" --out "$C/$scene/$P_CALIBRATION_NOISE/$P_COMPARE"
+  run deterministic --case "$s" --particles "$N" --seed 7 --out "$d/$P_CALIBRATION_NOISE/$P_DETERMINISTIC"
+  run compare --a "$det" --b "$d/$P_CALIBRATION_NOISE/$P_DETERMINISTIC" --out "$d/$P_CALIBRATION_NOISE/$P_COMPARE"
+  local xi ze
   xi=$(awk -F' = ' '/^measured_delta_xi_deg/{print $2; exit}' "$det/run.toml")
   ze=$(awk -F' = ' '/^measured_delta_zeta_deg/{print $2; exit}' "$det/run.toml")
   [ -n "$xi" ] && [ -n "$ze" ] || { echo "calibrate.sh: no measured deviations in $det/run.toml" >&2; exit 1; }
   for v in radenkovic-simonin-2021 calibrated; do
-    case_file="$C/cases/$scene-$v.toml"
+    local case_file="$C/cases/$tag-$v.toml"
     # The scene with the measured deviations and the model; the rest of the case unchanged.
-    variant_case "$s.toml" "$v" "$xi" "$ze" > "$case_file"
+    variant_case "$s" "$v" "$xi" "$ze" > "$case_file"
     grep -q "^delta_xi_deg = $xi\$" "$case_file" && grep -q "^model = \"$v\"" "$case_file" \
       || { echo "calibrate.sh: could not write $case_file" >&2; exit 1; }
-    run stochastic --case "$case_file" --particles "$N" --out "$C/$scene/$v/$P_STOCHASTIC"
-    run compare --a "$det" --b "$C/$scene/$v/$P_STOCHASTIC" --out "$C/$scene/$v/$P_COMPARE"
+    run stochastic --case "$case_file" --particles "$N" --out "$d/$v/$P_STOCHASTIC"
+    run compare --a "$det" --b "$d/$v/$P_STOCHASTIC" --out "$d/$v/$P_COMPARE"
   done
+}
+for s in $P_CALIBRATION_SCENES; do
+  scene=$(basename "$s")
+  stage_start "Calibration: $scene"
+  benchmark "$s.toml" "$C/$scene" "$scene"
+  stage_end
+  stage_start "Calibration: $scene, $SURFACES surfaces"
+  # The scene with `[deterministic] surfaces`; the rest unchanged.
+  ens="$C/cases/$scene-$P_CALIBRATION_ENSEMBLE.toml"
+  sed "s/^\[deterministic\]\$/[deterministic]\nsurfaces = $SURFACES/" "configs/$s.toml" > "$ens"
+  grep -q "^surfaces = $SURFACES\$" "$ens" || { echo "calibrate.sh: could not write $ens" >&2; exit 1; }
+  benchmark "$ens" "$C/$scene/$P_CALIBRATION_ENSEMBLE" "$scene-$P_CALIBRATION_ENSEMBLE"
   stage_end
 done
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "calibration"

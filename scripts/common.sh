@@ -43,7 +43,7 @@ print_stages() {
   cat "$STAGE_LOG"
 }
 
-# variant_case SRC MODEL [XI ZE]: the case file SRC (under configs/) with `[stochastic] model =
+# variant_case SRC MODEL [XI ZE]: the case file SRC (under configs/, else as given) with `[stochastic] model =
 # MODEL` (the section added when the case has none, an existing `model` replaced) and, when XI
 # and ZE are given, `[wall]` deviations XI and ZE (degrees); the rest unchanged, on stdout.
 variant_case() {
@@ -55,5 +55,5 @@ variant_case() {
     { print }
     $0 == "[stochastic]" { print "model = \"" m "\""; seen = 1 }
     END { if (!seen) printf "\n[stochastic]\nmodel = \"%s\"\n", m }
-  ' "configs/$1"
+  ' "$(if [ -f "configs/$1" ]; then echo "configs/$1"; else echo "$1"; fi)"
 }

@@ -25,6 +25,8 @@ pub mod domain {
     pub const WALL_HITS: u64 = 5;
     /// Shadow-law draws of `rebound calibrate` (indices: condition, particle).
     pub const CALIBRATION: u64 = 6;
+    /// The seeds of a deterministic run's further surface realisations (index: realisation).
+    pub const SURFACE_REALISATION: u64 = 7;
 }
 
 /// SplitMix64 finaliser: a bijective 64-bit mixer.

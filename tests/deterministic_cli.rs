@@ -125,6 +125,13 @@ fn bad_deterministic_section() {
         &[],
         "deterministic.triangulation",
     );
+    for bad in ["surfaces = 0", "surfaces = 1025", "surfaces = -1"] {
+        refuses(
+            &[("side_per_corr_length = 20.0", bad)],
+            &[],
+            "deterministic.surfaces",
+        );
+    }
     refuses(
         &[("side_per_corr_length = 20.0", "colisions = 3")],
         &[],
@@ -253,6 +260,84 @@ fn a_saved_surface_is_reused_and_a_damaged_one_refused() {
     let cut = dir.path().join("cut.rbhf");
     std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
     refuses(&[], &["--surface", cut.to_str().unwrap()], "cut.rbhf");
+    // A height file is one realisation.
+    refuses(
+        &[(
+            "side_per_corr_length = 20.0",
+            "side_per_corr_length = 20.0\nsurfaces = 2",
+        )],
+        &["--surface", heights.to_str().unwrap()],
+        "deterministic.surfaces",
+    );
+}
+
+/// `[deterministic] surfaces`: one realisation is the run without the key, byte for byte;
+/// several give other histories on surfaces of the same statistics, the same outputs for
+/// any thread count and shard split, and `run.toml` says how many, with the deviations
+/// measured over all of them.
+#[test]
+fn surface_realisations() {
+    let dir = Dir::new();
+    let run = |name: &str, surfaces: Option<u32>, extra: &[&str]| {
+        let key = surfaces.map_or(String::new(), |n| format!("\nsurfaces = {n}"));
+        let case = case_with(
+            dir.path(),
+            &[(
+                "side_per_corr_length = 20.0",
+                &format!("side_per_corr_length = 20.0{key}"),
+            )],
+        );
+        run_case("deterministic", &case, &dir.join(name), extra)
+    };
+    let plain = run("plain", None, &[]);
+    let one = run("one", Some(1), &[]);
+    assert_eq!(csv_files(&plain), csv_files(&one));
+    let three = run("three", Some(3), &["--threads", "1"]);
+    let three_2 = run("three-2", Some(3), &["--threads", "2"]);
+    assert_eq!(csv_files(&three), csv_files(&three_2));
+    assert_ne!(
+        std::fs::read(plain.join("summary.csv")).unwrap(),
+        std::fs::read(three.join("summary.csv")).unwrap(),
+        "three realisations gave the histories of one"
+    );
+    let shards: Vec<PathBuf> = [2, 1]
+        .iter()
+        .map(|k| {
+            run(
+                &format!("shard{k}"),
+                Some(3),
+                &["--shard", &format!("{k}/2")],
+            )
+        })
+        .collect();
+    let merged = dir.join("merged");
+    let mut args = vec![
+        "merge".to_string(),
+        "--out".into(),
+        merged.display().to_string(),
+    ];
+    args.extend(shards.iter().map(|d| d.display().to_string()));
+    rebound(&args).ok();
+    assert_eq!(csv_files(&three), csv_files(&merged));
+    let measured = |d: &Path| -> (String, Vec<f64>) {
+        let m = std::fs::read_to_string(d.join("run.toml")).unwrap();
+        let v = m
+            .lines()
+            .filter_map(|l| l.strip_prefix("measured_delta_"))
+            .map(|l| l.split(" = ").nth(1).unwrap().parse().unwrap())
+            .collect();
+        (m, v)
+    };
+    let (m1, d1) = measured(&plain);
+    let (m3, d3) = measured(&three);
+    assert!(!m1.contains("surfaces = "), "{m1}");
+    assert!(m3.contains("surfaces = 3"), "{m3}");
+    assert_eq!(d3.len(), 2, "{m3}");
+    // Other surfaces of the same statistics: nearly the same deviations, not the same bits.
+    assert_ne!(d1, d3);
+    for (a, b) in d1.iter().zip(&d3) {
+        assert!((a - b).abs() < 0.1, "measured deviations {d1:?} {d3:?}");
+    }
 }
 
 /// `[deterministic] triangulation` reaches the tracker and the manifest: the alternating

@@ -21,6 +21,9 @@ pub const MIN_ABS_ALPHA_DEG: f64 = 1e-3;
 /// Largest accepted `[deterministic] max_collisions`.
 const MAX_COLLISIONS_LIMIT: i64 = 1_000_000;
 
+/// Largest accepted `[deterministic] surfaces` (each realisation is held in memory).
+pub const MAX_SURFACES: i64 = 1024;
+
 /// The `[deterministic]` section, validated.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DeterministicOptions {
@@ -31,6 +34,8 @@ pub struct DeterministicOptions {
     pub sphere_diameter_m: Option<f64>,
     /// How the surface's cells are split into triangles (`[deterministic] triangulation`).
     pub triangulation: Triangulation,
+    /// Independent surface realisations (`[deterministic] surfaces`, default 1).
+    pub surfaces: u32,
 }
 
 /// `[deterministic] triangulation`, validated: how the cells of a generated or read surface
@@ -127,9 +132,17 @@ pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
         None
     };
     let triangulation = triangulation(case)?;
+    let surfaces = check_int_range(
+        "deterministic.surfaces",
+        d.surfaces.unwrap_or(1),
+        1,
+        MAX_SURFACES,
+        "an integer from 1 to 1024 (independent surface realisations the histories are spread over)",
+    )?;
     Ok(DeterministicOptions {
         max_collisions: mc as u32,
         triangulation,
+        surfaces: surfaces as u32,
         scene: SceneOptions {
             spacing_per_corr_length: spc,
             side_per_corr_length: side,
@@ -185,6 +198,13 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
         ));
     }
     let surface = match surface_file {
+        Some(path) if options.surfaces > 1 => {
+            return Err(Error::Input(format!(
+                "`deterministic.surfaces` = {} needs generated surfaces, but --surface `{}` gives one: remove the key or the option",
+                options.surfaces,
+                path.display()
+            )))
+        }
         Some(_) => None,
         None => Some(surface_plan(&scene, &options.scene)?),
     };

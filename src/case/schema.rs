@@ -193,10 +193,14 @@ pub struct DeterministicSection {
     /// surface).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub contact: Option<String>,
-    /// How each grid cell is split into two triangles: `"uniform"` (one diagonal, the
-    /// default) or `"alternating"` (checkerboard, mirror symmetric).
+    /// How each grid cell is split into two triangles: `"alternating"` (checkerboard,
+    /// mirror symmetric, the default) or `"uniform"` (one diagonal, the earlier default).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub triangulation: Option<String>,
+    /// Independent surface realisations the histories are spread over (history `i` on
+    /// realisation `i mod surfaces`): the ensemble a statistical wall model stands for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub surfaces: Option<i64>,
 }
 
 /// `[impactor]` (formerly `[particle]`) for `force-sweep`: a material preset or explicit

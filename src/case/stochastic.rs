@@ -142,12 +142,30 @@ fn effective_wall(
     let (Some(plan), Some(diameter)) = (&det.surface, det.options.sphere_diameter_m) else {
         return Err(Error::Internal("no surface plan for the sphere".into()));
     };
-    let field =
-        crate::deterministic::scene::generate_surface(plan, seed, det.options.triangulation)?;
-    let nominal = crate::surface::stats::measured_deviations(&field);
-    let dil =
-        crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
-    let eff = crate::surface::stats::measured_deviations(&dil.field);
+    // Over the realisations `deterministic` bounces on (`[deterministic] surfaces`), one
+    // at a time.
+    use crate::deterministic::scene::{generate_surface, realisation_seed};
+    use crate::surface::stats::pooled_deviations;
+    let n = det.options.surfaces;
+    let (mut nominal_sq, mut eff_sq, mut contact) = ((0.0, 0.0), (0.0, 0.0), 0.0);
+    for r in 0..n {
+        let field = generate_surface(plan, realisation_seed(seed, r), det.options.triangulation)?;
+        let d = pooled_deviations(&[&field]);
+        let dil =
+            crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
+        let e = pooled_deviations(&[&dil.field]);
+        nominal_sq.0 += d.delta_xi.powi(2);
+        nominal_sq.1 += d.delta_zeta.powi(2);
+        eff_sq.0 += e.delta_xi.powi(2);
+        eff_sq.1 += e.delta_zeta.powi(2);
+        contact += dil.contact_fraction;
+    }
+    // For one realisation its own deviations, bit for bit (√(x²) = x in IEEE arithmetic).
+    let rms = |(x, z): (f64, f64)| crate::wall::Deviations {
+        delta_xi: (x / n as f64).sqrt(),
+        delta_zeta: (z / n as f64).sqrt(),
+    };
+    let (nominal, eff, contact_fraction) = (rms(nominal_sq), rms(eff_sq), contact / n as f64);
     if !(eff.delta_xi.is_finite() && eff.delta_zeta.is_finite()) {
         return Err(Error::Model(format!(
             "`{key}`: the deviations of the sphere's centre surface are not finite numbers"
@@ -165,7 +183,7 @@ fn effective_wall(
     t.insert("effective_delta_zeta_deg".into(), deg(eff.delta_zeta));
     t.insert(
         "contact_fraction".into(),
-        toml::Value::Float((dil.contact_fraction * 1e6).round() / 1e6),
+        toml::Value::Float((contact_fraction * 1e6).round() / 1e6),
     );
     t.insert(
         "how".into(),

@@ -4,14 +4,16 @@
 use crate::cli::CalibrateArgs;
 use crate::commands::{begin_out, context, counted, grouped, warn, Summary, Wrote};
 use roughwall::case::{builtin, deterministic::prepare};
-use roughwall::deterministic::scene::generate_surface;
-use roughwall::deterministic::{calibrate::escape_counts, Tracker};
+use roughwall::deterministic::calibrate::escape_counts;
+use roughwall::deterministic::scene::{generate_surface, realisation_seed, require_realisations};
+use roughwall::deterministic::{Realisations, Tracker};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::check_out;
 use roughwall::output::write_atomic;
 use roughwall::runner::TallyOverrides;
 use roughwall::stochastic::escape_table::EscapeTable;
-use roughwall::surface::stats::measured_deviations;
+use roughwall::surface::stats::pooled_deviations;
+use roughwall::surface::HeightField;
 
 /// Runs the subcommand.
 pub fn run(args: &CalibrateArgs) -> Result<Summary> {
@@ -31,22 +33,34 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
         return Err(Error::Internal("no surface plan".into()));
     };
     check_out(&ctx.out_dir, "--out")?;
-    let field = generate_surface(plan, ctx.seed, p.options.triangulation)?;
-    warn(field.triangulation_seam());
-    let tracker = Tracker::new(&field, p.options.max_collisions).map_err(|e| match e {
-        // A surface this tool generated and the tracker refuses: a bug, not the input.
-        Error::Input(m) => Error::Internal(format!("generated surface: {m}")),
-        e => e,
-    })?;
-    // The reduced angles use the deviations the surface has, not the ones it was meant to
-    // have: the table must not absorb the surface's discretisation (a few per cent).
-    let measured = measured_deviations(&field);
+    let n = p.options.surfaces;
+    require_realisations(plan, n)?;
+    let fields = (0..n)
+        .map(|r| generate_surface(plan, realisation_seed(ctx.seed, r), p.options.triangulation))
+        .collect::<Result<Vec<_>>>()?;
+    let fields: Vec<&HeightField> = fields.iter().collect();
+    warn(fields[0].triangulation_seam());
+    let trackers = fields
+        .iter()
+        .map(|&field| {
+            Tracker::new(field, p.options.max_collisions).map_err(|e| match e {
+                // A surface this tool generated and the tracker refuses: a bug, not the input.
+                Error::Input(m) => Error::Internal(format!("generated surface: {m}")),
+                e => e,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let surfaces = Realisations::new(trackers)?;
+    // The reduced angles use the deviations the surfaces have, not the ones they were meant
+    // to have: the table must not absorb the surface's discretisation (a few per cent).
+    let measured = pooled_deviations(&fields);
     let out = begin_out(&ctx.out_dir)?;
     let t0 = std::time::Instant::now();
     let mut setup = p.setup;
     setup.wall = measured;
     let count = p.scene.count as u64;
-    let counts = escape_counts(&tracker, &setup, &p.scene.conditions, count, ctx.seed);
+    let conditions = &p.scene.conditions;
+    let counts = escape_counts(&surfaces, &setup, conditions, count, ctx.seed);
     let seconds = t0.elapsed().as_secs_f64();
     if counts.total() == 0 {
         return Err(Error::Model(
@@ -54,15 +68,20 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
                 .into(),
         ));
     }
+    // One realisation: the line earlier tables carry (so they regenerate byte for byte).
+    let realisations = match n {
+        1 => String::new(),
+        n => format!(" surfaces {n}"),
+    };
     let source = format!(
-        "case {} seed {} particles {} conditions {} wall (measured) {:.4} {:.4} deg triangulation {}",
+        "case {} seed {} particles {} conditions {} wall (measured) {:.4} {:.4} deg triangulation {}{realisations}",
         ctx.case.name,
         ctx.seed,
         count,
-        p.scene.conditions.len(),
+        conditions.len(),
         measured.delta_xi.to_degrees(),
         measured.delta_zeta.to_degrees(),
-        field.triangulation.name()
+        fields[0].triangulation.name()
     );
     let table = EscapeTable::from_counts(counts, &source);
     write_atomic(
@@ -86,12 +105,15 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     );
     t.insert(
         "histories".into(),
-        toml::Value::Integer((count * p.scene.conditions.len() as u64) as i64),
+        toml::Value::Integer((count * conditions.len() as u64) as i64),
     );
     t.insert(
         "use".into(),
         "[stochastic] model = \"calibrated\", escape_table = \"<this file>\"".into(),
     );
+    if n > 1 {
+        t.insert("surfaces".into(), toml::Value::Integer(n as i64));
+    }
     manifest.set("calibration", toml::Value::Table(t));
     manifest.set_run(
         "compute_s",
@@ -99,11 +121,11 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     );
     manifest.write(out.path())?;
     let dir = out.commit()?;
-    let histories = count * p.scene.conditions.len() as u64;
+    let histories = count * conditions.len() as u64;
     Ok(Summary {
         work: format!(
             "{}, {} histories, {} collisions counted",
-            counted(p.scene.conditions.len(), "condition"),
+            counted(conditions.len(), "condition"),
             grouped(histories),
             grouped(table.counts().total())
         ),

@@ -5,11 +5,12 @@
 use crate::cli::DeterministicArgs;
 use crate::commands::{begin_out, context, warn, Summary};
 use roughwall::case::{builtin, deterministic::prepare};
-use roughwall::deterministic::scene::build_surface;
-use roughwall::deterministic::{fill_block, Tracker};
+use roughwall::deterministic::scene::{build_surfaces, BuiltSurface, SphereDilation};
+use roughwall::deterministic::{fill_block, Realisations, Tracker};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::{check_distinct, check_out};
 use roughwall::runner;
+use roughwall::surface::HeightField;
 use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
 use roughwall::writers::deterministic::{finish, sphere_table, surface_table};
@@ -44,41 +45,48 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
         // `--out` is replaced as a whole: it must not hold the height file the run reads.
         check_distinct(&target, "--out", &[("--surface", file)])?;
     }
-    // Everything the user gave is checked; now the surface (the only slow input step).
+    // Everything the user gave is checked; now the surfaces (the only slow input step).
     let sphere = p.options.sphere_diameter_m;
-    let built = build_surface(
+    let built = build_surfaces(
         p.surface.as_ref(),
         file,
         sphere,
         ctx.seed,
         p.options.triangulation,
+        p.options.surfaces,
     )?;
-    warn(built.field.triangulation_seam());
-    let tracker = Tracker::new(&built.field, p.options.max_collisions).map_err(|e| {
-        match (e, file) {
-            (Error::Input(m), Some(path)) => {
-                Error::Input(format!("--surface `{}`: {m}", path.display()))
-            }
-            // A surface this tool generated and the tracker refuses: a bug, not the input.
-            (Error::Input(m), None) => Error::Internal(format!("generated surface: {m}")),
-            (e, _) => e,
-        }
-    })?;
+    let fields: Vec<&HeightField> = built.iter().map(|b| &b.field).collect();
+    // The realisations share the grid: one warning for all.
+    warn(fields[0].triangulation_seam());
+    let trackers = fields
+        .iter()
+        .map(|&field| {
+            Tracker::new(field, p.options.max_collisions).map_err(|e| match (e, file) {
+                (Error::Input(m), Some(path)) => {
+                    Error::Input(format!("--surface `{}`: {m}", path.display()))
+                }
+                // A surface this tool generated and the tracker refuses: a bug, not the input.
+                (Error::Input(m), None) => Error::Internal(format!("generated surface: {m}")),
+                (e, _) => e,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let surfaces = Realisations::new(trackers)?;
     // Merged shards report shard 1's table: the others need not measure again.
     let measure = plan.shard.is_none_or(|s| s.index == 1);
-    let (field, source) = (&built.field, built.source);
+    let source = built[0].source;
     let choice = surface_table(
         p.surface.as_ref(),
         file,
-        field,
+        &fields,
         source,
         &p.options.scene,
         measure,
     );
     p.notes.insert("surface_choice".into(), choice);
-    if let Some(s) = &built.sphere {
+    if let Some(s) = pooled_sphere(&built) {
         // `surface_choice` measured the surface the centre rides on: the dilated one.
-        p.notes.insert("sphere_contact".into(), sphere_table(s));
+        p.notes.insert("sphere_contact".into(), sphere_table(&s));
     }
     // The surface is valid: lock and stage the output directory (a shard's own directory for
     // a shard run), then compute.
@@ -88,7 +96,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     let done = runner::execute(&plan, "deterministic", |k, start, end, block| {
         let range = (start, end);
         fill_block(
-            &tracker,
+            &surfaces,
             setup,
             &conditions[k],
             k as u64,
@@ -100,7 +108,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     let seconds = t1.elapsed().as_secs_f64();
     let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
     let summary = Summary::monte_carlo(plan.shard, &tallies, "histories", &target);
-    let gen_s = built.generate_s;
+    let gen_s: f64 = built.iter().map(|b| b.generate_s).sum();
     if let Some(identity) = &identity {
         let total_s = seconds + gen_s;
         runner::write_partial(out.path(), identity, &plan, p.notes, tallies, total_s)?;
@@ -119,4 +127,20 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     }
     out.commit()?;
     Ok(summary)
+}
+
+/// The sphere's dilation over all realisations: the mean contact fraction, the total time
+/// (for one realisation, its own).
+fn pooled_sphere(built: &[BuiltSurface]) -> Option<SphereDilation> {
+    let all: Vec<&SphereDilation> = built.iter().filter_map(|b| b.sphere.as_ref()).collect();
+    let first = all.first()?;
+    if all.len() == 1 {
+        return Some(SphereDilation { ..**first });
+    }
+    let n = all.len() as f64;
+    Some(SphereDilation {
+        diameter_m: first.diameter_m,
+        contact_fraction: all.iter().map(|s| s.contact_fraction).sum::<f64>() / n,
+        dilation_s: all.iter().map(|s| s.dilation_s).sum(),
+    })
 }

@@ -4,7 +4,7 @@
 //! wall, and the first wall element of every history beside a draw of the paper's shadow
 //! law for the same direction ([`crate::stochastic::escape_table`]).
 
-use super::{history_observed, stream_prefix, Fate, HitInfo, ModelSetup, Tracker};
+use super::{history_observed, stream_prefix, Fate, HitInfo, ModelSetup, Realisations};
 use crate::angles::{gamma_from_normal, incident_angles};
 use crate::incidence::IncidentCondition;
 use crate::rng;
@@ -16,9 +16,10 @@ use rayon::prelude::*;
 
 /// The escape counts of histories `0..count` of every condition: the same histories (same
 /// streams) as `rebound deterministic` of the same case and seed. Exact integer sums, so
-/// the counts are the same for any thread count. Lost histories are not counted.
+/// the counts are the same for any thread count. Lost histories are not counted. History `i`
+/// bounces on the realisation `deterministic` gives it ([`Realisations::for_history`]).
 pub fn escape_counts(
-    tracker: &Tracker<'_>,
+    surfaces: &Realisations<'_>,
     setup: &ModelSetup,
     conditions: &[IncidentCondition],
     count: u64,
@@ -40,6 +41,7 @@ pub fn escape_counts(
                 },
                 |(mut counts, mut hits), i| {
                     hits.clear();
+                    let tracker = surfaces.for_history(i);
                     let h = history_observed(tracker, setup, cond, &prefix, i, |hit: &HitInfo| {
                         hits.push((hit.u_in, hit.u_out, hit.normal))
                     });

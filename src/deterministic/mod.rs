@@ -39,6 +39,54 @@ pub struct ModelSetup {
     pub spin: SpinLaw,
 }
 
+/// The surface realisations a run bounces on (`[deterministic] surfaces`): history `i` of
+/// every condition on realisation `i mod N`. The assignment depends on the history alone, so
+/// a run is the same for any thread count, shard split or target standard error, and every
+/// block samples every realisation. One realisation is the run on a single surface.
+pub struct Realisations<'a> {
+    trackers: Vec<Tracker<'a>>,
+}
+
+impl<'a> Realisations<'a> {
+    /// At least one tracker; they must share the periods the histories start over.
+    pub fn new(trackers: Vec<Tracker<'a>>) -> crate::error::Result<Self> {
+        let Some(first) = trackers.first() else {
+            return Err(crate::error::Error::Internal(
+                "no surface realisation".into(),
+            ));
+        };
+        let periods = first.periods();
+        if trackers.iter().any(|t| t.periods() != periods) {
+            return Err(crate::error::Error::Internal(
+                "surface realisations of different periods".into(),
+            ));
+        }
+        Ok(Realisations { trackers })
+    }
+
+    /// The realisation history `i` bounces on.
+    #[inline]
+    pub fn for_history(&self, i: u64) -> &Tracker<'a> {
+        &self.trackers[(i % self.trackers.len() as u64) as usize]
+    }
+
+    /// How many realisations.
+    pub fn len(&self) -> usize {
+        self.trackers.len()
+    }
+
+    /// Never true ([`Realisations::new`] refuses none).
+    pub fn is_empty(&self) -> bool {
+        self.trackers.is_empty()
+    }
+}
+
+impl<'a> From<Tracker<'a>> for Realisations<'a> {
+    fn from(t: Tracker<'a>) -> Self {
+        Realisations { trackers: vec![t] }
+    }
+}
+
 /// History `i` of condition `cond` (index `cond_index` in the case): its start `(x, z)`
 /// (uniform over the period) and horizontal speed come from its own stream
 /// `rng::stream(seed, &[DETERMINISTIC, cond_index, i])`, so it does not depend on the
@@ -137,7 +185,7 @@ const CHUNK: u64 = 4096;
 /// that a run with fewer blocks than threads (a few thousand particles) still uses every
 /// thread, and the tally is the same for any thread count.
 pub fn fill_block(
-    tracker: &Tracker<'_>,
+    surfaces: &Realisations<'_>,
     setup: &ModelSetup,
     cond: &IncidentCondition,
     cond_index: u64,
@@ -147,7 +195,7 @@ pub fn fill_block(
 ) {
     let prefix = stream_prefix(seed, cond_index);
     if let Some(erosion) = &setup.erosion {
-        return fill_block_eroding(tracker, setup, erosion, cond, &prefix, (start, end), block);
+        return fill_block_eroding(surfaces, setup, erosion, cond, &prefix, (start, end), block);
     }
     let mut lo = start;
     while lo < end {
@@ -155,7 +203,7 @@ pub fn fill_block(
         let fates: Vec<Result<Outcome, LostReason>> = (lo..hi)
             .into_par_iter()
             .map(|i| {
-                let h = history_at(tracker, setup, cond, &prefix, i);
+                let h = history_at(surfaces.for_history(i), setup, cond, &prefix, i);
                 match h.fate {
                     Fate::Lost(r) => Err(r),
                     Fate::Escaped => {
@@ -188,7 +236,7 @@ struct ErodedChunk {
 /// impact removes (at the collision's own angle to the facet hit and speed), and its local
 /// impact angle to the `impact_angle_local` PDF (for followed histories only).
 fn fill_block_eroding(
-    tracker: &Tracker<'_>,
+    surfaces: &Realisations<'_>,
     setup: &ModelSetup,
     erosion: &ErosionSetup,
     cond: &IncidentCondition,
@@ -206,6 +254,7 @@ fn fill_block_eroding(
             .fold(ErodedChunk::default, |mut part, i| {
                 let mut per_mass = 0.0;
                 let angles = &mut part.angles;
+                let tracker = surfaces.for_history(i);
                 let h = history_observed(tracker, setup, cond, prefix, i, |hit| {
                     let (a, v) = erosion.impact(&hit.u_in, hit.u_in.norm(), &hit.normal);
                     per_mass += v;

@@ -200,6 +200,61 @@ pub fn generate_surface(
     Ok(field)
 }
 
+/// The seed of surface realisation `r` of a run seeded `seed` (`[deterministic] surfaces`):
+/// realisation 0 is the run's own surface, so one realisation is the run without the key;
+/// the others come from their own stream, `rng::stream(seed, &[SURFACE_REALISATION, r])`.
+pub fn realisation_seed(seed: u64, r: u32) -> u64 {
+    use rand::RngCore;
+    match r {
+        0 => seed,
+        _ => crate::rng::stream(seed, &[crate::rng::domain::SURFACE_REALISATION, r as u64])
+            .next_u64(),
+    }
+}
+
+/// Refuses `surfaces` realisations of `plan` that would not fit in memory together: all are
+/// kept (a sphere's dilated copy instead of the surface), and one generation's work space
+/// is needed on top.
+pub fn require_realisations(plan: &SurfacePlan, surfaces: u32) -> Result<()> {
+    let spec = plan.spec();
+    let bytes = (surfaces.max(1) as u64 - 1)
+        .saturating_mul(crate::surface::generate::field_bytes(spec))
+        .saturating_add(crate::surface::generate::generation_bytes(spec));
+    crate::memory::require(
+        "deterministic.surfaces",
+        surfaces,
+        bytes,
+        &format!("{surfaces} realisations of the {}-node surface", spec.nodes),
+    )
+}
+
+/// The `surfaces` realisations of a run, built one after the other with
+/// [`realisation_seed`]; a height file is one realisation (`prepare` refuses more).
+/// Refused before generating when the realisations would not fit in memory together.
+pub fn build_surfaces(
+    plan: Option<&SurfacePlan>,
+    file: Option<&Path>,
+    sphere_diameter_m: Option<f64>,
+    seed: u64,
+    triangulation: Triangulation,
+    surfaces: u32,
+) -> Result<Vec<BuiltSurface>> {
+    if surfaces > 1 {
+        let Some(plan) = plan else {
+            return Err(Error::Internal(
+                "surface realisations of a height file".into(),
+            ));
+        };
+        require_realisations(plan, surfaces)?;
+    }
+    (0..surfaces)
+        .map(|r| {
+            let seed = realisation_seed(seed, r);
+            build_surface(plan, file, sphere_diameter_m, seed, triangulation)
+        })
+        .collect()
+}
+
 /// Reads a height field saved by `rebound surface --heights FILE`; every problem is a
 /// one-line input error naming the file.
 pub fn read_surface(path: &Path) -> Result<HeightField> {
@@ -278,6 +333,47 @@ pub fn build_surface(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Realisation 0 is the run's own surface; the others are distinct and follow from
+    /// the seed alone.
+    #[test]
+    fn realisation_seeds() {
+        assert_eq!(realisation_seed(2021, 0), 2021);
+        let seeds: std::collections::BTreeSet<u64> =
+            (0..200).map(|r| realisation_seed(2021, r)).collect();
+        assert_eq!(seeds.len(), 200);
+        assert_eq!(realisation_seed(2021, 5), realisation_seed(2021, 5));
+        assert_ne!(realisation_seed(2021, 5), realisation_seed(2022, 5));
+    }
+
+    /// Several realisations: different surfaces of one grid, the first the single run's.
+    #[test]
+    fn built_realisations() {
+        let plan = SurfacePlan::auto(
+            5f64.to_radians(),
+            5f64.to_radians(),
+            &SceneOptions {
+                side_per_corr_length: 4.0,
+                ..SceneOptions::default()
+            },
+        )
+        .unwrap();
+        let tri = Triangulation::Alternating;
+        let all = build_surfaces(Some(&plan), None, None, 9, tri, 3).unwrap();
+        let one = build_surface(Some(&plan), None, None, 9, tri).unwrap();
+        assert_eq!(all.len(), 3);
+        assert_eq!(all[0].field.heights, one.field.heights);
+        assert_ne!(all[1].field.heights, all[0].field.heights);
+        assert_ne!(all[2].field.heights, all[1].field.heights);
+        assert!(all
+            .iter()
+            .all(|b| (b.field.nx, b.field.nz) == (one.field.nx, one.field.nz)));
+        // Far more realisations than memory holds: refused before generating, naming the key.
+        let e = require_realisations(&plan, u32::MAX)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("deterministic.surfaces"), "{e}");
+    }
 
     #[test]
     fn smooth_numbers() {

@@ -136,6 +136,11 @@ pub const VS_REFERENCE: &str = "vs-reference";
 pub const CALIBRATION_TABLE: &str = "table";
 /// Calibration: `deterministic` on another surface, compared with the first.
 pub const CALIBRATION_NOISE: &str = "noise";
+/// Calibration: the runs against an ensemble of surfaces (`[deterministic] surfaces`), in
+/// this directory under each scene's, laid out like the single-surface ones.
+pub const CALIBRATION_ENSEMBLE: &str = "ensemble";
+/// Calibration: the ensemble's surface realisations (full mode; quick mode runs two).
+pub const CALIBRATION_SURFACES: &str = "16";
 
 /// Mirror symmetry: the triangulations run (every one the case key accepts), one directory
 /// each under [`MIRROR`].
@@ -164,7 +169,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 46] = [
+pub const SHELL: [(&str, &[&str]); 48] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -196,6 +201,8 @@ pub const SHELL: [(&str, &[&str]); 46] = [
     ("VS_REFERENCE", &[VS_REFERENCE]),
     ("CALIBRATION_TABLE", &[CALIBRATION_TABLE]),
     ("CALIBRATION_NOISE", &[CALIBRATION_NOISE]),
+    ("CALIBRATION_ENSEMBLE", &[CALIBRATION_ENSEMBLE]),
+    ("CALIBRATION_SURFACES", &[CALIBRATION_SURFACES]),
     ("CALIBRATION_SCENES", &CALIBRATION_SCENES),
     ("EROSION_WALLS", &EROSION_WALLS),
     ("EROSION_BETAS_DEG", &EROSION_BETAS_DEG),

@@ -65,7 +65,7 @@ pub const Q_EDGES: [f64; 3] = [-1.25, -0.5, 0.25];
 /// Cells of the element correction.
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
-pub const MAGIC: &str = "# roughwall escape table v3";
+pub const MAGIC: &str = "# roughwall escape table v4";
 /// What every version's first line starts with.
 const MAGIC_STEM: &str = "# roughwall escape table v";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
@@ -245,14 +245,37 @@ pub struct EscapeTable {
     pub source: String,
 }
 
+/// The ratio `d/m` of a row's counts at cell `j`, pooled over the narrowest window
+/// `j−k..=j+k` (clipped to the row) that holds [`ELEMENT_MIN_COUNT`] model draws; 1 (the
+/// shadow law kept) when the whole row holds fewer.
+fn window_ratio(d: &[u64], m: &[u64], j: usize) -> f64 {
+    let (mut sd, mut sm) = (d[j], m[j]);
+    let mut k = 0;
+    while sm < ELEMENT_MIN_COUNT {
+        k += 1;
+        if k > j && j + k >= m.len() {
+            return 1.0;
+        }
+        for i in [j.checked_sub(k), Some(j + k).filter(|&i| i < m.len())]
+            .into_iter()
+            .flatten()
+        {
+            sd += d[i];
+            sm += m[i];
+        }
+    }
+    sd as f64 / sm as f64
+}
+
 impl EscapeTable {
     /// The table of `counts`. A cell with fewer than [`MIN_COUNT`] collisions takes the
     /// value of the nearest cell along `x_in` (same stage and `x_out`) that has enough; a
     /// later stage's column with none takes the later stages' pooled counts (nearest along
     /// `x_in`), then the first stage's filled value, and a column empty everywhere is 1 (the
     /// rebound is steep enough that no run saw it trapped). An element cell with fewer than
-    /// [`ELEMENT_MIN_COUNT`] draws takes, for a later stage, the later stages' pooled ratio,
-    /// else 1.
+    /// [`ELEMENT_MIN_COUNT`] draws takes, for a later stage, the later stages' pooled counts;
+    /// one still sparse, the ratio over the narrowest window of its row that has enough
+    /// ([`window_ratio`]); a row without enough draws anywhere keeps the shadow law (1).
     pub fn from_counts(counts: EscapeCounts, source: &str) -> EscapeTable {
         let mut p = vec![f64::NAN; CELLS];
         // The later stages pooled: the fallback of a sparse later cell.
@@ -292,27 +315,35 @@ impl EscapeTable {
                 *v = 1.0;
             }
         }
-        // A later stage's sparse cell takes the later stages' pooled ratio.
+        // A later stage's sparse cell takes the later stages' pooled counts; a cell still
+        // sparse, the counts of the narrowest window of its row (centred, along s) that
+        // holds enough draws. The shadow law's tails are where cells are sparse, and there
+        // the deterministic surface has fewer steep elements than the shadow law (the
+        // ratio falls to ~0.3 five Δγ out): a sparse cell must not fall back to 1.
         let plane = X_IN_BINS * G_BINS;
-        let pooled = |c: usize, counts: &[u64]| -> u64 {
-            (1..SLICES).map(|k| counts[k * plane + c % plane]).sum()
-        };
+        let later_d: Vec<u64> = (0..plane)
+            .map(|c| {
+                (1..SLICES)
+                    .map(|k| counts.element_deterministic[k * plane + c])
+                    .sum()
+            })
+            .collect();
+        let later_m: Vec<u64> = (0..plane)
+            .map(|c| {
+                (1..SLICES)
+                    .map(|k| counts.element_model[k * plane + c])
+                    .sum()
+            })
+            .collect();
         let weight: Vec<f64> = (0..ELEMENT_CELLS)
             .map(|c| {
-                let (d, m) = (counts.element_deterministic[c], counts.element_model[c]);
-                let (d, m) = if m >= ELEMENT_MIN_COUNT || c < plane {
-                    (d, m)
+                let (own_d, own_m) = (&counts.element_deterministic, &counts.element_model);
+                let (d, m, base) = if own_m[c] >= ELEMENT_MIN_COUNT || c < plane {
+                    (own_d, own_m, c - c % G_BINS)
                 } else {
-                    (
-                        pooled(c, &counts.element_deterministic),
-                        pooled(c, &counts.element_model),
-                    )
+                    (&later_d, &later_m, c % plane - c % G_BINS)
                 };
-                if m >= ELEMENT_MIN_COUNT {
-                    d as f64 / m as f64
-                } else {
-                    1.0
-                }
+                window_ratio(&d[base..base + G_BINS], &m[base..base + G_BINS], c % G_BINS)
             })
             .collect();
         let row_max = weight
@@ -522,9 +553,11 @@ impl EscapeTable {
         let table = EscapeTable::from_counts(counts, &source);
         // The written values must be the ones the counts give (a hand-edited or corrupted
         // table is refused rather than silently recomputed).
+        // Compared as written (six decimals): a value on a rounding boundary must not differ
+        // by the last bit of a subtraction.
         let edited = |kind: &str, written: &[f64], computed: &[f64]| {
             (0..written.len())
-                .find(|&k| (written[k] - computed[k]).abs() > 5e-7)
+                .find(|&k| format!("{:.6}", written[k]) != format!("{:.6}", computed[k]))
                 .map(|k| {
                     Error::Input(format!(
                         "{what}: {kind} row {} gives {} but its counts give {:.6} (edited or corrupted)",
@@ -745,7 +778,7 @@ mod tests {
         let fields: Vec<&str> = row.split(',').collect();
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v3", "v2", 1), "another format"),
+            (good.replacen("v4", "v3", 1), "another format"),
             (
                 good.replacen("# roughwall", "# other", 1),
                 "not an escape table",
@@ -868,6 +901,51 @@ mod tests {
                 t.element_weight(Stage::FIRST, x, g) <= t.element_bound(Stage::FIRST, x) + 1e-12
             );
         }
+    }
+
+    /// A sparse cell takes the ratio of the narrowest window around it that holds enough
+    /// draws, so the shadow law's thin tail keeps the trend of its dense neighbours instead of
+    /// jumping back to 1; a row with too few draws in all keeps the shadow law.
+    #[test]
+    fn sparse_element_cells_take_their_window_ratio() {
+        let n = ELEMENT_MIN_COUNT;
+        // A dense cell stands alone.
+        assert_eq!(window_ratio(&[3 * n, 0, 0], &[2 * n, 0, 0], 0), 1.5);
+        // The tail: cell 3 has 100 draws; the window 2..=4 (clipped at the row's end: 2..=3
+        // and then 1..=3) first holds enough at 1..=3.
+        let d = [0, n / 2, n / 4, 30];
+        let m = [0, n, n / 2, 100];
+        let r = window_ratio(&d, &m, 3);
+        let want = (n / 2 + n / 4 + 30) as f64 / (n + n / 2 + 100) as f64;
+        assert_eq!(r, want);
+        assert!(r < 0.6, "{r}");
+        // Too few in the whole row: the shadow law.
+        assert_eq!(window_ratio(&[5, 5, 5], &[10, 10, 10], 1), 1.0);
+        // Through the table: a thin tail beyond s = 4 keeps the dense cells' ratio 0.5.
+        let mut c = EscapeCounts::default();
+        for k in 0..125 {
+            let s = (k as f64 + 0.5) * DG;
+            let cell = element_cell(Stage::FIRST, -1.25, s - 1.25).unwrap();
+            let m = if s < 4.0 { 4 * n } else { 10 };
+            c.element_model[cell] = m;
+            c.element_deterministic[cell] = m / 2;
+        }
+        let t = EscapeTable::from_counts(c, "tail");
+        assert!((t.element_weight(Stage::FIRST, -1.25, 6.0 - 1.25) - 0.5).abs() < 1e-3);
+    }
+
+    /// A weight on a six-decimal rounding boundary (16965/16000 = 1.0603125) reads back: the
+    /// check compares the values as written, not by a tolerance the rounding can exceed.
+    #[test]
+    fn a_weight_on_a_rounding_boundary_reads_back() {
+        let mut c = EscapeCounts::default();
+        let cell = element_cell(Stage::FIRST, -1.25, 1.0).unwrap();
+        c.element_deterministic[cell] = 16965;
+        c.element_model[cell] = 16000;
+        c.collisions[0] = 1;
+        let t = EscapeTable::from_counts(c, "boundary");
+        let back = EscapeTable::parse(&t.to_csv(), "boundary").unwrap();
+        assert_eq!(back.counts(), t.counts());
     }
 
     #[test]

@@ -117,6 +117,16 @@ pub fn generate(p: &SurfaceSpec, seed: u64) -> HeightField {
     }
 }
 
+/// Bytes of the generated height field alone (a line for 1-D roughness, else `n²` nodes).
+pub fn field_bytes(p: &SurfaceSpec) -> u64 {
+    let n = p.nodes.max(1) as u64;
+    let flat = p.rms_height_m == 0.0;
+    match (p.corr_length_x_m, p.corr_length_z_m) {
+        (None, None) | (Some(_), None) if !flat => 8 * n,
+        _ => 8 * n * n,
+    }
+}
+
 /// Peak memory of [`generate`] for `p` in bytes (heights plus the half-spectrum).
 pub fn generation_bytes(p: &SurfaceSpec) -> u64 {
     let n = p.nodes.max(1) as u64;

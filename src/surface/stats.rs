@@ -765,6 +765,27 @@ fn height_moments(h: &[f64]) -> (f64, f64) {
 /// deviations the surface really has (Radenkovic & Simonin 2021, Sec. 2.2). Rows in
 /// parallel, summed in row order (the same bits for any thread count).
 pub fn measured_deviations(f: &HeightField) -> crate::wall::Deviations {
+    pooled_deviations(&[f])
+}
+
+/// [`measured_deviations`] of several realisations taken together: the RMS over all their
+/// triangles (for one surface, the same bits as `measured_deviations`).
+pub fn pooled_deviations(fields: &[&HeightField]) -> crate::wall::Deviations {
+    let (mut sx, mut sz, mut n) = (0.0, 0.0, 0.0);
+    for f in fields {
+        let (x, z) = squared_angle_sums(f);
+        sx += x;
+        sz += z;
+        n += (2 * f.nx * f.nz) as f64;
+    }
+    crate::wall::Deviations {
+        delta_xi: (sx / n).sqrt(),
+        delta_zeta: (sz / n).sqrt(),
+    }
+}
+
+/// The sums of `(ξ − 90°)²` and `(ζ − 90°)²` over a surface's triangles.
+fn squared_angle_sums(f: &HeightField) -> (f64, f64) {
     use rayon::prelude::*;
     let rows: Vec<(f64, f64)> = (0..f.nz)
         .into_par_iter()
@@ -782,12 +803,7 @@ pub fn measured_deviations(f: &HeightField) -> crate::wall::Deviations {
             (sx, sz)
         })
         .collect();
-    let (sx, sz) = rows.iter().fold((0.0, 0.0), |a, r| (a.0 + r.0, a.1 + r.1));
-    let n = (2 * f.nx * f.nz) as f64;
-    crate::wall::Deviations {
-        delta_xi: (sx / n).sqrt(),
-        delta_zeta: (sz / n).sqrt(),
-    }
+    rows.iter().fold((0.0, 0.0), |a, r| (a.0 + r.0, a.1 + r.1))
 }
 
 #[cfg(test)]
@@ -803,6 +819,29 @@ mod tests {
             heights,
             triangulation: Default::default(),
         }
+    }
+
+    /// Pooled deviations are the RMS over all triangles: for two surfaces of one grid, the
+    /// root of the mean of their squared deviations; for one, its own bits.
+    #[test]
+    fn pooled_deviations_are_the_rms_over_all_realisations() {
+        let wavy = |a: f64, b: f64| {
+            let h = (0..64)
+                .map(|k| {
+                    let (i, j) = ((k % 8) as f64, (k / 8) as f64);
+                    a * (0.8 * i).sin() + b * (1.3 * j).cos() + 0.1 * a * (i * j).sin()
+                })
+                .collect();
+            field(8, 8, h)
+        };
+        let (f, g) = (wavy(0.05, 0.02), wavy(0.01, 0.09));
+        let (df, dg) = (measured_deviations(&f), measured_deviations(&g));
+        assert_eq!(pooled_deviations(&[&f]), df);
+        let p = pooled_deviations(&[&f, &g]);
+        let rms = |a: f64, b: f64| ((a * a + b * b) / 2.0).sqrt();
+        assert!((p.delta_xi - rms(df.delta_xi, dg.delta_xi)).abs() < 1e-14);
+        assert!((p.delta_zeta - rms(df.delta_zeta, dg.delta_zeta)).abs() < 1e-14);
+        assert!(df.delta_zeta < p.delta_zeta && p.delta_zeta < dg.delta_zeta);
     }
 
     #[test]

@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::figures;
 use crate::incidence::IncidentCondition;
 use crate::output::{prepare_out_dir, Manifest};
-use crate::surface::stats::measured_deviations;
+use crate::surface::stats::pooled_deviations;
 use crate::surface::HeightField;
 use crate::tally::engine::ConditionStats;
 use crate::tally::schema::write_tables;
@@ -20,15 +20,18 @@ use std::path::Path;
 use super::{f, round};
 
 /// `surface_choice` of `run.toml`: where the surface came from, its grid and (`measure`)
-/// the deviations it has.
+/// the deviations it has (over all its realisations).
 pub fn surface_table(
     plan: Option<&SurfacePlan>,
     file: Option<&Path>,
-    field: &HeightField,
+    fields: &[&HeightField],
     source: &str,
     opt: &SceneOptions,
     measure: bool,
 ) -> toml::Value {
+    let Some(&field) = fields.first() else {
+        return toml::Value::Table(toml::Table::new());
+    };
     let mut t = toml::Table::new();
     t.insert("source".into(), source.into());
     if let Some(p) = file {
@@ -70,8 +73,13 @@ pub fn surface_table(
     t.insert("grid_nx".into(), toml::Value::Integer(field.nx as i64));
     t.insert("grid_nz".into(), toml::Value::Integer(field.nz as i64));
     t.insert("triangulation".into(), field.triangulation.name().into());
+    if fields.len() > 1 {
+        // The realisations' seeds follow from the run's (`scene::realisation_seed`).
+        t.insert("surfaces".into(), toml::Value::Integer(fields.len() as i64));
+    }
     if measure {
-        let m = measured_deviations(field);
+        // Over all realisations: the deviations of the ensemble the histories saw.
+        let m = pooled_deviations(fields);
         t.insert(
             "measured_delta_xi_deg".into(),
             f(round(m.delta_xi.to_degrees(), 4)),

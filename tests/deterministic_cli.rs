@@ -311,13 +311,7 @@ fn surface_realisations() {
         })
         .collect();
     let merged = dir.join("merged");
-    let mut args = vec![
-        "merge".to_string(),
-        "--out".into(),
-        merged.display().to_string(),
-    ];
-    args.extend(shards.iter().map(|d| d.display().to_string()));
-    rebound(&args).ok();
+    merge_shards(&merged, &shards);
     assert_eq!(csv_files(&three), csv_files(&merged));
     let measured = |d: &Path| -> (String, Vec<f64>) {
         let m = std::fs::read_to_string(d.join("run.toml")).unwrap();

@@ -265,13 +265,7 @@ fn erosion_outputs_are_byte_identical_across_threads_and_shards() {
             ));
         }
         let merged = tmp.path().join(format!("{command}-merged"));
-        let mut args = vec![
-            "merge".to_string(),
-            "--out".into(),
-            merged.display().to_string(),
-        ];
-        args.extend(shards.iter().map(|d| d.display().to_string()));
-        rebound(&args).ok();
+        merge_shards(&merged, &shards);
         assert_eq!(csv_files(&one), csv_files(&merged), "{command}");
         assert!(std::fs::read_to_string(merged.join("summary.csv"))
             .unwrap()

@@ -64,13 +64,7 @@ fn one_and_merged(dir: &Path, case: &Path, command: &str, n: u32) -> (PathBuf, P
         shards.push(d);
     }
     let merged = out(dir, &format!("{command}-merged"));
-    let mut args = vec![
-        "merge".to_string(),
-        "--out".into(),
-        merged.display().to_string(),
-    ];
-    args.extend(shards.iter().map(|d| d.display().to_string()));
-    rebound(&args).ok();
+    merge_shards(&merged, &shards);
     (one, merged)
 }
 

@@ -321,20 +321,15 @@ impl EscapeTable {
         // the deterministic surface has fewer steep elements than the shadow law (the
         // ratio falls to ~0.3 five Δγ out): a sparse cell must not fall back to 1.
         let plane = X_IN_BINS * G_BINS;
-        let later_d: Vec<u64> = (0..plane)
-            .map(|c| {
-                (1..SLICES)
-                    .map(|k| counts.element_deterministic[k * plane + c])
-                    .sum()
-            })
-            .collect();
-        let later_m: Vec<u64> = (0..plane)
-            .map(|c| {
-                (1..SLICES)
-                    .map(|k| counts.element_model[k * plane + c])
-                    .sum()
-            })
-            .collect();
+        let later = |v: &[u64]| -> Vec<u64> {
+            (0..plane)
+                .map(|c| (1..SLICES).map(|k| v[k * plane + c]).sum())
+                .collect()
+        };
+        let (later_d, later_m) = (
+            later(&counts.element_deterministic),
+            later(&counts.element_model),
+        );
         let weight: Vec<f64> = (0..ELEMENT_CELLS)
             .map(|c| {
                 let (own_d, own_m) = (&counts.element_deterministic, &counts.element_model);

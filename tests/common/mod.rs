@@ -169,6 +169,18 @@ impl Default for Dir {
     }
 }
 
+/// Runs `rebound merge --out OUT SHARD…`, which must succeed; returns `out`.
+pub fn merge_shards(out: &Path, shards: &[PathBuf]) -> PathBuf {
+    let mut args = vec![
+        "merge".to_string(),
+        "--out".into(),
+        out.display().to_string(),
+    ];
+    args.extend(shards.iter().map(|d| d.display().to_string()));
+    rebound(&args).ok();
+    out.to_path_buf()
+}
+
 /// Runs `rebound COMMAND --case CASE --out OUT EXTRA…` and returns what it gave.
 pub fn rebound_case(command: &str, case: &Path, out: &Path, extra: &[&str]) -> Run {
     let mut args = vec![

@@ -154,10 +154,10 @@ fn effective_wall(
         let dil =
             crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
         let e = pooled_deviations(&[&dil.field]);
-        nominal_sq.0 += d.delta_xi.powi(2);
-        nominal_sq.1 += d.delta_zeta.powi(2);
-        eff_sq.0 += e.delta_xi.powi(2);
-        eff_sq.1 += e.delta_zeta.powi(2);
+        nominal_sq.0 += d.delta_xi * d.delta_xi;
+        nominal_sq.1 += d.delta_zeta * d.delta_zeta;
+        eff_sq.0 += e.delta_xi * e.delta_xi;
+        eff_sq.1 += e.delta_zeta * e.delta_zeta;
         contact += dil.contact_fraction;
     }
     // For one realisation its own deviations, bit for bit (√(x²) = x in IEEE arithmetic).

@@ -34,7 +34,9 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     };
     check_out(&ctx.out_dir, "--out")?;
     let n = p.options.surfaces;
-    require_realisations(plan, n)?;
+    if n > 1 {
+        require_realisations(plan, n)?;
+    }
     let fields = (0..n)
         .map(|r| generate_surface(plan, realisation_seed(ctx.seed, r), p.options.triangulation))
         .collect::<Result<Vec<_>>>()?;

@@ -381,7 +381,8 @@ pub fn p_single_model(dev: &Deviations, psi: f64, alpha_out: f64, beta_out: f64)
 }
 
 /// Runs `count` histories of one condition in parallel and keeps them all (see
-/// [`ConditionRun`]); the same histories as a tallied run of the same seed.
+/// [`ConditionRun`]); the same histories as a tallied run of the same seed on one surface
+/// (`[deterministic] surfaces = 1`).
 pub fn run_condition(
     tracker: &Tracker<'_>,
     setup: &ModelSetup,

@@ -44,7 +44,7 @@ pub const CELLS: usize = SLICES * X_IN_BINS * X_OUT_BINS;
 /// `√(0.25/50) ≈ 0.07`); sparser cells take their neighbour's value.
 pub const MIN_COUNT: u64 = 50;
 /// Shadow-law draws a first-element cell needs for its weight (the weight's relative
-/// noise is about `√(2/n)`: 4.5 % here); sparser cells keep the shadow law (weight 1).
+/// noise is about `√(2/n)`: 4.5 % here); sparser cells pool neighbours ([`window_ratio`]).
 pub const ELEMENT_MIN_COUNT: u64 = 1000;
 /// Lower edge of the element's reduced local impact angle `s = (γ − α)/Δγ(β)` (`α` clamped
 /// to the `x_in` range): an element the particle can reach has `s > 0`, and the shadow law

@@ -117,7 +117,11 @@ impl Incidence {
             beta,
             sin_cos_beta: beta.sin_cos(),
             x_in: alpha / moments.delta_gamma(),
-            rms_cos: rms_cos(moments.var_a),
+            // Only `calibrated` shrinks γ*: the other models do not pay for the exp.
+            rms_cos: match variant.kind {
+                VariantKind::Calibrated => rms_cos(moments.var_a),
+                _ => 1.0,
+            },
             moments,
             sampler,
             variant,

@@ -145,27 +145,19 @@ fn effective_wall(
     // Over the realisations `deterministic` bounces on (`[deterministic] surfaces`), one
     // at a time.
     use crate::deterministic::scene::{generate_surface, realisation_seed};
-    use crate::surface::stats::pooled_deviations;
+    use crate::surface::stats::AngleSums;
     let n = det.options.surfaces;
-    let (mut nominal_sq, mut eff_sq, mut contact) = ((0.0, 0.0), (0.0, 0.0), 0.0);
+    let (mut nominal, mut eff, mut contact) = (AngleSums::default(), AngleSums::default(), 0.0);
     for r in 0..n {
         let field = generate_surface(plan, realisation_seed(seed, r), det.options.triangulation)?;
-        let d = pooled_deviations(&[&field]);
+        nominal.add(&field);
         let dil =
             crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
-        let e = pooled_deviations(&[&dil.field]);
-        nominal_sq.0 += d.delta_xi * d.delta_xi;
-        nominal_sq.1 += d.delta_zeta * d.delta_zeta;
-        eff_sq.0 += e.delta_xi * e.delta_xi;
-        eff_sq.1 += e.delta_zeta * e.delta_zeta;
+        eff.add(&dil.field);
         contact += dil.contact_fraction;
     }
-    // For one realisation its own deviations, bit for bit (√(x²) = x in IEEE arithmetic).
-    let rms = |(x, z): (f64, f64)| crate::wall::Deviations {
-        delta_xi: (x / n as f64).sqrt(),
-        delta_zeta: (z / n as f64).sqrt(),
-    };
-    let (nominal, eff, contact_fraction) = (rms(nominal_sq), rms(eff_sq), contact / n as f64);
+    let (nominal, eff, contact_fraction) =
+        (nominal.deviations(), eff.deviations(), contact / n as f64);
     if !(eff.delta_xi.is_finite() && eff.delta_zeta.is_finite()) {
         return Err(Error::Model(format!(
             "`{key}`: the deviations of the sphere's centre surface are not finite numbers"
@@ -189,6 +181,9 @@ fn effective_wall(
         "how".into(),
         "deviations of the sphere's centre surface (paraboloid dilation) on the surface deterministic generates for this case and seed".into(),
     );
+    if n > 1 {
+        t.insert("surfaces".into(), toml::Value::Integer(n as i64));
+    }
     Ok(Some((eff, t)))
 }
 

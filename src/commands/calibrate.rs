@@ -5,8 +5,7 @@ use crate::cli::CalibrateArgs;
 use crate::commands::{begin_out, context, counted, grouped, warn, Summary, Wrote};
 use roughwall::case::{builtin, deterministic::prepare};
 use roughwall::deterministic::calibrate::escape_counts;
-use roughwall::deterministic::scene::{generate_surface, realisation_seed, require_realisations};
-use roughwall::deterministic::{Realisations, Tracker};
+use roughwall::deterministic::scene::{build_surfaces, realisations};
 use roughwall::error::{Error, Result};
 use roughwall::output::out_dir::check_out;
 use roughwall::output::write_atomic;
@@ -34,25 +33,10 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
     };
     check_out(&ctx.out_dir, "--out")?;
     let n = p.options.surfaces;
-    if n > 1 {
-        require_realisations(plan, n)?;
-    }
-    let fields = (0..n)
-        .map(|r| generate_surface(plan, realisation_seed(ctx.seed, r), p.options.triangulation))
-        .collect::<Result<Vec<_>>>()?;
-    let fields: Vec<&HeightField> = fields.iter().collect();
+    let built = build_surfaces(Some(plan), None, None, ctx.seed, p.options.triangulation, n)?;
+    let fields: Vec<&HeightField> = built.iter().map(|b| &b.field).collect();
     warn(fields[0].triangulation_seam());
-    let trackers = fields
-        .iter()
-        .map(|&field| {
-            Tracker::new(field, p.options.max_collisions).map_err(|e| match e {
-                // A surface this tool generated and the tracker refuses: a bug, not the input.
-                Error::Input(m) => Error::Internal(format!("generated surface: {m}")),
-                e => e,
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let surfaces = Realisations::new(trackers)?;
+    let surfaces = realisations(&built, p.options.max_collisions, None)?;
     // The reduced angles use the deviations the surfaces have, not the ones they were meant
     // to have: the table must not absorb the surface's discretisation (a few per cent).
     let measured = pooled_deviations(&fields);

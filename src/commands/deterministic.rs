@@ -5,9 +5,9 @@
 use crate::cli::DeterministicArgs;
 use crate::commands::{begin_out, context, warn, Summary};
 use roughwall::case::{builtin, deterministic::prepare};
-use roughwall::deterministic::scene::{build_surfaces, BuiltSurface, SphereDilation};
-use roughwall::deterministic::{fill_block, Realisations, Tracker};
-use roughwall::error::{Error, Result};
+use roughwall::deterministic::fill_block;
+use roughwall::deterministic::scene::{build_surfaces, realisations, BuiltSurface, SphereDilation};
+use roughwall::error::Result;
 use roughwall::output::out_dir::{check_distinct, check_out};
 use roughwall::runner;
 use roughwall::surface::HeightField;
@@ -58,20 +58,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     let fields: Vec<&HeightField> = built.iter().map(|b| &b.field).collect();
     // The realisations share the grid: one warning for all.
     warn(fields[0].triangulation_seam());
-    let trackers = fields
-        .iter()
-        .map(|&field| {
-            Tracker::new(field, p.options.max_collisions).map_err(|e| match (e, file) {
-                (Error::Input(m), Some(path)) => {
-                    Error::Input(format!("--surface `{}`: {m}", path.display()))
-                }
-                // A surface this tool generated and the tracker refuses: a bug, not the input.
-                (Error::Input(m), None) => Error::Internal(format!("generated surface: {m}")),
-                (e, _) => e,
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let surfaces = Realisations::new(trackers)?;
+    let surfaces = realisations(&built, p.options.max_collisions, file)?;
     // Merged shards report shard 1's table: the others need not measure again.
     let measure = plan.shard.is_none_or(|s| s.index == 1);
     let source = built[0].source;

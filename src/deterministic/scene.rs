@@ -8,6 +8,7 @@
 //! chosen from the correlation lengths: spacing `≤ c_L,min / spacing_per_corr_length`,
 //! side `≥ side_per_corr_length · c_L,max`, with an FFT-friendly node count.
 
+use super::{Realisations, Tracker};
 use crate::error::{Error, Result};
 use crate::surface::heights_io::read_heights;
 use crate::surface::{generate, HeightField, SurfaceSpec, Triangulation};
@@ -214,18 +215,48 @@ pub fn realisation_seed(seed: u64, r: u32) -> u64 {
 
 /// Refuses `surfaces` realisations of `plan` that would not fit in memory together: all are
 /// kept (a sphere's dilated copy instead of the surface), and one generation's work space
-/// is needed on top.
-pub fn require_realisations(plan: &SurfacePlan, surfaces: u32) -> Result<()> {
+/// is needed on top — and, for a sphere, the dilation's (`surface::dilation::BYTES_PER_NODE`
+/// a node) beside the last surface.
+pub fn require_realisations(plan: &SurfacePlan, surfaces: u32, sphere: bool) -> Result<()> {
+    use crate::surface::generate::{field_bytes, generation_bytes};
     let spec = plan.spec();
+    let field = field_bytes(spec);
+    let dilation = match sphere {
+        true => field + field / 8 * crate::surface::dilation::BYTES_PER_NODE,
+        false => 0,
+    };
     let bytes = (surfaces.max(1) as u64 - 1)
-        .saturating_mul(crate::surface::generate::field_bytes(spec))
-        .saturating_add(crate::surface::generate::generation_bytes(spec));
+        .saturating_mul(field)
+        .saturating_add(generation_bytes(spec))
+        .saturating_add(dilation);
     crate::memory::require(
         "deterministic.surfaces",
         surfaces,
         bytes,
         &format!("{surfaces} realisations of the {}-node surface", spec.nodes),
     )
+}
+
+/// The trackers of built realisations ([`Realisations`]): a tracker refusing a generated
+/// surface is a bug (internal error), one refusing a height file names the file.
+pub fn realisations<'a>(
+    built: &'a [BuiltSurface],
+    max_collisions: u32,
+    file: Option<&Path>,
+) -> Result<Realisations<'a>> {
+    let trackers = built
+        .iter()
+        .map(|b| {
+            Tracker::new(&b.field, max_collisions).map_err(|e| match (e, file) {
+                (Error::Input(m), Some(path)) => {
+                    Error::Input(format!("--surface `{}`: {m}", path.display()))
+                }
+                (Error::Input(m), None) => Error::Internal(format!("generated surface: {m}")),
+                (e, _) => e,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Realisations::new(trackers)
 }
 
 /// The `surfaces` realisations of a run, built one after the other with
@@ -245,7 +276,7 @@ pub fn build_surfaces(
                 "surface realisations of a height file".into(),
             ));
         };
-        require_realisations(plan, surfaces)?;
+        require_realisations(plan, surfaces, sphere_diameter_m.is_some())?;
     }
     (0..surfaces)
         .map(|r| {
@@ -369,7 +400,7 @@ mod tests {
             .iter()
             .all(|b| (b.field.nx, b.field.nz) == (one.field.nx, one.field.nz)));
         // Far more realisations than memory holds: refused before generating, naming the key.
-        let e = require_realisations(&plan, u32::MAX)
+        let e = require_realisations(&plan, u32::MAX, false)
             .unwrap_err()
             .to_string();
         assert!(e.contains("deterministic.surfaces"), "{e}");

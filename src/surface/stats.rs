@@ -771,16 +771,37 @@ pub fn measured_deviations(f: &HeightField) -> crate::wall::Deviations {
 /// [`measured_deviations`] of several realisations taken together: the RMS over all their
 /// triangles (for one surface, the same bits as `measured_deviations`).
 pub fn pooled_deviations(fields: &[&HeightField]) -> crate::wall::Deviations {
-    let (mut sx, mut sz, mut n) = (0.0, 0.0, 0.0);
+    let mut sums = AngleSums::default();
     for f in fields {
-        let (x, z) = squared_angle_sums(f);
-        sx += x;
-        sz += z;
-        n += (2 * f.nx * f.nz) as f64;
+        sums.add(f);
     }
-    crate::wall::Deviations {
-        delta_xi: (sx / n).sqrt(),
-        delta_zeta: (sz / n).sqrt(),
+    sums.deviations()
+}
+
+/// The squared normal-angle fluctuations summed over the triangles of one or more surfaces,
+/// for [`pooled_deviations`] of surfaces that need not be held together.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct AngleSums {
+    xi: f64,
+    zeta: f64,
+    triangles: f64,
+}
+
+impl AngleSums {
+    /// Adds every triangle of `f`.
+    pub fn add(&mut self, f: &HeightField) {
+        let (x, z) = squared_angle_sums(f);
+        self.xi += x;
+        self.zeta += z;
+        self.triangles += (2 * f.nx * f.nz) as f64;
+    }
+
+    /// The RMS deviations `(Δξ, Δζ)` over the triangles added.
+    pub fn deviations(&self) -> crate::wall::Deviations {
+        crate::wall::Deviations {
+            delta_xi: (self.xi / self.triangles).sqrt(),
+            delta_zeta: (self.zeta / self.triangles).sqrt(),
+        }
     }
 }
 

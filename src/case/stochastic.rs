@@ -259,8 +259,9 @@ impl Case {
     }
 }
 
-/// Largest escape table read (bytes); a table of the fixed grid is about 60 kB.
-const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 20;
+/// Largest escape table read (bytes): a table of the fixed grid (59 400 rows) is about
+/// 2.5 MB, and its counts cannot make a row much longer than 60 bytes.
+const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 23;
 
 /// Reads the escape table at `path` (`[stochastic] escape_table`): as given, else under
 /// `configs/`; one-line errors that name the key and the file.

@@ -282,7 +282,7 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
              by `calibrated` at |α⁻| ≥ 2.5° on: {all_ok}; at |α⁻| ≥ 5° on: {steep_ok}. `calibrated` is within \
              the ensemble's own noise (all three columns no larger) on: {within}. Max KS of α⁺ \
              (|α⁻| ≥ 2.5°), paper → calibrated: {improved}. Where the model misses the goal \
-             against the ensemble, and why (the tables pool every incident direction): \
+             against the ensemble, and why: \
              [models.md](../docs/models.md#the-calibrated-model).\n\n",
             ens.lines
         );

@@ -16,21 +16,31 @@
 //! `x_out = α⁺/Δγ(β⁺)` of the rebound (`Δγ(β)` of Eq. 26/35, `√(cos²β Δξ² + sin²β Δζ²)`).
 //!
 //! The grid is fixed (so tables are comparable and a file cannot disagree with the code
-//! about it): `x_in ∈ [−6, 6]` in 24 bins, `x_out ∈ [0, 4]` in 40 bins, five stages. The
-//! probability is read bilinearly between bin centres (clamped at the edges); beyond
-//! `x_out = 4` it is 1 (the deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
+//! about it): `x_in ∈ [−6, 6]` in 34 bins ([`X_IN_EDGES`], 0.125 wide at grazing incidence),
+//! `x_out ∈ [0, 4]` in 40 bins, five stages.
+//! The probability is read bilinearly (along `x_in` between the rows' mean `x_in`, along
+//! `x_out` between bin centres, clamped at the edges); beyond `x_out = 4` it is 1 (the
+//! deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
 
 use crate::error::{Error, Result};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
 use std::sync::{Mutex, OnceLock};
 
+/// Edges of the `x_in` axis: 0.125 wide in `[−1, 0]`, where the laws change fastest (a
+/// first element at `α⁻/Δγ = −0.34` and at `−0.64` differ by 0.1° in mean α⁺ on the Sec. 3
+/// wall), 0.25 in `[−2, −1]` and `[0, 1]`, 0.5 beyond.
+pub const X_IN_EDGES: [f64; 35] = [
+    -6.0, -5.5, -5.0, -4.5, -4.0, -3.5, -3.0, -2.5, -2.0, -1.75, -1.5, -1.25, -1.0, -0.875, -0.75,
+    -0.625, -0.5, -0.375, -0.25, -0.125, 0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0,
+    4.5, 5.0, 5.5, 6.0,
+];
 /// Lower edge of the `x_in` axis.
-pub const X_IN_MIN: f64 = -6.0;
+pub const X_IN_MIN: f64 = X_IN_EDGES[0];
 /// Upper edge of the `x_in` axis.
-pub const X_IN_MAX: f64 = 6.0;
+pub const X_IN_MAX: f64 = X_IN_EDGES[X_IN_BINS];
 /// Bins along `x_in`.
-pub const X_IN_BINS: usize = 24;
+pub const X_IN_BINS: usize = X_IN_EDGES.len() - 1;
 /// Upper edge of the `x_out` axis (the lower one is 0).
 pub const X_OUT_MAX: f64 = 4.0;
 /// Bins along `x_out`.
@@ -65,14 +75,15 @@ pub const Q_EDGES: [f64; 3] = [-1.25, -0.5, 0.25];
 /// Cells of the element correction.
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
-pub const MAGIC: &str = "# roughwall escape table v4";
+pub const MAGIC: &str = "# roughwall escape table v5";
 /// What every version's first line starts with.
 const MAGIC_STEM: &str = "# roughwall escape table v";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
 const ELEMENT_HEADER: &str = "element_stage,x_in,s,deterministic,model,weight";
+const ROW_HEADER: &str =
+    "row_stage,x_in,escape_x_in_sum,escape_position,element_x_in_sum,element_position";
 const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
 
-const DX_IN: f64 = (X_IN_MAX - X_IN_MIN) / X_IN_BINS as f64;
 const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
 
 /// Which collision of a history: the first, or a later one with the memory of the element
@@ -126,7 +137,24 @@ fn cell(stage: Stage, i_in: usize, i_out: usize) -> usize {
 }
 
 fn bin_in(x_in: f64) -> usize {
-    (((x_in - X_IN_MIN) / DX_IN).floor().max(0.0) as usize).min(X_IN_BINS - 1)
+    // Inner edges at or below `x_in` (a NaN counts none).
+    X_IN_EDGES[1..X_IN_BINS].partition_point(|&e| e <= x_in)
+}
+
+/// Rows of the `x_in` axis (every slice's bins).
+pub const ROWS: usize = SLICES * X_IN_BINS;
+
+/// Units of the `x_in` sums (integers, so that sums are exact in any order).
+const X_SUM_UNIT: f64 = 1e-6;
+
+/// `x_in` clamped to the axis, in [`X_SUM_UNIT`]s.
+fn x_units(x_in: f64) -> i64 {
+    (x_in.clamp(X_IN_MIN, X_IN_MAX) / X_SUM_UNIT).round() as i64
+}
+
+/// The centre of `x_in` bin `i`.
+fn centre_in(i: usize) -> f64 {
+    0.5 * (X_IN_EDGES[i] + X_IN_EDGES[i + 1])
 }
 
 /// Integer counts of collisions and escapes per cell: what a calibration run accumulates.
@@ -139,6 +167,13 @@ pub struct EscapeCounts {
     /// from the paper's shadow law (Eqs. 31–33) for the same incident directions.
     pub element_deterministic: Vec<u64>,
     pub element_model: Vec<u64>,
+    /// Sums of `x_in` (clamped to the axis, in 10⁻⁶) per `(slice, x_in bin)` row: of the
+    /// collisions counted in the escape table, and of the shadow-law draws counted in the
+    /// element table. A row's mean `x_in` is where its values belong: the calibration's
+    /// directions fill a bin unevenly, and the laws change fast with `x_in` at grazing
+    /// incidence.
+    pub escape_x_sum: Vec<i64>,
+    pub element_x_sum: Vec<i64>,
 }
 
 impl Default for EscapeCounts {
@@ -148,6 +183,8 @@ impl Default for EscapeCounts {
             escaped: vec![0; CELLS],
             element_deterministic: vec![0; ELEMENT_CELLS],
             element_model: vec![0; ELEMENT_CELLS],
+            escape_x_sum: vec![0; ROWS],
+            element_x_sum: vec![0; ROWS],
         }
     }
 }
@@ -173,6 +210,7 @@ impl EscapeCounts {
         }
         if let Some(c) = element_cell(stage, x_in, g_model) {
             self.element_model[c] += 1;
+            self.element_x_sum[c / G_BINS] += x_units(x_in);
         }
     }
 
@@ -202,6 +240,7 @@ impl EscapeCounts {
         let c = cell(stage, bin_in(x_in), i_out);
         self.collisions[c] += 1;
         self.escaped[c] += escaped as u64;
+        self.escape_x_sum[c / X_OUT_BINS] += x_units(x_in);
     }
 
     /// Adds `other` (exact integer sums).
@@ -222,6 +261,30 @@ impl EscapeCounts {
         for (a, b) in self.element_model.iter_mut().zip(&other.element_model) {
             *a += b;
         }
+        for (a, b) in self.escape_x_sum.iter_mut().zip(&other.escape_x_sum) {
+            *a += b;
+        }
+        for (a, b) in self.element_x_sum.iter_mut().zip(&other.element_x_sum) {
+            *a += b;
+        }
+    }
+
+    /// Sets every row's `x_in` sums as if its counts sat at the bin's centre (tables built
+    /// by hand in tests).
+    #[cfg(test)]
+    pub(crate) fn at_centres(mut self) -> EscapeCounts {
+        for r in 0..ROWS {
+            let x = x_units(centre_in(r % X_IN_BINS));
+            let n: u64 = self.collisions[r * X_OUT_BINS..(r + 1) * X_OUT_BINS]
+                .iter()
+                .sum();
+            self.escape_x_sum[r] = x * n as i64;
+            let n: u64 = self.element_model[r * G_BINS..(r + 1) * G_BINS]
+                .iter()
+                .sum();
+            self.element_x_sum[r] = x * n as i64;
+        }
+        self
     }
 
     /// Total collisions counted.
@@ -241,20 +304,24 @@ pub struct EscapeTable {
     /// largest value per `x_in` row (the rejection bound).
     weight: Vec<f64>,
     row_max: Vec<f64>,
+    /// Where each `(slice, x_in bin)` row's values belong along `x_in`: the row's mean
+    /// `x_in` ([`row_positions`]), for the escape and the element table.
+    escape_pos: Vec<f64>,
+    element_pos: Vec<f64>,
     /// Where the table came from (the `# source:` line of its file).
     pub source: String,
 }
 
 /// The ratio `d/m` of a row's counts at cell `j`, pooled over the narrowest window
-/// `j−k..=j+k` (clipped to the row) that holds [`ELEMENT_MIN_COUNT`] model draws; 1 (the
-/// shadow law kept) when the whole row holds fewer.
-fn window_ratio(d: &[u64], m: &[u64], j: usize) -> f64 {
+/// `j−k..=j+k` (clipped to the row) that holds [`ELEMENT_MIN_COUNT`] model draws; `None`
+/// when the whole row holds fewer.
+fn window_ratio(d: &[u64], m: &[u64], j: usize) -> Option<f64> {
     let (mut sd, mut sm) = (d[j], m[j]);
     let mut k = 0;
     while sm < ELEMENT_MIN_COUNT {
         k += 1;
         if k > j && j + k >= m.len() {
-            return 1.0;
+            return None;
         }
         for i in [j.checked_sub(k), Some(j + k).filter(|&i| i < m.len())]
             .into_iter()
@@ -264,99 +331,147 @@ fn window_ratio(d: &[u64], m: &[u64], j: usize) -> f64 {
             sm += m[i];
         }
     }
-    sd as f64 / sm as f64
+    Some(sd as f64 / sm as f64)
+}
+
+/// The position of every `(slice, x_in bin)` row: its counts' mean `x_in` (`sums` in
+/// [`X_SUM_UNIT`]s over `counts` values) when it has at least `min` of them, else the bin's
+/// centre. A mean lies in its bin, so positions increase along a slice.
+fn row_positions(sums: &[i64], counts: &[u64], min: u64) -> Vec<f64> {
+    let per_row = counts.len() / ROWS;
+    (0..ROWS)
+        .map(|r| {
+            let n: u64 = counts[r * per_row..(r + 1) * per_row].iter().sum();
+            if n >= min.max(1) {
+                sums[r] as f64 * X_SUM_UNIT / n as f64
+            } else {
+                centre_in(r % X_IN_BINS)
+            }
+        })
+        .collect()
+}
+
+/// Rows `(lo, hi)` of a slice and the weight of `hi` for a linear read at `x_in` between the
+/// rows' positions `pos` (the slice's [`X_IN_BINS`] positions; clamped at the ends).
+#[inline]
+fn rows_at(x_in: f64, pos: &[f64]) -> (usize, usize, f64) {
+    let i = bin_in(x_in);
+    let (lo, hi) = if x_in >= pos[i] {
+        (i, (i + 1).min(X_IN_BINS - 1))
+    } else {
+        (i.saturating_sub(1), i)
+    };
+    let span = pos[hi] - pos[lo];
+    if span > 0.0 {
+        (lo, hi, ((x_in - pos[lo]) / span).clamp(0.0, 1.0))
+    } else {
+        (lo, hi, 0.0)
+    }
+}
+
+/// The escape probabilities of every cell (NaN where the counts resolve nothing). A cell with fewer than [`MIN_COUNT`] collisions takes the
+/// value of the nearest cell along `x_in` (same step and `x_out`) that has enough; a later
+/// step's column with none takes the later steps' pooled counts (nearest along `x_in`), then
+/// the first step's value.
+fn escape_block(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
+    let plane = X_IN_BINS * X_OUT_BINS;
+    let mut p = vec![f64::NAN; SLICES * plane];
+    // The later steps pooled: the fallback of a sparse later cell.
+    let pooled = |c: usize, v: &[u64]| -> u64 { (1..SLICES).map(|k| v[k * plane + c]).sum() };
+    let (pooled_c, pooled_e): (Vec<u64>, Vec<u64>) = (0..plane)
+        .map(|c| (pooled(c, collisions), pooled(c, escaped)))
+        .unzip();
+    for step in 0..SLICES {
+        for i_out in 0..X_OUT_BINS {
+            // Nearest populated bin along x_in, the lower one first on a tie.
+            let nearest = |c: &[u64], e: &[u64], i_in: usize, k: usize| {
+                let own = |i: usize| {
+                    let j = k + i * X_OUT_BINS + i_out;
+                    (c[j] >= MIN_COUNT).then(|| e[j] as f64 / c[j] as f64)
+                };
+                (0..X_IN_BINS).find_map(|d| {
+                    let lo = i_in.checked_sub(d).and_then(own);
+                    let hi = (i_in + d < X_IN_BINS).then(|| own(i_in + d)).flatten();
+                    lo.or(hi)
+                })
+            };
+            for i_in in 0..X_IN_BINS {
+                let at = i_in * X_OUT_BINS + i_out;
+                p[step * plane + at] = match nearest(collisions, escaped, i_in, step * plane) {
+                    Some(v) => v,
+                    None if step == 0 => f64::NAN,
+                    None => nearest(&pooled_c, &pooled_e, i_in, 0).unwrap_or(p[at]),
+                };
+            }
+        }
+    }
+    p
+}
+
+/// The element weights of every cell (`None` where the counts resolve nothing). An element cell with fewer than [`ELEMENT_MIN_COUNT`] draws
+/// takes, for a later step, the later steps' pooled counts; one still sparse, the ratio over
+/// the narrowest window of its row that has enough ([`window_ratio`]).
+fn weight_block(deterministic: &[u64], model: &[u64]) -> Vec<Option<f64>> {
+    // The shadow law's tails are where cells are sparse, and there the deterministic
+    // surface has fewer steep elements than the shadow law (the ratio falls to ~0.3 five Δγ
+    // out): a sparse cell must not fall back to 1.
+    let plane = X_IN_BINS * G_BINS;
+    let later = |v: &[u64]| -> Vec<u64> {
+        (0..plane)
+            .map(|c| (1..SLICES).map(|k| v[k * plane + c]).sum())
+            .collect()
+    };
+    let (later_d, later_m) = (later(deterministic), later(model));
+    (0..SLICES * plane)
+        .map(|c| {
+            let (d, m, base) = if model[c] >= ELEMENT_MIN_COUNT || c < plane {
+                (deterministic, model, c - c % G_BINS)
+            } else {
+                (&later_d[..], &later_m[..], c % plane - c % G_BINS)
+            };
+            window_ratio(&d[base..base + G_BINS], &m[base..base + G_BINS], c % G_BINS)
+        })
+        .collect()
 }
 
 impl EscapeTable {
-    /// The table of `counts`. A cell with fewer than [`MIN_COUNT`] collisions takes the
-    /// value of the nearest cell along `x_in` (same stage and `x_out`) that has enough; a
-    /// later stage's column with none takes the later stages' pooled counts (nearest along
-    /// `x_in`), then the first stage's filled value, and a column empty everywhere is 1 (the
-    /// rebound is steep enough that no run saw it trapped). An element cell with fewer than
-    /// [`ELEMENT_MIN_COUNT`] draws takes, for a later stage, the later stages' pooled counts;
-    /// one still sparse, the ratio over the narrowest window of its row that has enough
-    /// ([`window_ratio`]); a row without enough draws anywhere keeps the shadow law (1).
+    /// The table of `counts` ([`escape_block`], [`weight_block`]); what the counts leave
+    /// unresolved is 1 (an escape column no run saw trapped: the rebound is steep enough; an
+    /// element row without enough draws: the shadow law kept).
     pub fn from_counts(counts: EscapeCounts, source: &str) -> EscapeTable {
-        let mut p = vec![f64::NAN; CELLS];
-        // The later stages pooled: the fallback of a sparse later cell.
-        let plane = X_IN_BINS * X_OUT_BINS;
-        let pooled = |c: usize, v: &[u64]| -> u64 { (1..SLICES).map(|k| v[k * plane + c]).sum() };
-        let (pooled_c, pooled_e): (Vec<u64>, Vec<u64>) = (0..plane)
-            .map(|c| (pooled(c, &counts.collisions), pooled(c, &counts.escaped)))
-            .unzip();
-        for stage in Stage::all() {
-            for i_out in 0..X_OUT_BINS {
-                // Nearest populated bin along x_in, the lower one first on a tie.
-                let nearest = |c: &[u64], e: &[u64], i_in: usize, k: usize| {
-                    let own = |i: usize| {
-                        let j = k + i * X_OUT_BINS + i_out;
-                        (c[j] >= MIN_COUNT).then(|| e[j] as f64 / c[j] as f64)
-                    };
-                    (0..X_IN_BINS).find_map(|d| {
-                        let lo = i_in.checked_sub(d).and_then(own);
-                        let hi = (i_in + d < X_IN_BINS).then(|| own(i_in + d)).flatten();
-                        lo.or(hi)
-                    })
-                };
-                for i_in in 0..X_IN_BINS {
-                    let own = nearest(&counts.collisions, &counts.escaped, i_in, stage.0 * plane);
-                    let v = match own {
-                        Some(v) => v,
-                        None if stage.is_first() => f64::NAN,
-                        None => nearest(&pooled_c, &pooled_e, i_in, 0)
-                            .unwrap_or(p[cell(Stage::FIRST, i_in, i_out)]),
-                    };
-                    p[cell(stage, i_in, i_out)] = v;
-                }
-            }
-        }
-        for v in &mut p {
-            if v.is_nan() {
-                *v = 1.0;
-            }
-        }
-        // A later stage's sparse cell takes the later stages' pooled counts; a cell still
-        // sparse, the counts of the narrowest window of its row (centred, along s) that
-        // holds enough draws. The shadow law's tails are where cells are sparse, and there
-        // the deterministic surface has fewer steep elements than the shadow law (the
-        // ratio falls to ~0.3 five Δγ out): a sparse cell must not fall back to 1.
-        let plane = X_IN_BINS * G_BINS;
-        let later = |v: &[u64]| -> Vec<u64> {
-            (0..plane)
-                .map(|c| (1..SLICES).map(|k| v[k * plane + c]).sum())
-                .collect()
-        };
-        let (later_d, later_m) = (
-            later(&counts.element_deterministic),
-            later(&counts.element_model),
-        );
-        let weight: Vec<f64> = (0..ELEMENT_CELLS)
-            .map(|c| {
-                let (own_d, own_m) = (&counts.element_deterministic, &counts.element_model);
-                let (d, m, base) = if own_m[c] >= ELEMENT_MIN_COUNT || c < plane {
-                    (own_d, own_m, c - c % G_BINS)
-                } else {
-                    (&later_d, &later_m, c % plane - c % G_BINS)
-                };
-                window_ratio(&d[base..base + G_BINS], &m[base..base + G_BINS], c % G_BINS)
-            })
+        let p: Vec<f64> = escape_block(&counts.collisions, &counts.escaped)
+            .into_iter()
+            .map(|v| if v.is_nan() { 1.0 } else { v })
+            .collect();
+        let weight: Vec<f64> = weight_block(&counts.element_deterministic, &counts.element_model)
+            .into_iter()
+            .map(|w| w.unwrap_or(1.0))
             .collect();
         let row_max = weight
             .chunks(G_BINS)
             .map(|r| r.iter().copied().fold(0.0, f64::max))
             .collect();
+        let escape_pos = row_positions(&counts.escape_x_sum, &counts.collisions, MIN_COUNT);
+        let element_pos = row_positions(
+            &counts.element_x_sum,
+            &counts.element_model,
+            ELEMENT_MIN_COUNT,
+        );
         EscapeTable {
             counts,
             p,
             weight,
             row_max,
+            escape_pos,
+            element_pos,
             source: source.to_string(),
         }
     }
 
     /// The element weight `w(stage, x_in, s)` of an element of reduced inclination
-    /// `g = γ/Δγ(β)`, read at `s = g − x_in` (bilinear between cell centres, 1 outside the
-    /// `s` range): the calibrated model accepts a shadow-law draw with `w / bound(x_in)`.
+    /// `g = γ/Δγ(β)`, read at `s = g − x_in` (bilinear between the rows' positions along
+    /// `x_in` and the cell centres along `s`, 1 outside the `s` range): the calibrated model
+    /// accepts a shadow-law draw with `w / bound(x_in)`.
     #[inline]
     pub fn element_weight(&self, stage: Stage, x_in: f64, g: f64) -> f64 {
         let x_in = if x_in.is_nan() { 0.0 } else { x_in };
@@ -364,9 +479,9 @@ impl EscapeTable {
         if s.is_nan() || !(G_MIN..G_MAX).contains(&s) {
             return 1.0;
         }
-        let (i0, i1, ti) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
-        let (g0, g1, tg) = axis(s, G_MIN, DG, G_BINS);
         let row = stage.0 * X_IN_BINS;
+        let (i0, i1, ti) = rows_at(x_in, &self.element_pos[row..row + X_IN_BINS]);
+        let (g0, g1, tg) = axis(s, G_MIN, DG, G_BINS);
         let at = |i: usize, j: usize| self.weight[(row + i) * G_BINS + j];
         let lo = at(i0, g0) + (at(i0, g1) - at(i0, g0)) * tg;
         let hi = at(i1, g0) + (at(i1, g1) - at(i1, g0)) * tg;
@@ -378,8 +493,8 @@ impl EscapeTable {
     #[inline]
     pub fn element_bound(&self, stage: Stage, x_in: f64) -> f64 {
         let x_in = if x_in.is_nan() { 0.0 } else { x_in };
-        let (i0, i1, _) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
         let row = stage.0 * X_IN_BINS;
+        let (i0, i1, _) = rows_at(x_in, &self.element_pos[row..row + X_IN_BINS]);
         self.row_max[row + i0].max(self.row_max[row + i1]).max(1.0)
     }
 
@@ -395,7 +510,8 @@ impl EscapeTable {
 
     /// The probability that a particle leaves the wall after a collision of `stage` from
     /// reduced incident angle `x_in` with reduced rebound angle `x_out` (bilinear between
-    /// bin centres, clamped at the edges; 1 beyond `x_out = 4`, 0 for `x_out ≤ 0`).
+    /// the rows' positions along `x_in` and the bin centres along `x_out`, clamped at the
+    /// edges; 1 beyond `x_out = 4`, 0 for `x_out ≤ 0`).
     #[inline]
     pub fn p_escape(&self, stage: Stage, x_in: f64, x_out: f64) -> f64 {
         if x_out.is_nan() || x_out <= 0.0 {
@@ -406,7 +522,8 @@ impl EscapeTable {
         }
         // A direction with no roughness in its plane has no reduced angle (0/0).
         let x_in = if x_in.is_nan() { 0.0 } else { x_in };
-        let (i0, i1, ti) = axis(x_in, X_IN_MIN, DX_IN, X_IN_BINS);
+        let row = stage.0 * X_IN_BINS;
+        let (i0, i1, ti) = rows_at(x_in, &self.escape_pos[row..row + X_IN_BINS]);
         let (o0, o1, to) = axis(x_out, 0.0, DX_OUT, X_OUT_BINS);
         let at = |i, o| self.p[cell(stage, i, o)];
         let lo = at(i0, o0) + (at(i0, o1) - at(i0, o0)) * to;
@@ -422,9 +539,9 @@ impl EscapeTable {
                 for i_out in 0..X_OUT_BINS {
                     let c = cell(stage, i_in, i_out);
                     s.push_str(&format!(
-                        "{},{:.3},{:.3},{},{},{:.6}\n",
+                        "{},{:.4},{:.3},{},{},{:.6}\n",
                         stage.name(),
-                        X_IN_MIN + (i_in as f64 + 0.5) * DX_IN,
+                        centre_in(i_in),
                         (i_out as f64 + 0.5) * DX_OUT,
                         self.counts.collisions[c],
                         self.counts.escaped[c],
@@ -440,15 +557,31 @@ impl EscapeTable {
                 for i_g in 0..G_BINS {
                     let c = (stage.0 * X_IN_BINS + i_in) * G_BINS + i_g;
                     s.push_str(&format!(
-                        "{},{:.3},{:.3},{},{},{:.6}\n",
+                        "{},{:.4},{:.3},{},{},{:.6}\n",
                         stage.name(),
-                        X_IN_MIN + (i_in as f64 + 0.5) * DX_IN,
+                        centre_in(i_in),
                         G_MIN + (i_g as f64 + 0.5) * DG,
                         self.counts.element_deterministic[c],
                         self.counts.element_model[c],
                         self.weight[c]
                     ));
                 }
+            }
+        }
+        s.push_str(ROW_HEADER);
+        s.push('\n');
+        for stage in Stage::all() {
+            for i_in in 0..X_IN_BINS {
+                let r = stage.0 * X_IN_BINS + i_in;
+                s.push_str(&format!(
+                    "{},{:.4},{},{:.6},{},{:.6}\n",
+                    stage.name(),
+                    centre_in(i_in),
+                    self.counts.escape_x_sum[r],
+                    self.escape_pos[r],
+                    self.counts.element_x_sum[r],
+                    self.element_pos[r]
+                ));
             }
         }
         s
@@ -499,8 +632,8 @@ impl EscapeTable {
                             "{what}: truncated after {rows} of {CELLS} rows (the grid is {SLICES} stages × {X_IN_BINS} × {X_OUT_BINS})"
                         ))
                     })?;
-                    let (c, e, p) = parse_row(l, (&stage.name(), i_in), ("x_out", cell_x))
-                        .map_err(|m| bad(n, &m))?;
+                    let (c, e, p) =
+                        parse_row(l, stage, i_in, ("x_out", cell_x)).map_err(|m| bad(n, &m))?;
                     if e > c {
                         return Err(bad(n, &format!("{e} escapes out of {c} collisions")));
                     }
@@ -529,8 +662,8 @@ impl EscapeTable {
                             "{what}: truncated after {k} of {ELEMENT_CELLS} element rows"
                         ))
                     })?;
-                    let (d, m, w) = parse_row(l, (&stage.name(), i_in), ("s", cell_g))
-                        .map_err(|m| bad(n, &m))?;
+                    let (d, m, w) =
+                        parse_row(l, stage, i_in, ("s", cell_g)).map_err(|m| bad(n, &m))?;
                     if w < 0.0 {
                         return Err(bad(n, &format!("weight = {w} is negative")));
                     }
@@ -540,6 +673,27 @@ impl EscapeTable {
                         written_w[k],
                     ) = (d, m, w);
                 }
+            }
+        }
+        header(
+            lines.next(),
+            ROW_HEADER,
+            &format!("after the {ELEMENT_CELLS} element rows"),
+        )?;
+        let (mut written_escape_pos, mut written_element_pos) = (vec![0.0; ROWS], vec![0.0; ROWS]);
+        for stage in Stage::all() {
+            for i_in in 0..X_IN_BINS {
+                let r = stage.0 * X_IN_BINS + i_in;
+                let (n, l) = lines.next().ok_or_else(|| {
+                    Error::Input(format!("{what}: truncated after {r} of {ROWS} x_in rows"))
+                })?;
+                let f = parse_position_row(l, stage, i_in).map_err(|m| bad(n, &m))?;
+                (
+                    counts.escape_x_sum[r],
+                    written_escape_pos[r],
+                    counts.element_x_sum[r],
+                    written_element_pos[r],
+                ) = f;
             }
         }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
@@ -567,6 +721,28 @@ impl EscapeTable {
         }
         if let Some(e) = edited("element", &written_w, &table.weight) {
             return Err(e);
+        }
+        if let Some(e) = edited("escape position", &written_escape_pos, &table.escape_pos) {
+            return Err(e);
+        }
+        if let Some(e) = edited("element position", &written_element_pos, &table.element_pos) {
+            return Err(e);
+        }
+        // A row's mean must lie in its bin (else the positions do not increase).
+        for (kind, pos) in [
+            ("escape", &table.escape_pos),
+            ("element", &table.element_pos),
+        ] {
+            if let Some(r) = (0..ROWS).find(|&r| {
+                let i = r % X_IN_BINS;
+                !(X_IN_EDGES[i]..=X_IN_EDGES[i + 1]).contains(&pos[r])
+            }) {
+                return Err(Error::Input(format!(
+                    "{what}: the {kind} x_in sum of row {} puts its mean at {} outside its bin (edited or corrupted)",
+                    r + 1,
+                    pos[r]
+                )));
+            }
         }
         if table.counts.total() == 0 {
             return Err(Error::Input(format!("{what}: no collisions counted")));
@@ -610,13 +786,15 @@ pub const BUILTIN: &str = include_str!("../../configs/calibration/aniso-escape.c
 /// must be (the grid is fixed), the two counts and the value; the error without the line.
 fn parse_row(
     line: &str,
-    (stage, i_in): (&str, usize),
+    stage: Stage,
+    i_in: usize,
     (axis_name, axis_value): (&str, f64),
 ) -> std::result::Result<(u64, u64, f64), String> {
     let f: Vec<&str> = line.split(',').collect();
     if f.len() != 6 {
         return Err(format!("{} fields, expected 6", f.len()));
     }
+    let stage = stage.name();
     let num = |j: usize| {
         f[j].parse::<f64>()
             .ok()
@@ -627,13 +805,44 @@ fn parse_row(
         f[j].parse::<u64>()
             .map_err(|_| format!("`{}` is not a non-negative integer", f[j]))
     };
-    let x_in = X_IN_MIN + (i_in as f64 + 0.5) * DX_IN;
+    let x_in = centre_in(i_in);
     if f[0] != stage || (num(1)? - x_in).abs() > 1e-9 || (num(2)? - axis_value).abs() > 1e-9 {
         return Err(format!(
             "expected the cell ({stage}, x_in = {x_in}, {axis_name} = {axis_value}): the table does not match this version's grid"
         ));
     }
     Ok((int(3)?, int(4)?, num(5)?))
+}
+
+/// One row `stage,x_in,sum,position,sum,position` of the `x_in` rows' block:
+/// checked against the row it must be; the two sums and the two positions.
+fn parse_position_row(
+    line: &str,
+    stage: Stage,
+    i_in: usize,
+) -> std::result::Result<(i64, f64, i64, f64), String> {
+    let f: Vec<&str> = line.split(',').collect();
+    if f.len() != 6 {
+        return Err(format!("{} fields, expected 6", f.len()));
+    }
+    let stage = stage.name();
+    let num = |j: usize| {
+        f[j].parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("`{}` is not a number", f[j]))
+    };
+    let int = |j: usize| {
+        f[j].parse::<i64>()
+            .map_err(|_| format!("`{}` is not an integer", f[j]))
+    };
+    let x_in = centre_in(i_in);
+    if f[0] != stage || (num(1)? - x_in).abs() > 1e-9 {
+        return Err(format!(
+            "expected the row ({stage}, x_in = {x_in}): the table does not match this version's grid"
+        ));
+    }
+    Ok((int(2)?, num(3)?, int(4)?, num(5)?))
 }
 
 /// Bins `(lo, hi)` and the weight of `hi` for a bilinear read at `x` (centres at
@@ -719,8 +928,8 @@ mod tests {
             c.collisions[k] = 400;
             c.escaped[k] = 10 * i_out as u64;
         }
-        let t = EscapeTable::from_counts(c, "t");
-        let x_in = X_IN_MIN + 10.5 * DX_IN;
+        let t = EscapeTable::from_counts(c.at_centres(), "t");
+        let x_in = centre_in(10);
         for i_out in 0..X_OUT_BINS {
             let x_out = (i_out as f64 + 0.5) * DX_OUT;
             let p = t.p_escape(Stage::FIRST, x_in, x_out);
@@ -739,7 +948,7 @@ mod tests {
             c.escaped[cell(Stage::later(1.0), 10, i_out)] = 300;
             c.collisions[cell(Stage::later(-1.0), 10, i_out)] = 20;
         }
-        let t = EscapeTable::from_counts(c, "t");
+        let t = EscapeTable::from_counts(c.at_centres(), "t");
         assert!((t.p_escape(Stage::later(-2.0), x_in, 1.0) - 0.25).abs() < 1e-12);
         assert!((t.p_escape(Stage::later(1.0), x_in, 1.0) - 0.75).abs() < 1e-12);
         let pooled = t.p_escape(Stage::later(-1.0), x_in, 1.0);
@@ -771,9 +980,15 @@ mod tests {
         };
         let row = lines[10];
         let fields: Vec<&str> = row.split(',').collect();
+        // Row 10 with field `k` replaced.
+        let field = |k: usize, v: &str| {
+            let mut f = fields.clone();
+            f[k] = v;
+            edit(10, &f.join(","))
+        };
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v4", "v3", 1), "another format"),
+            (good.replacen("v5", "v4", 1), "another format"),
             (
                 good.replacen("# roughwall", "# other", 1),
                 "not an escape table",
@@ -782,54 +997,16 @@ mod tests {
             (edit(2, "a,b"), "header"),
             (lines[..100].join("\n"), "truncated after 97"),
             (edit(10, "first,1,2"), "3 fields"),
+            (field(0, "later-q0"), "does not match this version's grid"),
+            (field(1, "-0.3125"), "does not match this version's grid"),
+            (field(2, "9.999"), "does not match"),
+            (field(3, "x"), "`x` is not a non-negative integer"),
             (
-                edit(10, &format!("later-q0,{}", fields[1..].join(","))),
-                "does not match this version's grid",
-            ),
-            (
-                edit(
-                    10,
-                    &format!("first,{},9.999,{}", fields[1], fields[3..].join(",")),
-                ),
-                "does not match",
-            ),
-            (
-                edit(
-                    10,
-                    &format!(
-                        "{},{},{},x,{},{}",
-                        fields[0], fields[1], fields[2], fields[4], fields[5]
-                    ),
-                ),
-                "`x` is not a non-negative integer",
-            ),
-            (
-                edit(
-                    10,
-                    &format!("{},{},{},1,2,0.5", fields[0], fields[1], fields[2]),
-                ),
+                edit(10, &format!("{},1,2,0.5", fields[..3].join(","))),
                 "2 escapes out of 1",
             ),
-            (
-                edit(
-                    10,
-                    &format!(
-                        "{},{},{},{},{},1.5",
-                        fields[0], fields[1], fields[2], fields[3], fields[4]
-                    ),
-                ),
-                "not in [0, 1]",
-            ),
-            (
-                edit(
-                    10,
-                    &format!(
-                        "{},{},{},{},{},nan",
-                        fields[0], fields[1], fields[2], fields[3], fields[4]
-                    ),
-                ),
-                "`nan` is not a number",
-            ),
+            (field(5, "1.5"), "not in [0, 1]"),
+            (field(5, "nan"), "`nan` is not a number"),
             (
                 format!("{good}first,0,0,0,0,0\n"),
                 "more rows than the grid",
@@ -845,51 +1022,46 @@ mod tests {
             assert!(!e.contains('\n'), "{e}");
         }
         // A probability that disagrees with its counts (hand-edited): refused.
-        let c: u64 = fields[3].parse().unwrap();
-        if c >= MIN_COUNT {
-            let e = EscapeTable::parse(
-                &edit(
-                    10,
-                    &format!(
-                        "{},{},{},{},{},0.999999",
-                        fields[0], fields[1], fields[2], fields[3], fields[4]
-                    ),
-                ),
-                "t",
-            );
-            match e {
-                Ok(_) => panic!("accepted an edited table"),
-                Err(e) => assert!(e.to_string().contains("edited or corrupted"), "{e}"),
-            }
+        let k = (3..3 + CELLS)
+            .find(|&k| {
+                let f: Vec<&str> = lines[k].split(',').collect();
+                f[3].parse::<u64>().unwrap() >= MIN_COUNT && f[5] != "0.999999"
+            })
+            .unwrap();
+        let f: Vec<&str> = lines[k].split(',').collect();
+        let e = EscapeTable::parse(&edit(k, &format!("{},0.999999", f[..5].join(","))), "t");
+        match e {
+            Ok(_) => panic!("accepted an edited table"),
+            Err(e) => assert!(e.to_string().contains("edited or corrupted"), "{e}"),
         }
     }
 
     #[test]
     fn element_weights_are_the_count_ratio_and_bounded() {
         let mut c = EscapeCounts::default();
-        // Row x_in ∈ [−1.5, −1), centre −1.25: the deterministic run saw twice the shadow
-        // law's count above s = γ/Δγ − x_in = 1.25 (g = 0 at the centre) and the same below.
+        // Row x_in ∈ [−1.5, −1.25), centre −1.375: the deterministic run saw twice the shadow
+        // law's count above s = γ/Δγ − x_in = 1.375 (g = 0 at the centre) and the same below.
         for k in 0..200 {
             let s = 0.02 * k as f64 + 0.01;
-            let n = if s > 1.25 {
+            let n = if s > 1.375 {
                 2 * ELEMENT_MIN_COUNT
             } else {
                 ELEMENT_MIN_COUNT
             };
-            let cell = element_cell(Stage::FIRST, -1.25, s - 1.25).unwrap();
+            let cell = element_cell(Stage::FIRST, -1.375, s - 1.375).unwrap();
             c.element_deterministic[cell] = n;
             c.element_model[cell] = ELEMENT_MIN_COUNT;
         }
         // Out of reach (s < 0) and beyond the range: no cell.
-        assert_eq!(element_cell(Stage::FIRST, -1.25, -1.3), None);
-        assert_eq!(element_cell(Stage::FIRST, -1.25, 9.0), None);
-        let t = EscapeTable::from_counts(c, "w");
-        assert!((t.element_weight(Stage::FIRST, -1.25, 1.05) - 2.0).abs() < 1e-12);
-        assert!((t.element_weight(Stage::FIRST, -1.25, -0.5) - 1.0).abs() < 1e-12);
+        assert_eq!(element_cell(Stage::FIRST, -1.375, -1.45), None);
+        assert_eq!(element_cell(Stage::FIRST, -1.375, 9.0), None);
+        let t = EscapeTable::from_counts(c.at_centres(), "w");
+        assert!((t.element_weight(Stage::FIRST, -1.375, 1.05) - 2.0).abs() < 1e-12);
+        assert!((t.element_weight(Stage::FIRST, -1.375, -0.5) - 1.0).abs() < 1e-12);
         // Empty cells and the other stages keep the shadow law; outside the range too.
-        assert_eq!(t.element_weight(Stage::later(0.0), -1.25, 1.05), 1.0);
-        assert_eq!(t.element_weight(Stage::FIRST, -1.25, 9.0), 1.0);
-        assert!(t.element_bound(Stage::FIRST, -1.25) >= 2.0);
+        assert_eq!(t.element_weight(Stage::later(0.0), -1.375, 1.05), 1.0);
+        assert_eq!(t.element_weight(Stage::FIRST, -1.375, 9.0), 1.0);
+        assert!(t.element_bound(Stage::FIRST, -1.375) >= 2.0);
         for k in 0..400 {
             let (x, g) = (-3.0 + 0.01 * k as f64, -4.0 + 0.025 * k as f64);
             assert!(
@@ -905,28 +1077,28 @@ mod tests {
     fn sparse_element_cells_take_their_window_ratio() {
         let n = ELEMENT_MIN_COUNT;
         // A dense cell stands alone.
-        assert_eq!(window_ratio(&[3 * n, 0, 0], &[2 * n, 0, 0], 0), 1.5);
+        assert_eq!(window_ratio(&[3 * n, 0, 0], &[2 * n, 0, 0], 0), Some(1.5));
         // The tail: cell 3 has 100 draws; the window 2..=4 (clipped at the row's end: 2..=3
         // and then 1..=3) first holds enough at 1..=3.
         let d = [0, n / 2, n / 4, 30];
         let m = [0, n, n / 2, 100];
-        let r = window_ratio(&d, &m, 3);
+        let r = window_ratio(&d, &m, 3).unwrap();
         let want = (n / 2 + n / 4 + 30) as f64 / (n + n / 2 + 100) as f64;
         assert_eq!(r, want);
         assert!(r < 0.6, "{r}");
         // Too few in the whole row: the shadow law.
-        assert_eq!(window_ratio(&[5, 5, 5], &[10, 10, 10], 1), 1.0);
+        assert_eq!(window_ratio(&[5, 5, 5], &[10, 10, 10], 1), None);
         // Through the table: a thin tail beyond s = 4 keeps the dense cells' ratio 0.5.
         let mut c = EscapeCounts::default();
         for k in 0..125 {
             let s = (k as f64 + 0.5) * DG;
-            let cell = element_cell(Stage::FIRST, -1.25, s - 1.25).unwrap();
+            let cell = element_cell(Stage::FIRST, -1.375, s - 1.375).unwrap();
             let m = if s < 4.0 { 4 * n } else { 10 };
             c.element_model[cell] = m;
             c.element_deterministic[cell] = m / 2;
         }
-        let t = EscapeTable::from_counts(c, "tail");
-        assert!((t.element_weight(Stage::FIRST, -1.25, 6.0 - 1.25) - 0.5).abs() < 1e-3);
+        let t = EscapeTable::from_counts(c.at_centres(), "tail");
+        assert!((t.element_weight(Stage::FIRST, -1.375, 6.0 - 1.375) - 0.5).abs() < 1e-3);
     }
 
     /// A weight on a six-decimal rounding boundary (16965/16000 = 1.0603125) reads back: the
@@ -934,13 +1106,95 @@ mod tests {
     #[test]
     fn a_weight_on_a_rounding_boundary_reads_back() {
         let mut c = EscapeCounts::default();
-        let cell = element_cell(Stage::FIRST, -1.25, 1.0).unwrap();
+        let cell = element_cell(Stage::FIRST, -1.375, 1.0).unwrap();
         c.element_deterministic[cell] = 16965;
         c.element_model[cell] = 16000;
         c.collisions[0] = 1;
-        let t = EscapeTable::from_counts(c, "boundary");
+        let t = EscapeTable::from_counts(c.at_centres(), "boundary");
         let back = EscapeTable::parse(&t.to_csv(), "boundary").unwrap();
         assert_eq!(back.counts(), t.counts());
+    }
+
+    /// A row's values belong at its counts' mean `x_in`, not at the bin's centre: a read
+    /// there gives the row's value, and between two rows' means the read is linear.
+    #[test]
+    fn rows_are_read_at_their_mean_incidence() {
+        let w = wall();
+        let at = |x_in: f64| {
+            // The velocity of reduced angle x_in along x (Δγ(0) = Δξ).
+            let a = x_in * w.delta_xi;
+            Vector3::new(a.cos(), a.sin(), 0.0)
+        };
+        let mut c = EscapeCounts::default();
+        // Bin [−0.375, −0.25): 400 collisions at x_in = −0.35, a quarter escaping; bin
+        // [−0.5, −0.375): 400 at −0.45, three quarters escaping; both at x_out = 1.05 (a bin
+        // centre).
+        let u_out = at(-1.05).component_mul(&Vector3::new(1.0, -1.0, 1.0));
+        for k in 0..400 {
+            c.push(Stage::FIRST, &at(-0.35), &u_out, &w, k % 4 == 0);
+            c.push(Stage::FIRST, &at(-0.45), &u_out, &w, k % 4 != 0);
+        }
+        let t = EscapeTable::from_counts(c.clone(), "positions");
+        let x_out = reduced_angle(&u_out, &w);
+        let p = |x: f64| t.p_escape(Stage::FIRST, x, x_out);
+        assert!((p(-0.35) - 0.25).abs() < 1e-9, "{}", p(-0.35));
+        assert!((p(-0.45) - 0.75).abs() < 1e-9, "{}", p(-0.45));
+        assert!((p(-0.4) - 0.5).abs() < 1e-9, "{}", p(-0.4));
+        // The bins' centres would have put the values at −0.3125 and −0.4375.
+        assert!((p(-0.3125) - 0.25).abs() < 1e-9);
+        // The positions travel with the table.
+        let back = EscapeTable::parse(&t.to_csv(), "positions").unwrap();
+        assert_eq!(back, t);
+        // A sum whose mean leaves its bin is refused; so is an edited position.
+        let text = t.to_csv();
+        let block = text.lines().position(|l| l == ROW_HEADER).unwrap();
+        let row = block
+            + text
+                .lines()
+                .skip(block)
+                .position(|l| l.starts_with("first,-0.3125,"))
+                .unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        let f: Vec<&str> = lines[row].split(',').collect();
+        let edit = |to: String| {
+            let mut l = lines.clone();
+            l[row] = &to;
+            EscapeTable::parse(&l.join("\n"), "t")
+                .unwrap_err()
+                .to_string()
+        };
+        let moved = format!("first,-0.3125,{},-0.150000,{},{}", -60_000_000, f[4], f[5]);
+        let e = edit(moved);
+        assert!(e.contains("outside its bin"), "{e}");
+        let e = edit(format!(
+            "first,-0.3125,{},-0.340000,{},{}",
+            f[2], f[4], f[5]
+        ));
+        assert!(e.contains("escape position") && e.contains("edited"), "{e}");
+    }
+
+    #[test]
+    fn the_incidence_axis_is_finest_at_grazing_incidence() {
+        assert_eq!(X_IN_BINS, 34);
+        assert_eq!(bin_in(-100.0), 0);
+        assert_eq!(bin_in(X_IN_MIN), 0);
+        assert_eq!(
+            bin_in(-0.125),
+            X_IN_EDGES.iter().position(|&e| e == -0.125).unwrap()
+        );
+        assert_eq!(bin_in(-1e-12), bin_in(-0.125));
+        assert_eq!(bin_in(0.0), bin_in(0.2));
+        assert_eq!(bin_in(100.0), X_IN_BINS - 1);
+        assert_eq!(bin_in(f64::NAN), 0);
+        for w in X_IN_EDGES.windows(2) {
+            assert!(w[1] > w[0]);
+            let width = w[1] - w[0];
+            assert!(if (-1.0..0.0).contains(&w[0]) {
+                width == 0.125
+            } else {
+                width >= 0.25
+            });
+        }
     }
 
     #[test]

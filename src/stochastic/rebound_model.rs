@@ -849,7 +849,8 @@ mod tests {
             delta_xi: 0.05,
             delta_zeta: 0.05,
         };
-        let (alpha, beta) = (-0.06, 0.0);
+        // x_in = −1.125, a row's centre (where `at_centres` puts the row's values).
+        let (alpha, beta) = (-0.05625, 0.0);
         let inc = Incidence::with_variant(alpha, beta, &wall, Variant::calibrated(None));
         let x_in = alpha / 0.05;
         let mut c = EscapeCounts::default();
@@ -865,7 +866,7 @@ mod tests {
             c.element_model[cell] = ELEMENT_MIN_COUNT;
             c.element_deterministic[cell] = if g > 0.0 { 3 } else { 1 } * ELEMENT_MIN_COUNT;
         }
-        let table = EscapeTable::from_counts(c, "w");
+        let table = EscapeTable::from_counts(c.at_centres(), "w");
         let state = (Stage::FIRST, table.element_bound(Stage::FIRST, inc.x_in));
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
         let n = 200_000;

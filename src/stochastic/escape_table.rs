@@ -370,18 +370,18 @@ fn rows_at(x_in: f64, pos: &[f64]) -> (usize, usize, f64) {
 }
 
 /// The escape probabilities of every cell (NaN where the counts resolve nothing). A cell with fewer than [`MIN_COUNT`] collisions takes the
-/// value of the nearest cell along `x_in` (same step and `x_out`) that has enough; a later
-/// step's column with none takes the later steps' pooled counts (nearest along `x_in`), then
-/// the first step's value.
+/// value of the nearest cell along `x_in` (same stage and `x_out`) that has enough; a later
+/// stage's column with none takes the later stages' pooled counts (nearest along `x_in`), then
+/// the first stage's value.
 fn escape_block(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
     let plane = X_IN_BINS * X_OUT_BINS;
     let mut p = vec![f64::NAN; SLICES * plane];
-    // The later steps pooled: the fallback of a sparse later cell.
+    // The later stages pooled: the fallback of a sparse later cell.
     let pooled = |c: usize, v: &[u64]| -> u64 { (1..SLICES).map(|k| v[k * plane + c]).sum() };
     let (pooled_c, pooled_e): (Vec<u64>, Vec<u64>) = (0..plane)
         .map(|c| (pooled(c, collisions), pooled(c, escaped)))
         .unzip();
-    for step in 0..SLICES {
+    for stage in 0..SLICES {
         for i_out in 0..X_OUT_BINS {
             // Nearest populated bin along x_in, the lower one first on a tie.
             let nearest = |c: &[u64], e: &[u64], i_in: usize, k: usize| {
@@ -397,9 +397,9 @@ fn escape_block(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
             };
             for i_in in 0..X_IN_BINS {
                 let at = i_in * X_OUT_BINS + i_out;
-                p[step * plane + at] = match nearest(collisions, escaped, i_in, step * plane) {
+                p[stage * plane + at] = match nearest(collisions, escaped, i_in, stage * plane) {
                     Some(v) => v,
-                    None if step == 0 => f64::NAN,
+                    None if stage == 0 => f64::NAN,
                     None => nearest(&pooled_c, &pooled_e, i_in, 0).unwrap_or(p[at]),
                 };
             }
@@ -409,7 +409,7 @@ fn escape_block(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
 }
 
 /// The element weights of every cell (`None` where the counts resolve nothing). An element cell with fewer than [`ELEMENT_MIN_COUNT`] draws
-/// takes, for a later step, the later steps' pooled counts; one still sparse, the ratio over
+/// takes, for a later stage, the later stages' pooled counts; one still sparse, the ratio over
 /// the narrowest window of its row that has enough ([`window_ratio`]).
 fn weight_block(deterministic: &[u64], model: &[u64]) -> Vec<Option<f64>> {
     // The shadow law's tails are where cells are sparse, and there the deterministic
@@ -1012,6 +1012,27 @@ mod tests {
                 "more rows than the grid",
             ),
         ];
+        // The rows' block: its first row with field `k` replaced.
+        let first_row = lines.iter().position(|l| *l == ROW_HEADER).unwrap() + 1;
+        let row_field = |k: usize, v: &str| {
+            let mut f: Vec<&str> = lines[first_row].split(',').collect();
+            f[k] = v;
+            edit(first_row, &f.join(","))
+        };
+        let truncated = format!("truncated after 3 of {ROWS} x_in rows");
+        let cases: Vec<(String, &str)> = cases
+            .into_iter()
+            .chain([
+                (edit(first_row, "first,1"), "2 fields"),
+                (row_field(2, "1.5"), "`1.5` is not an integer"),
+                (row_field(3, "x"), "`x` is not a number"),
+                (
+                    row_field(1, "-5.2500"),
+                    "does not match this version's grid",
+                ),
+                (lines[..first_row + 3].join("\n"), &truncated),
+            ])
+            .collect();
         for (text, needle) in cases {
             let e = match EscapeTable::parse(&text, "`stochastic.escape_table` = \"t.csv\"") {
                 Ok(_) => panic!("accepted a bad table (wanted {needle})"),
@@ -1171,6 +1192,35 @@ mod tests {
             f[2], f[4], f[5]
         ));
         assert!(e.contains("escape position") && e.contains("edited"), "{e}");
+    }
+
+    /// The element table's rows are read at the mean `x_in` of their shadow-law draws too,
+    /// and its rejection bound holds there.
+    #[test]
+    fn element_rows_are_read_at_their_mean_incidence() {
+        let mut c = EscapeCounts::default();
+        for _ in 0..2000 {
+            // Row [−0.375, −0.25) at −0.35: the deterministic run saw twice the draws.
+            c.push_element(Stage::FIRST, -0.35, 0.1, 0.1);
+            c.push_element(Stage::FIRST, -0.35, 0.1, 100.0);
+            // Row [−0.5, −0.375) at −0.45: half the draws.
+            c.push_element(Stage::FIRST, -0.45, 0.1, 0.1);
+            c.push_element(Stage::FIRST, -0.45, 100.0, 0.1);
+        }
+        // (A table must count at least one collision to be read back.)
+        c.collisions[0] = 1;
+        let t = EscapeTable::from_counts(c, "element positions");
+        for g in [-0.2, 0.1, 1.0, 3.0] {
+            let w = |x: f64| t.element_weight(Stage::FIRST, x, g);
+            assert!((w(-0.35) - 2.0).abs() < 1e-9, "{}", w(-0.35));
+            assert!((w(-0.45) - 0.5).abs() < 1e-9, "{}", w(-0.45));
+            assert!((w(-0.4) - 1.25).abs() < 1e-9, "{}", w(-0.4));
+            for x in [-0.45, -0.4, -0.35, -0.3] {
+                assert!(w(x) <= t.element_bound(Stage::FIRST, x) + 1e-12);
+            }
+        }
+        let back = EscapeTable::parse(&t.to_csv(), "element positions").unwrap();
+        assert_eq!(back, t);
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //! stochastic model with those deviations (and with the nominal ones) matches the
 //! deterministic sphere. Writes `finite-size/finite_size.csv`.
 
+use super::common::missing;
 use super::paths::{
     COMPARE, COMPARE_EFFECTIVE, COMPARE_NOMINAL, FINITE_SIZE, FINITE_SIZE_DIAMETER,
     FINITE_SIZE_DIAMETERS_UM, FINITE_SIZE_GRID, FINITE_SIZE_LAW, RADENKOVIC2021, SEC4_GLASS_STEEL,
@@ -92,11 +93,7 @@ pub fn finite_size(results: &Path, md: &mut String) -> Result<()> {
         rows.push((d, v, eff, nom));
     }
     if rows.is_empty() {
-        let _ = writeln!(
-            md,
-            "*Not run: `{}` is missing (`scripts/finite-size.sh`).*\n",
-            dir.display()
-        );
+        missing(md, "`scripts/finite-size.sh`", &dir);
         return Ok(());
     }
     table.write(&dir.join("finite_size.csv"))?;

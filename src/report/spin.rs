@@ -3,6 +3,7 @@
 //! Sec. 4 glass–steel scene, from both models (`scripts/spin.sh`). Writes `spin/spin.csv`
 //! and `spin/spin.svg`.
 
+use super::common::missing;
 use super::paths::SPIN;
 use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
@@ -84,11 +85,7 @@ pub fn spin(results: &Path, md: &mut String) -> Result<()> {
         }
     }
     if data.iter().all(|d| d.2.is_empty()) {
-        let _ = writeln!(
-            md,
-            "*Not run: `{}` is missing (`scripts/spin.sh`).*\n",
-            dir.display()
-        );
+        missing(md, "`scripts/spin.sh`", &dir);
         return Ok(());
     }
     table.write(&dir.join("spin.csv"))?;

@@ -4,6 +4,7 @@
 //! a timing, is only in `REPORT.md`); every number is read from the runs' `compare` outputs
 //! and manifests.
 
+use super::common::missing;
 use super::paths::{scene_name, COMPARE, STOCHASTIC, WALL_MODELS, WALL_MODELS_SCENES};
 use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
@@ -117,11 +118,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
         }
     }
     if all.is_empty() {
-        let _ = writeln!(
-            md,
-            "*Not run: `{}` is missing (`scripts/wall-models.sh`).*\n",
-            dir.display()
-        );
+        missing(md, "`scripts/wall-models.sh`", &dir);
         return Ok(());
     }
     table.write(&dir.join("wall_models.csv"))?;

@@ -369,11 +369,12 @@ fn rows_at(x_in: f64, pos: &[f64]) -> (usize, usize, f64) {
     }
 }
 
-/// The escape probabilities of every cell (NaN where the counts resolve nothing). A cell with fewer than [`MIN_COUNT`] collisions takes the
-/// value of the nearest cell along `x_in` (same stage and `x_out`) that has enough; a later
-/// stage's column with none takes the later stages' pooled counts (nearest along `x_in`), then
-/// the first stage's value.
-fn escape_block(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
+/// The escape probabilities of every cell. A cell with fewer than [`MIN_COUNT`] collisions
+/// takes the value of the nearest cell along `x_in` (same stage and `x_out`) that has enough;
+/// a later stage's column with none takes the later stages' pooled counts (nearest along
+/// `x_in`), then the first stage's value; a column no run saw trapped is 1 (the rebound is
+/// steep enough).
+fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
     let plane = X_IN_BINS * X_OUT_BINS;
     let mut p = vec![f64::NAN; SLICES * plane];
     // The later stages pooled: the fallback of a sparse later cell.
@@ -405,13 +406,16 @@ fn escape_block(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
             }
         }
     }
-    p
+    p.into_iter()
+        .map(|v| if v.is_nan() { 1.0 } else { v })
+        .collect()
 }
 
-/// The element weights of every cell (`None` where the counts resolve nothing). An element cell with fewer than [`ELEMENT_MIN_COUNT`] draws
-/// takes, for a later stage, the later stages' pooled counts; one still sparse, the ratio over
-/// the narrowest window of its row that has enough ([`window_ratio`]).
-fn weight_block(deterministic: &[u64], model: &[u64]) -> Vec<Option<f64>> {
+/// The element weights of every cell. An element cell with fewer than [`ELEMENT_MIN_COUNT`]
+/// draws takes, for a later stage, the later stages' pooled counts; one still sparse, the ratio
+/// over the narrowest window of its row that has enough ([`window_ratio`]); a row without
+/// enough draws keeps the shadow law (1).
+fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
     // The shadow law's tails are where cells are sparse, and there the deterministic
     // surface has fewer steep elements than the shadow law (the ratio falls to ~0.3 five Δγ
     // out): a sparse cell must not fall back to 1.
@@ -430,23 +434,16 @@ fn weight_block(deterministic: &[u64], model: &[u64]) -> Vec<Option<f64>> {
                 (&later_d[..], &later_m[..], c % plane - c % G_BINS)
             };
             window_ratio(&d[base..base + G_BINS], &m[base..base + G_BINS], c % G_BINS)
+                .unwrap_or(1.0)
         })
         .collect()
 }
 
 impl EscapeTable {
-    /// The table of `counts` ([`escape_block`], [`weight_block`]); what the counts leave
-    /// unresolved is 1 (an escape column no run saw trapped: the rebound is steep enough; an
-    /// element row without enough draws: the shadow law kept).
+    /// The table of `counts` ([`escape_probabilities`], [`element_weights`]).
     pub fn from_counts(counts: EscapeCounts, source: &str) -> EscapeTable {
-        let p: Vec<f64> = escape_block(&counts.collisions, &counts.escaped)
-            .into_iter()
-            .map(|v| if v.is_nan() { 1.0 } else { v })
-            .collect();
-        let weight: Vec<f64> = weight_block(&counts.element_deterministic, &counts.element_model)
-            .into_iter()
-            .map(|w| w.unwrap_or(1.0))
-            .collect();
+        let p = escape_probabilities(&counts.collisions, &counts.escaped);
+        let weight = element_weights(&counts.element_deterministic, &counts.element_model);
         let row_max = weight
             .chunks(G_BINS)
             .map(|r| r.iter().copied().fold(0.0, f64::max))
@@ -782,36 +779,78 @@ impl EscapeTable {
 /// The built-in table's text.
 pub const BUILTIN: &str = include_str!("../../configs/calibration/aniso-escape.csv");
 
+/// A table row's six fields, checked to be six.
+struct Fields<'a>(Vec<&'a str>);
+
+impl<'a> Fields<'a> {
+    fn of(line: &'a str) -> std::result::Result<Self, String> {
+        let f: Vec<&str> = line.split(',').collect();
+        match f.len() {
+            6 => Ok(Fields(f)),
+            n => Err(format!("{n} fields, expected 6")),
+        }
+    }
+
+    /// Field `j` as a finite number.
+    fn num(&self, j: usize) -> std::result::Result<f64, String> {
+        self.0[j]
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("`{}` is not a number", self.0[j]))
+    }
+
+    /// Field `j` as a count.
+    fn count(&self, j: usize) -> std::result::Result<u64, String> {
+        self.0[j]
+            .parse::<u64>()
+            .map_err(|_| format!("`{}` is not a non-negative integer", self.0[j]))
+    }
+
+    /// Field `j` as a signed integer.
+    fn int(&self, j: usize) -> std::result::Result<i64, String> {
+        self.0[j]
+            .parse::<i64>()
+            .map_err(|_| format!("`{}` is not an integer", self.0[j]))
+    }
+
+    /// Checks that the row is the one the fixed grid has here: its stage, its `x_in` bin
+    /// centre and, for a cell, the centre along its second axis (field 2).
+    fn at(
+        &self,
+        stage: Stage,
+        i_in: usize,
+        axis: Option<(&str, f64)>,
+    ) -> std::result::Result<(), String> {
+        let (stage, x_in) = (stage.name(), centre_in(i_in));
+        let axis_ok = match axis {
+            Some((_, v)) => (self.num(2)? - v).abs() <= 1e-9,
+            None => true,
+        };
+        if self.0[0] == stage && (self.num(1)? - x_in).abs() <= 1e-9 && axis_ok {
+            return Ok(());
+        }
+        let what = match axis {
+            Some((name, v)) => format!("the cell ({stage}, x_in = {x_in}, {name} = {v})"),
+            None => format!("the row ({stage}, x_in = {x_in})"),
+        };
+        Err(format!(
+            "expected {what}: the table does not match this version's grid"
+        ))
+    }
+}
+
 /// One row `stage,x_in,<axis>,count,count,value` of a table: checked against the cell it
 /// must be (the grid is fixed), the two counts and the value; the error without the line.
 fn parse_row(
     line: &str,
     stage: Stage,
     i_in: usize,
-    (axis_name, axis_value): (&str, f64),
+    axis: (&str, f64),
 ) -> std::result::Result<(u64, u64, f64), String> {
-    let f: Vec<&str> = line.split(',').collect();
-    if f.len() != 6 {
-        return Err(format!("{} fields, expected 6", f.len()));
-    }
-    let stage = stage.name();
-    let num = |j: usize| {
-        f[j].parse::<f64>()
-            .ok()
-            .filter(|v| v.is_finite())
-            .ok_or_else(|| format!("`{}` is not a number", f[j]))
-    };
-    let int = |j: usize| {
-        f[j].parse::<u64>()
-            .map_err(|_| format!("`{}` is not a non-negative integer", f[j]))
-    };
-    let x_in = centre_in(i_in);
-    if f[0] != stage || (num(1)? - x_in).abs() > 1e-9 || (num(2)? - axis_value).abs() > 1e-9 {
-        return Err(format!(
-            "expected the cell ({stage}, x_in = {x_in}, {axis_name} = {axis_value}): the table does not match this version's grid"
-        ));
-    }
-    Ok((int(3)?, int(4)?, num(5)?))
+    let f = Fields::of(line)?;
+    f.at(stage, i_in, Some(axis))?;
+    Ok((f.count(3)?, f.count(4)?, f.num(5)?))
 }
 
 /// One row `stage,x_in,sum,position,sum,position` of the `x_in` rows' block:
@@ -821,28 +860,9 @@ fn parse_position_row(
     stage: Stage,
     i_in: usize,
 ) -> std::result::Result<(i64, f64, i64, f64), String> {
-    let f: Vec<&str> = line.split(',').collect();
-    if f.len() != 6 {
-        return Err(format!("{} fields, expected 6", f.len()));
-    }
-    let stage = stage.name();
-    let num = |j: usize| {
-        f[j].parse::<f64>()
-            .ok()
-            .filter(|v| v.is_finite())
-            .ok_or_else(|| format!("`{}` is not a number", f[j]))
-    };
-    let int = |j: usize| {
-        f[j].parse::<i64>()
-            .map_err(|_| format!("`{}` is not an integer", f[j]))
-    };
-    let x_in = centre_in(i_in);
-    if f[0] != stage || (num(1)? - x_in).abs() > 1e-9 {
-        return Err(format!(
-            "expected the row ({stage}, x_in = {x_in}): the table does not match this version's grid"
-        ));
-    }
-    Ok((int(2)?, num(3)?, int(4)?, num(5)?))
+    let f = Fields::of(line)?;
+    f.at(stage, i_in, None)?;
+    Ok((f.int(2)?, f.num(3)?, f.int(4)?, f.num(5)?))
 }
 
 /// Bins `(lo, hi)` and the weight of `hi` for a bilinear read at `x` (centres at

@@ -56,7 +56,14 @@ impl SeenWall {
 /// std of γ* is 2.455°, Eq. (30) gives 2.472°, with this factor 2.456°.
 #[inline]
 pub fn transverse_shrink(gamma: f64, delta_gamma_sq: f64) -> f64 {
-    gamma.cos() / rms_cos(delta_gamma_sq)
+    shrink_normalised(gamma, rms_cos(delta_gamma_sq))
+}
+
+/// [`transverse_shrink`] with its normalisation `rms_cos` given (computed once per
+/// incidence on the hot path).
+#[inline]
+fn shrink_normalised(gamma: f64, rms_cos: f64) -> f64 {
+    gamma.cos() / rms_cos
 }
 
 /// `√E[cos² γ]` for `γ ~ N(0, Δγ²)`: [`transverse_shrink`]'s normalisation.
@@ -186,8 +193,7 @@ impl Incidence {
         let gamma_star = if var > 0.0 {
             let z: f64 = rng.sample(StandardNormal);
             let spread = match self.variant.kind {
-                // transverse_shrink(γ, Δγ²) with the normalisation computed once.
-                VariantKind::Calibrated => gamma.cos() / self.rms_cos,
+                VariantKind::Calibrated => shrink_normalised(gamma, self.rms_cos),
                 _ => 1.0,
             };
             mean + var.sqrt() * z * spread

@@ -127,16 +127,17 @@ pub fn field_bytes(p: &SurfaceSpec) -> u64 {
     }
 }
 
-/// Peak memory of [`generate`] for `p` in bytes (heights plus the half-spectrum).
+/// Peak memory of [`generate`] for `p` in bytes: the heights ([`field_bytes`]) plus the
+/// half-spectrum (a line of it for 1-D roughness, none for a flat or `z`-only field).
 pub fn generation_bytes(p: &SurfaceSpec) -> u64 {
     let n = p.nodes.max(1) as u64;
-    let flat = p.rms_height_m == 0.0;
-    match (p.corr_length_x_m, p.corr_length_z_m) {
-        _ if flat => 8 * n * n,
-        (None, None) | (Some(_), None) => 8 * n + 16 * (n / 2 + 1),
-        (None, Some(_)) => 8 * n * n,
-        (Some(_), Some(_)) => 8 * n * n + 16 * (n / 2 + 1) * n,
-    }
+    let spectrum = match (p.corr_length_x_m, p.corr_length_z_m) {
+        _ if p.rms_height_m == 0.0 => 0,
+        (None, None) | (Some(_), None) => 16 * (n / 2 + 1),
+        (None, Some(_)) => 0,
+        (Some(_), Some(_)) => 16 * (n / 2 + 1) * n,
+    };
+    field_bytes(p) + spectrum
 }
 
 /// Fraction of the variance carried by each DFT mode `k = 0..n` of a periodic field on

@@ -259,8 +259,8 @@ impl Case {
     }
 }
 
-/// Largest escape table read (bytes): a table of the fixed grid (28 220 rows) is about
-/// 1 MB, and its counts cannot make a row much longer than 60 bytes.
+/// Largest escape table read (bytes): a table of the fixed grid (45 152 rows) is about
+/// 1.6 MB, and its counts cannot make a row much longer than 60 bytes.
 const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 23;
 
 /// Reads the escape table at `path` (`[stochastic] escape_table`): as given, else under

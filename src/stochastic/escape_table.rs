@@ -17,7 +17,7 @@
 //!
 //! The grid is fixed (so tables are comparable and a file cannot disagree with the code
 //! about it): `x_in ∈ [−6, 6]` in 34 bins ([`X_IN_EDGES`], 0.125 wide at grazing incidence),
-//! `x_out ∈ [0, 4]` in 40 bins, five stages.
+//! `x_out ∈ [0, 4]` in 40 bins, eight stages.
 //! The probability is read bilinearly (along `x_in` between the rows' mean `x_in`, along
 //! `x_out` between bin centres, clamped at the edges); beyond `x_out = 4` it is 1 (the
 //! deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
@@ -71,11 +71,20 @@ pub const G_BINS: usize = 125;
 /// it left down a slope). A trapped particle meets a valley's other side: on the
 /// deterministic surface its next element is 0.3–0.6 Δγ steeper after a steep downslope
 /// than after a flat one, and a rising particle escapes less often after an upslope.
-pub const Q_EDGES: [f64; 3] = [-1.25, -0.5, 0.25];
+/// The lower edges are 0.5 apart because a history trapped at steep incidence (α⁻ = −32.5° on
+/// the Sec. 3 wall along its rougher direction) leaves its first element at `q ≈ −2` to `−3`,
+/// where the next element's mean `γ/Δγ` rises from 1.1 to 2.0.
+pub const Q_EDGES: [f64; 6] = [-2.75, -2.25, -1.75, -1.25, -0.5, 0.25];
+/// Half-width (in `s` cells, 0.08 each) of the window a sparse later-stage element cell may
+/// pool within its own stage ([`same_stage_ratio`]).
+pub const SAME_STAGE_S_CELLS: usize = 4;
+/// How many `x_in` bins each side a sparse later-stage element cell may pool within its own
+/// stage ([`same_stage_ratio`]).
+pub const SAME_STAGE_ROWS: usize = 6;
 /// Cells of the element correction.
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
-pub const MAGIC: &str = "# roughwall escape table v5";
+pub const MAGIC: &str = "# roughwall escape table v6";
 /// What every version's first line starts with.
 const MAGIC_STEM: &str = "# roughwall escape table v";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
@@ -316,11 +325,16 @@ pub struct EscapeTable {
 /// `j−k..=j+k` (clipped to the row) that holds [`ELEMENT_MIN_COUNT`] model draws; `None`
 /// when the whole row holds fewer.
 fn window_ratio(d: &[u64], m: &[u64], j: usize) -> Option<f64> {
+    window_ratio_within(d, m, j, usize::MAX)
+}
+
+/// [`window_ratio`] with the window's half-width at most `max_k` cells.
+fn window_ratio_within(d: &[u64], m: &[u64], j: usize, max_k: usize) -> Option<f64> {
     let (mut sd, mut sm) = (d[j], m[j]);
     let mut k = 0;
     while sm < ELEMENT_MIN_COUNT {
         k += 1;
-        if k > j && j + k >= m.len() {
+        if k > max_k || (k > j && j + k >= m.len()) {
             return None;
         }
         for i in [j.checked_sub(k), Some(j + k).filter(|&i| i < m.len())]
@@ -332,6 +346,37 @@ fn window_ratio(d: &[u64], m: &[u64], j: usize) -> Option<f64> {
         }
     }
     Some(sd as f64 / sm as f64)
+}
+
+/// The weight of a sparse later-stage element cell `c` from its own stage: the ratio over the
+/// narrowest window of at most [`SAME_STAGE_S_CELLS`] cells each side along `s`, first in
+/// its own row, then in the rows within 1, 2, … [`SAME_STAGE_ROWS`] bins along `x_in` pooled;
+/// `None` when none holds [`ELEMENT_MIN_COUNT`] draws. A trapped particle's next element
+/// depends on the memory `q` more than on `x_in` (after a steep downslope, `q < −2`, the
+/// deterministic element is 0.5 Δγ steeper than after `q ≈ −1.3`), so pooling along `x_in`
+/// within the stage keeps what pooling the stages would lose.
+fn same_stage_ratio(deterministic: &[u64], model: &[u64], c: usize) -> Option<f64> {
+    let plane = X_IN_BINS * G_BINS;
+    let (slice, i_in, j) = (c / plane, (c % plane) / G_BINS, c % G_BINS);
+    let (mut d, mut m) = (vec![0u64; G_BINS], vec![0u64; G_BINS]);
+    for r in 0..=SAME_STAGE_ROWS {
+        let rows = [
+            i_in.checked_sub(r),
+            Some(i_in + r).filter(|&i| i < X_IN_BINS),
+        ];
+        // Row i_in itself once, then the two rows r bins away.
+        for i in rows.into_iter().flatten().take(if r == 0 { 1 } else { 2 }) {
+            let b = slice * plane + i * G_BINS;
+            for g in 0..G_BINS {
+                d[g] += deterministic[b + g];
+                m[g] += model[b + g];
+            }
+        }
+        if let Some(w) = window_ratio_within(&d, &m, j, SAME_STAGE_S_CELLS) {
+            return Some(w);
+        }
+    }
+    None
 }
 
 /// The position of every `(slice, x_in bin)` row: its counts' mean `x_in` (`sums` in
@@ -412,7 +457,8 @@ fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
 }
 
 /// The element weights of every cell. An element cell with fewer than [`ELEMENT_MIN_COUNT`]
-/// draws takes, for a later stage, the later stages' pooled counts; one still sparse, the ratio
+/// draws takes, for a later stage, the ratio pooled nearby in its own stage
+/// ([`same_stage_ratio`]), else the later stages' pooled counts; one still sparse, the ratio
 /// over the narrowest window of its row that has enough ([`window_ratio`]); a row without
 /// enough draws keeps the shadow law (1).
 fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
@@ -428,6 +474,11 @@ fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
     let (later_d, later_m) = (later(deterministic), later(model));
     (0..SLICES * plane)
         .map(|c| {
+            if c >= plane && model[c] < ELEMENT_MIN_COUNT {
+                if let Some(w) = same_stage_ratio(deterministic, model, c) {
+                    return w;
+                }
+            }
             let (d, m, base) = if model[c] >= ELEMENT_MIN_COUNT || c < plane {
                 (deterministic, model, c - c % G_BINS)
             } else {
@@ -977,14 +1028,19 @@ mod tests {
 
     #[test]
     fn later_stages_are_binned_by_the_element_just_left() {
-        assert_eq!(Stage::later(-3.0), Stage::later(-1.3));
+        assert_eq!(Stage::later(-1.7), Stage::later(-1.3));
         assert_ne!(Stage::later(-1.3), Stage::later(-1.2));
+        assert_ne!(Stage::later(-1.8), Stage::later(-1.7));
+        assert_eq!(Stage::later(-9.0), Stage::later(-2.8));
         assert_eq!(Stage::later(f64::NAN), Stage::later(0.0));
         assert_eq!(Stage::later(f64::INFINITY), Stage::later(9.0));
         let names: Vec<String> = Stage::all().map(|s| s.name()).collect();
         assert_eq!(
             names,
-            ["first", "later-q0", "later-q1", "later-q2", "later-q3"]
+            [
+                "first", "later-q0", "later-q1", "later-q2", "later-q3", "later-q4", "later-q5",
+                "later-q6"
+            ]
         );
         assert!(Stage::all().filter(|s| s.is_first()).eq([Stage::FIRST]));
     }
@@ -1008,7 +1064,7 @@ mod tests {
         };
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v5", "v4", 1), "another format"),
+            (good.replacen("v6", "v5", 1), "another format"),
             (
                 good.replacen("# roughwall", "# other", 1),
                 "not an escape table",
@@ -1140,6 +1196,44 @@ mod tests {
         }
         let t = EscapeTable::from_counts(c.at_centres(), "tail");
         assert!((t.element_weight(Stage::FIRST, -1.375, 6.0 - 1.375) - 0.5).abs() < 1e-3);
+    }
+
+    /// A sparse later-stage cell takes its own stage's ratio from nearby rows before the
+    /// later stages' pooled one: after a steep downslope the next element is steeper than
+    /// after a flat one, and pooling the stages would wash that out.
+    #[test]
+    fn sparse_later_cells_pool_their_own_stage_first() {
+        let n = ELEMENT_MIN_COUNT;
+        let cell = |stage: Stage, i: usize, j: usize| (stage.0 * X_IN_BINS + i) * G_BINS + j;
+        let (steep, flat) = (Stage::later(-2.5), Stage::later(0.5));
+        let (i, j) = (12, 40);
+        let mut d = vec![0; ELEMENT_CELLS];
+        let mut m = vec![0; ELEMENT_CELLS];
+        // The sparse cell, 3 rows away the same stage with ratio 2, and the flat stage dense
+        // with ratio 0.5 at the same place.
+        m[cell(steep, i, j)] = 10;
+        d[cell(steep, i, j)] = 20;
+        m[cell(steep, i + 3, j)] = n;
+        d[cell(steep, i + 3, j)] = 2 * n;
+        m[cell(flat, i, j)] = 100 * n;
+        d[cell(flat, i, j)] = 50 * n;
+        let w = element_weights(&d, &m);
+        let want = (2 * n + 20) as f64 / (n + 10) as f64;
+        assert_eq!(w[cell(steep, i, j)], want);
+        // Beyond the window along s the same stage has nothing: the pooled stages' ratio.
+        let far = j + SAME_STAGE_S_CELLS + 1;
+        m[cell(steep, i, far)] = 10;
+        d[cell(steep, i, far)] = 10;
+        m[cell(flat, i, far)] = 100 * n;
+        d[cell(flat, i, far)] = 50 * n;
+        let w = element_weights(&d, &m);
+        let pooled = (50 * n + 10) as f64 / (100 * n + 10) as f64;
+        assert_eq!(w[cell(steep, i, far)], pooled);
+        // Rows beyond SAME_STAGE_ROWS do not count.
+        assert_eq!(
+            same_stage_ratio(&d, &m, cell(steep, i + 3 + SAME_STAGE_ROWS + 1, j)),
+            None
+        );
     }
 
     /// A weight on a six-decimal rounding boundary (16965/16000 = 1.0603125) reads back: the

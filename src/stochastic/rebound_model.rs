@@ -895,7 +895,7 @@ mod tests {
     #[test]
     fn a_trapped_particle_meets_steeper_elements_after_a_downslope() {
         // The built-in table's memory (escape_table::Q_EDGES): on the deterministic surface a
-        // particle that has just left a steep downslope (q < −1.25) meets the valley's other
+        // particle that has just left a steep downslope (q ≈ −2) meets the valley's other
         // side, steeper than after an upslope (q ≥ 0.25), at the same incidence.
         let wall = Deviations {
             delta_xi: 0.05,

@@ -76,10 +76,13 @@ pub const G_BINS: usize = 125;
 /// where the next element's mean `γ/Δγ` rises from 1.1 to 2.0.
 pub const Q_EDGES: [f64; 6] = [-2.75, -2.25, -1.75, -1.25, -0.5, 0.25];
 /// Half-width (in `s` cells, 0.08 each) of the window a sparse later-stage element cell may
-/// pool within its own stage ([`same_stage_ratio`]).
+/// pool within its own stage ([`same_stage_ratio`]). With [`SAME_STAGE_ROWS`]: between the
+/// windows measured at α⁻ = −32.5°, β⁻ = 90° on the Sec. 3 wall (±3 cells and ±3 rows: mean
+/// α⁺ −0.038° off; ±3 and ±6: +0.008°; ±5 and ±4: +0.014°; docs/models.md), not tuned
+/// further.
 pub const SAME_STAGE_S_CELLS: usize = 4;
 /// How many `x_in` bins each side a sparse later-stage element cell may pool within its own
-/// stage ([`same_stage_ratio`]).
+/// stage ([`same_stage_ratio`]; the choice: [`SAME_STAGE_S_CELLS`]).
 pub const SAME_STAGE_ROWS: usize = 6;
 /// Cells of the element correction.
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
@@ -351,28 +354,35 @@ fn window_ratio_within(d: &[u64], m: &[u64], j: usize, max_k: usize) -> Option<f
 /// The weight of a sparse later-stage element cell `c` from its own stage: the ratio over the
 /// narrowest window of at most [`SAME_STAGE_S_CELLS`] cells each side along `s`, first in
 /// its own row, then in the rows within 1, 2, … [`SAME_STAGE_ROWS`] bins along `x_in` pooled;
-/// `None` when none holds [`ELEMENT_MIN_COUNT`] draws. A trapped particle's next element
-/// depends on the memory `q` more than on `x_in` (after a steep downslope, `q < −2`, the
-/// deterministic element is 0.5 Δγ steeper than after `q ≈ −1.3`), so pooling along `x_in`
-/// within the stage keeps what pooling the stages would lose.
+/// `None` when none holds [`ELEMENT_MIN_COUNT`] draws. Pooling along `x_in` within the stage
+/// keeps the memory that pooling the stages loses: at α⁻ = −32.5°, β⁻ = 90° on the Sec. 3
+/// wall the deterministic next element has a mean `γ/Δγ` of 1.07, 1.50 and 2.00 after `q` in
+/// `[−3, −2.5)`, `[−2.5, −2)` and `[−2, −1.5)` (docs/models.md, "The valley's memory").
 fn same_stage_ratio(deterministic: &[u64], model: &[u64], c: usize) -> Option<f64> {
+    const K: usize = SAME_STAGE_S_CELLS;
     let plane = X_IN_BINS * G_BINS;
     let (slice, i_in, j) = (c / plane, (c % plane) / G_BINS, c % G_BINS);
-    let (mut d, mut m) = (vec![0u64; G_BINS], vec![0u64; G_BINS]);
+    // Only the cells within K of j can enter the window: pool those alone.
+    let (lo, hi) = (j.saturating_sub(K), (j + K).min(G_BINS - 1));
+    let (mut d, mut m) = ([0u64; 2 * K + 1], [0u64; 2 * K + 1]);
+    let n = hi - lo + 1;
     for r in 0..=SAME_STAGE_ROWS {
-        let rows = [
-            i_in.checked_sub(r),
-            Some(i_in + r).filter(|&i| i < X_IN_BINS),
-        ];
-        // Row i_in itself once, then the two rows r bins away.
-        for i in rows.into_iter().flatten().take(if r == 0 { 1 } else { 2 }) {
+        // Row i_in itself, then the two rows r bins away.
+        let rows = match r {
+            0 => [Some(i_in), None],
+            _ => [
+                i_in.checked_sub(r),
+                Some(i_in + r).filter(|&i| i < X_IN_BINS),
+            ],
+        };
+        for i in rows.into_iter().flatten() {
             let b = slice * plane + i * G_BINS;
-            for g in 0..G_BINS {
-                d[g] += deterministic[b + g];
-                m[g] += model[b + g];
+            for g in lo..=hi {
+                d[g - lo] += deterministic[b + g];
+                m[g - lo] += model[b + g];
             }
         }
-        if let Some(w) = window_ratio_within(&d, &m, j, SAME_STAGE_S_CELLS) {
+        if let Some(w) = window_ratio_within(&d[..n], &m[..n], j - lo, K) {
             return Some(w);
         }
     }
@@ -474,13 +484,10 @@ fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
     let (later_d, later_m) = (later(deterministic), later(model));
     (0..SLICES * plane)
         .map(|c| {
-            if c >= plane && model[c] < ELEMENT_MIN_COUNT {
-                if let Some(w) = same_stage_ratio(deterministic, model, c) {
-                    return w;
-                }
-            }
             let (d, m, base) = if model[c] >= ELEMENT_MIN_COUNT || c < plane {
                 (deterministic, model, c - c % G_BINS)
+            } else if let Some(w) = same_stage_ratio(deterministic, model, c) {
+                return w;
             } else {
                 (&later_d[..], &later_m[..], c % plane - c % G_BINS)
             };

@@ -6,8 +6,9 @@
 //! incidence. The deterministic simulation says otherwise (`results/REPORT.md`, "A model
 //! within the deterministic noise"): at grazing incidence a particle hits near the asperity
 //! tops and escapes more easily, and after a first collision it starts low, in a valley.
-//! So the table is indexed by the collision's stage (first, or a later one of the same
-//! history, remembering the element the particle has just left: [`Stage::later`]), by the
+//! So the table is indexed by the collision's stage (first, by the roughness angle of its
+//! incident plane: [`Stage::first`]; or a later one of the same history, remembering the
+//! element the particle has just left: [`Stage::later`]), by the
 //! incident direction and by the rebound direction, both in units of the wall's roughness
 //! angle in their own plane:
 //!
@@ -17,7 +18,7 @@
 //!
 //! The grid is fixed (so tables are comparable and a file cannot disagree with the code
 //! about it): `x_in ∈ [−6, 6]` in 34 bins ([`X_IN_EDGES`], 0.125 wide at grazing incidence),
-//! `x_out ∈ [0, 4]` in 40 bins, eight stages.
+//! `x_out ∈ [0, 4]` in 40 bins, ten stages (three first, seven later).
 //! The probability is read bilinearly (along `x_in` between the rows' mean `x_in`, along
 //! `x_out` between bin centres, clamped at the edges); beyond `x_out = 4` it is 1 (the
 //! deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
@@ -45,9 +46,21 @@ pub const X_IN_BINS: usize = X_IN_EDGES.len() - 1;
 pub const X_OUT_MAX: f64 = 4.0;
 /// Bins along `x_out`.
 pub const X_OUT_BINS: usize = 40;
-/// Slices: the first collision of a history, and the later ones by the memory `q`
-/// ([`Q_EDGES`]).
-pub const SLICES: usize = 2 + Q_EDGES.len();
+/// Slices: the first collision of a history by `Δγ(β)` ([`FIRST_DG_EDGES_DEG`]), and the
+/// later ones by the memory `q` ([`Q_EDGES`]).
+pub const SLICES: usize = FIRST_STAGES + 1 + Q_EDGES.len();
+/// Edges (degrees) of the first collision's axis: the roughness angle `Δγ(β)` of the
+/// incident plane (Eq. 35). At one reduced angle `α⁻/Δγ` the deterministic law still
+/// depends on `Δγ` itself (the small-angle reduction of Eqs. 31–33 is not exact at
+/// 5–8°): at α⁻ = −2.5°, β⁻ = 90° on the Sec. 3 wall (`Δγ` = 7.3°) a table pooling
+/// `Δγ` = 3.6–7.3° drew the first element 0.035° too flat. The edges split the calibration
+/// sweep's directions (`Δγ` 2.5° and 3.6°; 5.1–5.8°; 6.9° and 7.3°) into three stages, and a
+/// first collision reads the two stages around its `Δγ` ([`EscapeTable::first_stage`]).
+/// An axis by the anisotropy a direction sees (`Δγ*/Δγ`) fits the calibration wall as
+/// well but transfers worse to other walls: there the two are not tied together.
+pub const FIRST_DG_EDGES_DEG: [f64; 2] = [4.5, 6.5];
+/// First-collision stages (by [`FIRST_DG_EDGES_DEG`]).
+pub const FIRST_STAGES: usize = 1 + FIRST_DG_EDGES_DEG.len();
 /// Cells of a table.
 pub const CELLS: usize = SLICES * X_IN_BINS * X_OUT_BINS;
 /// Collisions a cell needs to stand on its own (one standard error of `p` is then at most
@@ -87,24 +100,26 @@ pub const SAME_STAGE_ROWS: usize = 6;
 /// Cells of the element correction.
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
-pub const MAGIC: &str = "# roughwall escape table v6";
+pub const MAGIC: &str = "# roughwall escape table v7";
 /// What every version's first line starts with.
 const MAGIC_STEM: &str = "# roughwall escape table v";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
 const ELEMENT_HEADER: &str = "element_stage,x_in,s,deterministic,model,weight";
 const ROW_HEADER: &str =
     "row_stage,x_in,escape_x_in_sum,escape_position,element_x_in_sum,element_position";
+const FIRST_HEADER: &str = "first_stage,collisions,delta_gamma_sum,delta_gamma_position";
 const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
 
 const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
 
-/// Which collision of a history: the first, or a later one with the memory of the element
-/// the particle has just left (its `q` bin, [`Q_EDGES`]).
+/// Which collision of a history: the first (its `Δγ(β)` bin, [`FIRST_DG_EDGES_DEG`]), or a
+/// later one with the memory of the element the particle has just left (its `q` bin,
+/// [`Q_EDGES`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Stage(usize);
 
 impl Stage {
-    /// The first collision (the particle comes from the flow).
+    /// The first collision (the particle comes from the flow) in the least rough planes.
     pub const FIRST: Stage = Stage(0);
 
     /// A later collision (the particle was trapped by the roughness) of a particle that has
@@ -113,7 +128,15 @@ impl Stage {
     #[inline]
     pub fn later(q: f64) -> Stage {
         let q = if q.is_nan() { 0.0 } else { q };
-        Stage(1 + Q_EDGES.iter().filter(|&&e| q >= e).count())
+        Stage(FIRST_STAGES + Q_EDGES.iter().filter(|&&e| q >= e).count())
+    }
+
+    /// The first-collision stage that counts a particle whose incident plane has roughness
+    /// angle `delta_gamma` (radians; a NaN counts as 0): its [`FIRST_DG_EDGES_DEG`] bin.
+    #[inline]
+    pub fn first(delta_gamma: f64) -> Stage {
+        let d = delta_gamma.to_degrees();
+        Stage(FIRST_DG_EDGES_DEG.iter().filter(|&&e| d >= e).count())
     }
 
     /// Every stage, in table order.
@@ -123,16 +146,29 @@ impl Stage {
 
     /// Whether this is the first collision.
     pub fn is_first(self) -> bool {
-        self.0 == 0
+        self.0 < FIRST_STAGES
     }
 
-    /// The stage's name in a table file: `first`, `later-q0`, `later-q1`, ….
+    /// The stage's name in a table file: `first-d0`, `first-d1`, `first-d2`, `later-q0`, ….
     fn name(self) -> String {
         match self.0 {
-            0 => "first".to_string(),
-            k => format!("later-q{}", k - 1),
+            k if k < FIRST_STAGES => format!("first-d{k}"),
+            k => format!("later-q{}", k - FIRST_STAGES),
         }
     }
+}
+
+/// Where one collision reads the element table ([`EscapeTable::element_read`]): the first
+/// cells of its two rows along `x_in` and the upper row's weight, its `x_in` clamped to the
+/// axis, and the rejection bound over both rows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ElementRead {
+    lo: usize,
+    hi: usize,
+    ti: f64,
+    x_in: f64,
+    /// An upper bound of the weight over every `g` (at least 1).
+    pub bound: f64,
 }
 
 /// `α/Δγ(β)` of the velocity `u` on `wall` (signed like `α`; `Δγ(β)` of Eq. 26). A smooth
@@ -186,7 +222,14 @@ pub struct EscapeCounts {
     /// incidence.
     pub escape_x_sum: Vec<i64>,
     pub element_x_sum: Vec<i64>,
+    /// First collisions per first stage and the sum of their `Δγ(β)` (in
+    /// [`DG_SUM_UNIT`]s): where each first stage's values belong along `Δγ`.
+    pub first_count: Vec<u64>,
+    pub first_dg_sum: Vec<i64>,
 }
+
+/// Units of the `Δγ` sums (degrees; integers, so that sums are exact in any order).
+const DG_SUM_UNIT: f64 = 1e-6;
 
 impl Default for EscapeCounts {
     fn default() -> Self {
@@ -197,6 +240,8 @@ impl Default for EscapeCounts {
             element_model: vec![0; ELEMENT_CELLS],
             escape_x_sum: vec![0; ROWS],
             element_x_sum: vec![0; ROWS],
+            first_count: vec![0; FIRST_STAGES],
+            first_dg_sum: vec![0; FIRST_STAGES],
         }
     }
 }
@@ -255,6 +300,17 @@ impl EscapeCounts {
         self.escape_x_sum[c / X_OUT_BINS] += x_units(x_in);
     }
 
+    /// Counts a first collision in an incident plane of roughness angle `delta_gamma`
+    /// (radians) under its stage ([`Stage::first`]).
+    pub fn push_first(&mut self, delta_gamma: f64) {
+        if !delta_gamma.is_finite() || delta_gamma <= 0.0 {
+            return;
+        }
+        let k = Stage::first(delta_gamma).0;
+        self.first_count[k] += 1;
+        self.first_dg_sum[k] += (delta_gamma.to_degrees() / DG_SUM_UNIT).round() as i64;
+    }
+
     /// Adds `other` (exact integer sums).
     pub fn add(&mut self, other: &EscapeCounts) {
         for (a, b) in self.collisions.iter_mut().zip(&other.collisions) {
@@ -277,6 +333,12 @@ impl EscapeCounts {
             *a += b;
         }
         for (a, b) in self.element_x_sum.iter_mut().zip(&other.element_x_sum) {
+            *a += b;
+        }
+        for (a, b) in self.first_count.iter_mut().zip(&other.first_count) {
+            *a += b;
+        }
+        for (a, b) in self.first_dg_sum.iter_mut().zip(&other.first_dg_sum) {
             *a += b;
         }
     }
@@ -320,6 +382,8 @@ pub struct EscapeTable {
     /// `x_in` ([`row_positions`]), for the escape and the element table.
     escape_pos: Vec<f64>,
     element_pos: Vec<f64>,
+    /// Where each first stage's values belong along `Δγ` (degrees, increasing).
+    first_pos: Vec<f64>,
     /// Where the table came from (the `# source:` line of its file).
     pub source: String,
 }
@@ -406,6 +470,35 @@ fn row_positions(sums: &[i64], counts: &[u64], min: u64) -> Vec<f64> {
         .collect()
 }
 
+/// The edges `[lo, hi)` (degrees) of first stage `k`.
+fn first_edges(k: usize) -> (f64, f64) {
+    let lo = if k == 0 {
+        0.0
+    } else {
+        FIRST_DG_EDGES_DEG[k - 1]
+    };
+    let hi = FIRST_DG_EDGES_DEG.get(k).copied().unwrap_or(f64::INFINITY);
+    (lo, hi)
+}
+
+/// The position of every first stage along `Δγ` (degrees): its first collisions' mean
+/// `Δγ(β)`, or for a stage without any a point inside its bin (its values are then the
+/// first stages' pooled ones).
+fn first_positions(sums: &[i64], counts: &[u64]) -> Vec<f64> {
+    (0..FIRST_STAGES)
+        .map(|k| {
+            if counts[k] > 0 {
+                sums[k] as f64 * DG_SUM_UNIT / counts[k] as f64
+            } else {
+                match first_edges(k) {
+                    (lo, hi) if hi.is_finite() => 0.5 * (lo + hi),
+                    (lo, _) => lo + 1.0,
+                }
+            }
+        })
+        .collect()
+}
+
 /// Rows `(lo, hi)` of a slice and the weight of `hi` for a linear read at `x_in` between the
 /// rows' positions `pos` (the slice's [`X_IN_BINS`] positions; clamped at the ends).
 #[inline]
@@ -426,16 +519,31 @@ fn rows_at(x_in: f64, pos: &[f64]) -> (usize, usize, f64) {
 
 /// The escape probabilities of every cell. A cell with fewer than [`MIN_COUNT`] collisions
 /// takes the value of the nearest cell along `x_in` (same stage and `x_out`) that has enough;
-/// a later stage's column with none takes the later stages' pooled counts (nearest along
-/// `x_in`), then the first stage's value; a column no run saw trapped is 1 (the rebound is
-/// steep enough).
+/// a column with none takes the pooled counts of its kind of stage, first or later (nearest
+/// along `x_in`; a later column then the first stages' pooled value); a column no run saw
+/// trapped is 1 (the rebound is steep enough).
 fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
     let plane = X_IN_BINS * X_OUT_BINS;
     let mut p = vec![f64::NAN; SLICES * plane];
-    // The later stages pooled: the fallback of a sparse later cell.
-    let pooled = |c: usize, v: &[u64]| -> u64 { (1..SLICES).map(|k| v[k * plane + c]).sum() };
+    // The first and the later stages pooled: the fallback of a sparse cell.
+    let pooled = |c: usize, v: &[u64], ks: std::ops::Range<usize>| -> u64 {
+        ks.map(|k| v[k * plane + c]).sum()
+    };
     let (pooled_c, pooled_e): (Vec<u64>, Vec<u64>) = (0..plane)
-        .map(|c| (pooled(c, collisions), pooled(c, escaped)))
+        .map(|c| {
+            (
+                pooled(c, collisions, FIRST_STAGES..SLICES),
+                pooled(c, escaped, FIRST_STAGES..SLICES),
+            )
+        })
+        .unzip();
+    let (first_c, first_e): (Vec<u64>, Vec<u64>) = (0..plane)
+        .map(|c| {
+            (
+                pooled(c, collisions, 0..FIRST_STAGES),
+                pooled(c, escaped, 0..FIRST_STAGES),
+            )
+        })
         .unzip();
     for stage in 0..SLICES {
         for i_out in 0..X_OUT_BINS {
@@ -455,8 +563,12 @@ fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
                 let at = i_in * X_OUT_BINS + i_out;
                 p[stage * plane + at] = match nearest(collisions, escaped, i_in, stage * plane) {
                     Some(v) => v,
-                    None if stage == 0 => f64::NAN,
-                    None => nearest(&pooled_c, &pooled_e, i_in, 0).unwrap_or(p[at]),
+                    None if stage < FIRST_STAGES => {
+                        nearest(&first_c, &first_e, i_in, 0).unwrap_or(f64::NAN)
+                    }
+                    None => nearest(&pooled_c, &pooled_e, i_in, 0)
+                        .or_else(|| nearest(&first_c, &first_e, i_in, 0))
+                        .unwrap_or(f64::NAN),
                 };
             }
         }
@@ -468,24 +580,33 @@ fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
 
 /// The element weights of every cell. An element cell with fewer than [`ELEMENT_MIN_COUNT`]
 /// draws takes, for a later stage, the ratio pooled nearby in its own stage
-/// ([`same_stage_ratio`]), else the later stages' pooled counts; one still sparse, the ratio
-/// over the narrowest window of its row that has enough ([`window_ratio`]); a row without
+/// ([`same_stage_ratio`]); else the ratio over the narrowest window that has enough
+/// ([`window_ratio`]) in the pooled row of its kind of stage (first or later); a row without
 /// enough draws keeps the shadow law (1).
 fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
     // The shadow law's tails are where cells are sparse, and there the deterministic
     // surface has fewer steep elements than the shadow law (the ratio falls to ~0.3 five Δγ
     // out): a sparse cell must not fall back to 1.
     let plane = X_IN_BINS * G_BINS;
-    let later = |v: &[u64]| -> Vec<u64> {
+    let pooled = |v: &[u64], ks: std::ops::Range<usize>| -> Vec<u64> {
         (0..plane)
-            .map(|c| (1..SLICES).map(|k| v[k * plane + c]).sum())
+            .map(|c| ks.clone().map(|k| v[k * plane + c]).sum())
             .collect()
     };
-    let (later_d, later_m) = (later(deterministic), later(model));
+    let (later_d, later_m) = (
+        pooled(deterministic, FIRST_STAGES..SLICES),
+        pooled(model, FIRST_STAGES..SLICES),
+    );
+    let (first_d, first_m) = (
+        pooled(deterministic, 0..FIRST_STAGES),
+        pooled(model, 0..FIRST_STAGES),
+    );
     (0..SLICES * plane)
         .map(|c| {
-            let (d, m, base) = if model[c] >= ELEMENT_MIN_COUNT || c < plane {
+            let (d, m, base) = if model[c] >= ELEMENT_MIN_COUNT {
                 (deterministic, model, c - c % G_BINS)
+            } else if c < FIRST_STAGES * plane {
+                (&first_d[..], &first_m[..], c % plane - c % G_BINS)
             } else if let Some(w) = same_stage_ratio(deterministic, model, c) {
                 return w;
             } else {
@@ -512,6 +633,7 @@ impl EscapeTable {
             &counts.element_model,
             ELEMENT_MIN_COUNT,
         );
+        let first_pos = first_positions(&counts.first_dg_sum, &counts.first_count);
         EscapeTable {
             counts,
             p,
@@ -519,6 +641,7 @@ impl EscapeTable {
             row_max,
             escape_pos,
             element_pos,
+            first_pos,
             source: source.to_string(),
         }
     }
@@ -529,33 +652,66 @@ impl EscapeTable {
     /// accepts a shadow-law draw with `w / bound(x_in)`.
     #[inline]
     pub fn element_weight(&self, stage: Stage, x_in: f64, g: f64) -> f64 {
-        let x_in = if x_in.is_nan() { 0.0 } else { x_in };
-        let s = g - x_in.clamp(X_IN_MIN, X_IN_MAX);
-        if s.is_nan() || !(G_MIN..G_MAX).contains(&s) {
-            return 1.0;
-        }
-        let row = stage.0 * X_IN_BINS;
-        let (i0, i1, ti) = rows_at(x_in, &self.element_pos[row..row + X_IN_BINS]);
-        let (g0, g1, tg) = axis(s, G_MIN, DG, G_BINS);
-        let at = |i: usize, j: usize| self.weight[(row + i) * G_BINS + j];
-        let lo = at(i0, g0) + (at(i0, g1) - at(i0, g0)) * tg;
-        let hi = at(i1, g0) + (at(i1, g1) - at(i1, g0)) * tg;
-        lo + (hi - lo) * ti
+        self.weight_at(&self.element_read(stage, x_in), g)
     }
 
     /// An upper bound of [`Self::element_weight`] at `x_in` (over every `g`; at least 1,
     /// the weight outside the range).
     #[inline]
     pub fn element_bound(&self, stage: Stage, x_in: f64) -> f64 {
+        self.element_read(stage, x_in).bound
+    }
+
+    /// Where a collision of `stage` at `x_in` reads the element table: found once per
+    /// collision, read once per shadow-law proposal ([`Self::weight_at`]).
+    #[inline]
+    pub fn element_read(&self, stage: Stage, x_in: f64) -> ElementRead {
         let x_in = if x_in.is_nan() { 0.0 } else { x_in };
         let row = stage.0 * X_IN_BINS;
-        let (i0, i1, _) = rows_at(x_in, &self.element_pos[row..row + X_IN_BINS]);
-        self.row_max[row + i0].max(self.row_max[row + i1]).max(1.0)
+        let (i0, i1, ti) = rows_at(x_in, &self.element_pos[row..row + X_IN_BINS]);
+        ElementRead {
+            lo: (row + i0) * G_BINS,
+            hi: (row + i1) * G_BINS,
+            ti,
+            x_in: x_in.clamp(X_IN_MIN, X_IN_MAX),
+            bound: self.row_max[row + i0].max(self.row_max[row + i1]).max(1.0),
+        }
+    }
+
+    /// [`Self::element_weight`] of an element of reduced inclination `g` where `read` says.
+    #[inline]
+    pub fn weight_at(&self, read: &ElementRead, g: f64) -> f64 {
+        let s = g - read.x_in;
+        if s.is_nan() || !(G_MIN..G_MAX).contains(&s) {
+            return 1.0;
+        }
+        let (g0, g1, tg) = axis(s, G_MIN, DG, G_BINS);
+        let w = &self.weight;
+        let lo = w[read.lo + g0] + (w[read.lo + g1] - w[read.lo + g0]) * tg;
+        let hi = w[read.hi + g0] + (w[read.hi + g1] - w[read.hi + g0]) * tg;
+        lo + (hi - lo) * read.ti
     }
 
     /// The counts the table came from.
     pub fn counts(&self) -> &EscapeCounts {
         &self.counts
+    }
+
+    /// The first stage of a collision in an incident plane of roughness angle `delta_gamma`
+    /// (radians), given a uniform draw `u` in `[0, 1)`: of the two first stages whose
+    /// positions along `Δγ` bracket it, the upper one with probability `t` (the linear
+    /// weight between them; clamped at the ends). The particle's first collision then
+    /// follows the mixture `(1 − t)·law(lo) + t·law(hi)` exactly, at the cost of one table
+    /// read: on the deterministic surface the law at one reduced angle still depends on the
+    /// roughness angle itself (docs/models.md).
+    #[inline]
+    pub fn first_stage(&self, delta_gamma: f64, u: f64) -> Stage {
+        let d = delta_gamma.to_degrees();
+        let pos = &self.first_pos;
+        let k = pos[1..FIRST_STAGES - 1].partition_point(|&p| p <= d);
+        let t = (d - pos[k]) / (pos[k + 1] - pos[k]);
+        // (A NaN `t` compares false: the lower stage.)
+        Stage(if u < t { k + 1 } else { k })
     }
 
     /// The probability of cell `(stage, i_in, i_out)`.
@@ -638,6 +794,17 @@ impl EscapeTable {
                     self.element_pos[r]
                 ));
             }
+        }
+        s.push_str(FIRST_HEADER);
+        s.push('\n');
+        for k in 0..FIRST_STAGES {
+            s.push_str(&format!(
+                "{},{},{},{:.6}\n",
+                Stage(k).name(),
+                self.counts.first_count[k],
+                self.counts.first_dg_sum[k],
+                self.first_pos[k]
+            ));
         }
         s
     }
@@ -751,6 +918,21 @@ impl EscapeTable {
                 ) = f;
             }
         }
+        header(
+            lines.next(),
+            FIRST_HEADER,
+            &format!("after the {ROWS} x_in rows"),
+        )?;
+        let mut written_first_pos = vec![0.0; FIRST_STAGES];
+        for (k, pos) in written_first_pos.iter_mut().enumerate() {
+            let (n, l) = lines.next().ok_or_else(|| {
+                Error::Input(format!(
+                    "{what}: truncated after {k} of {FIRST_STAGES} first-stage rows"
+                ))
+            })?;
+            let f = parse_first_row(l, Stage(k)).map_err(|m| bad(n, &m))?;
+            (counts.first_count[k], counts.first_dg_sum[k], *pos) = f;
+        }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
             return Err(bad(n, "more rows than the grid has"));
         }
@@ -758,10 +940,17 @@ impl EscapeTable {
         // The written values must be the ones the counts give (a hand-edited or corrupted
         // table is refused rather than silently recomputed).
         // Compared as written (six decimals): a value on a rounding boundary must not differ
-        // by the last bit of a subtraction.
+        // by the last bit of a subtraction. A written value within 4.5·10⁻⁷ of its computed
+        // one is that value rounded (the next six-decimal value is at least 5.5·10⁻⁷ away),
+        // so only the others are formatted: this keeps a host's start-up short.
         let edited = |kind: &str, written: &[f64], computed: &[f64]| {
             (0..written.len())
-                .find(|&k| format!("{:.6}", written[k]) != format!("{:.6}", computed[k]))
+                .find(|&k| {
+                    let (w, c) = (written[k], computed[k]);
+                    // (A NaN difference is not close: formatted.)
+                    let close = (w - c).abs() < 4.5e-7;
+                    !close && format!("{w:.6}") != format!("{c:.6}")
+                })
                 .map(|k| {
                     Error::Input(format!(
                         "{what}: {kind} row {} gives {} but its counts give {:.6} (edited or corrupted)",
@@ -798,6 +987,20 @@ impl EscapeTable {
                     pos[r]
                 )));
             }
+        }
+        if let Some(e) = edited("first-stage position", &written_first_pos, &table.first_pos) {
+            return Err(e);
+        }
+        // A first stage's mean Δγ must lie in its bin (else the positions do not increase).
+        if let Some(k) = (0..FIRST_STAGES).find(|&k| {
+            let (lo, hi) = first_edges(k);
+            !(lo..hi).contains(&table.first_pos[k])
+        }) {
+            return Err(Error::Input(format!(
+                "{what}: the Δγ sum of first stage {} puts its mean at {}° outside its bin (edited or corrupted)",
+                Stage(k).name(),
+                table.first_pos[k]
+            )));
         }
         if table.counts.total() == 0 {
             return Err(Error::Input(format!("{what}: no collisions counted")));
@@ -923,6 +1126,19 @@ fn parse_position_row(
     Ok((f.int(2)?, f.num(3)?, f.int(4)?, f.num(5)?))
 }
 
+/// One row `stage,count,sum,position` of the first stages' block: checked against the
+/// stage it must be; the count, the `Δγ` sum and the position.
+fn parse_first_row(line: &str, stage: Stage) -> std::result::Result<(u64, i64, f64), String> {
+    let f = Fields(line.split(',').collect());
+    if f.0.len() != 4 || f.0[0] != stage.name() {
+        return Err(format!(
+            "expected the first-stage row `{},<collisions>,<Δγ sum>,<position>`: the table does not match this version's grid",
+            stage.name()
+        ));
+    }
+    Ok((f.count(1)?, f.int(2)?, f.num(3)?))
+}
+
 /// Bins `(lo, hi)` and the weight of `hi` for a bilinear read at `x` (centres at
 /// `min + (i + ½) dx`, clamped).
 #[inline]
@@ -1045,11 +1261,79 @@ mod tests {
         assert_eq!(
             names,
             [
-                "first", "later-q0", "later-q1", "later-q2", "later-q3", "later-q4", "later-q5",
-                "later-q6"
+                "first-d0", "first-d1", "first-d2", "later-q0", "later-q1", "later-q2", "later-q3",
+                "later-q4", "later-q5", "later-q6"
             ]
         );
-        assert!(Stage::all().filter(|s| s.is_first()).eq([Stage::FIRST]));
+        assert!(Stage::all()
+            .filter(|s| s.is_first())
+            .eq([Stage(0), Stage(1), Stage(2)]));
+        assert!(!Stage::later(-9.0).is_first());
+    }
+
+    #[test]
+    fn first_collisions_are_binned_and_read_by_the_roughness_angle() {
+        let deg = f64::to_radians;
+        assert_eq!(Stage::first(deg(2.5)), Stage::FIRST);
+        assert_eq!(Stage::first(deg(4.49)), Stage::FIRST);
+        assert_eq!(Stage::first(deg(4.5)), Stage(1));
+        assert_eq!(Stage::first(deg(7.5)), Stage(2));
+        assert_eq!(Stage::first(f64::NAN), Stage::FIRST);
+        // Three first stages with different escape probabilities in one cell column, their
+        // collisions at mean Δγ 3°, 5° and 7°.
+        let mut c = EscapeCounts::default();
+        for (k, (d, escaped)) in [(3.0, 100), (5.0, 200), (7.0, 300)].into_iter().enumerate() {
+            for i_out in 0..X_OUT_BINS {
+                c.collisions[cell(Stage(k), 10, i_out)] = 400;
+                c.escaped[cell(Stage(k), 10, i_out)] = escaped;
+            }
+            for _ in 0..4 {
+                c.push_first(deg(d));
+            }
+        }
+        let t = EscapeTable::from_counts(c.at_centres(), "t");
+        let x_in = centre_in(10);
+        // The mixture's escape probability over a uniform grid of draws.
+        let n = 10_000;
+        let p = |d: f64| {
+            (0..n)
+                .map(|i| {
+                    t.p_escape(
+                        t.first_stage(deg(d), (i as f64 + 0.5) / n as f64),
+                        x_in,
+                        1.0,
+                    )
+                })
+                .sum::<f64>()
+                / n as f64
+        };
+        // At a stage's position its own value, between two positions the linear blend,
+        // beyond the ends the end stage's value.
+        for (d, want) in [
+            (3.0, 0.25),
+            (5.0, 0.5),
+            (7.0, 0.75),
+            (4.0, 0.375),
+            (6.5, 0.6875),
+            (1.0, 0.25),
+            (9.0, 0.75),
+        ] {
+            assert!((p(d) - want).abs() < 1e-4, "{d}: {} against {want}", p(d));
+        }
+        assert!(p(f64::NAN).is_finite());
+        // Round trip, and a position outside its bin is refused.
+        let text = t.to_csv();
+        assert_eq!(EscapeTable::parse(&text, "t").unwrap(), t);
+        let bad = text.replace(
+            "first-d0,4,12000000,3.000000",
+            "first-d0,4,20000000,5.000000",
+        );
+        assert_ne!(bad, text);
+        let err = EscapeTable::parse(&bad, "t").unwrap_err().to_string();
+        assert!(
+            err.contains("first-d0") && err.contains("outside its bin"),
+            "{err}"
+        );
     }
 
     #[test]
@@ -1071,7 +1355,7 @@ mod tests {
         };
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v6", "v5", 1), "another format"),
+            (good.replacen("v7", "v6", 1), "another format"),
             (
                 good.replacen("# roughwall", "# other", 1),
                 "not an escape table",
@@ -1294,7 +1578,7 @@ mod tests {
             + text
                 .lines()
                 .skip(block)
-                .position(|l| l.starts_with("first,-0.3125,"))
+                .position(|l| l.starts_with("first-d0,-0.3125,"))
                 .unwrap();
         let lines: Vec<&str> = text.lines().collect();
         let f: Vec<&str> = lines[row].split(',').collect();
@@ -1305,11 +1589,14 @@ mod tests {
                 .unwrap_err()
                 .to_string()
         };
-        let moved = format!("first,-0.3125,{},-0.150000,{},{}", -60_000_000, f[4], f[5]);
+        let moved = format!(
+            "first-d0,-0.3125,{},-0.150000,{},{}",
+            -60_000_000, f[4], f[5]
+        );
         let e = edit(moved);
         assert!(e.contains("outside its bin"), "{e}");
         let e = edit(format!(
-            "first,-0.3125,{},-0.340000,{},{}",
+            "first-d0,-0.3125,{},-0.340000,{},{}",
             f[2], f[4], f[5]
         ));
         assert!(e.contains("escape position") && e.contains("edited"), "{e}");

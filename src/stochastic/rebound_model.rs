@@ -5,7 +5,7 @@
 //! collision: it needs only the incident state, the wall's two deviations, the
 //! collision law and a random generator — no surface, no tables.
 
-use super::escape_table::{reduced_angle, EscapeTable, Stage};
+use super::escape_table::{reduced_angle, ElementRead, EscapeTable, Stage};
 use super::shadow_effect::ShadowSampler;
 use super::variants::{Variant, VariantKind};
 use crate::angles::{
@@ -162,15 +162,14 @@ impl Incidence {
     fn draw_wall_corrected<R: Rng + ?Sized>(
         &self,
         table: &EscapeTable,
-        &(stage, bound): &(Stage, f64),
+        (_, read): &(Stage, ElementRead),
         rng: &mut R,
     ) -> SeenWall {
-        let (dg, x_in) = (self.sampler.delta_gamma(), self.x_in);
+        let dg = self.sampler.delta_gamma();
         let mut gamma = self.sampler.sample(rng);
         // The bound makes ~1–2 proposals typical; the cap only guards a degenerate table.
         for _ in 0..1000 {
-            if dg <= 0.0 || rng.gen::<f64>() * bound < table.element_weight(stage, x_in, gamma / dg)
-            {
+            if dg <= 0.0 || rng.gen::<f64>() * read.bound < table.weight_at(read, gamma / dg) {
                 break;
             }
             gamma = self.sampler.sample(rng);
@@ -579,7 +578,7 @@ fn rebound_repeated<R: Rng + ?Sized>(
         omega_in,
         rng,
         observe,
-        |_, _| (),
+        |_, _, _| (),
         |cur, _, rng| cur.draw_variant(rng),
         |_, _, u_out, _| u_out.y > 0.0,
     )
@@ -614,16 +613,16 @@ fn rebound_calibrated<R: Rng + ?Sized>(
         rng,
         observe,
         // Per hit, once: its stage (for a later hit, by the inclination of the element just
-        // left, seen from the new direction: the valley's memory) and the element weight's
-        // bound at its reduced angle.
-        |cur, left| {
+        // left, seen from the new direction: the valley's memory) and where the element
+        // table is read at its reduced angle (rows and bound, once per hit).
+        |cur, left, rng| {
             let stage = match left {
-                None => Stage::FIRST,
+                None => table.first_stage(cur.moments.delta_gamma(), rng.gen()),
                 Some(n) => {
                     Stage::later(gamma_from_normal(n, cur.beta).0 / cur.moments.delta_gamma())
                 }
             };
-            (stage, table.element_bound(stage, cur.x_in))
+            (stage, table.element_read(stage, cur.x_in))
         },
         |cur, state, rng| cur.draw_wall_corrected(table, state, rng),
         |cur, &(stage, _), u_out, rng| {
@@ -674,7 +673,7 @@ impl<'a> Hits<'a> {
         omega_in: Vector3<f64>,
         rng: &mut R,
         mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
-        at_hit: impl Fn(&Incidence, Option<&Vector3<f64>>) -> S,
+        mut at_hit: impl FnMut(&Incidence, Option<&Vector3<f64>>, &mut R) -> S,
         mut draw: impl FnMut(&Incidence, &S, &mut R) -> SeenWall,
         mut leaves: impl FnMut(&Incidence, &S, &Vector3<f64>, &mut R) -> bool,
     ) -> Rebound {
@@ -682,7 +681,7 @@ impl<'a> Hits<'a> {
         let mut cur = *self.inc;
         let mut candidates = 0u32;
         let mut first = SeenWall::FLAT;
-        let mut state = at_hit(&cur, None);
+        let mut state = at_hit(&cur, None, rng);
         for tries in 1..=MAX_TRIES {
             let seen = draw(&cur, &state, rng);
             if u.dot(&seen.normal) >= 0.0 {
@@ -707,7 +706,7 @@ impl<'a> Hits<'a> {
                 alpha.min(-1e-12)
             };
             cur = Incidence::with_variant(alpha, beta, self.wall, self.inc.variant);
-            state = at_hit(&cur, Some(&seen.normal));
+            state = at_hit(&cur, Some(&seen.normal), rng);
         }
         guard_rebound(u, w, self.law, self.diameter_m, candidates, first, observe)
     }
@@ -873,7 +872,7 @@ mod tests {
             c.element_deterministic[cell] = if g > 0.0 { 3 } else { 1 } * ELEMENT_MIN_COUNT;
         }
         let table = EscapeTable::from_counts(c.at_centres(), "w");
-        let state = (Stage::FIRST, table.element_bound(Stage::FIRST, inc.x_in));
+        let state = (Stage::FIRST, table.element_read(Stage::FIRST, inc.x_in));
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
         let n = 200_000;
         let plain = (0..n)
@@ -905,7 +904,7 @@ mod tests {
         let table = EscapeTable::builtin();
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(9);
         let mut mean = |stage: Stage| {
-            let state = (stage, table.element_bound(stage, inc.x_in));
+            let state = (stage, table.element_read(stage, inc.x_in));
             let n = 100_000;
             (0..n)
                 .map(|_| inc.draw_wall_corrected(table, &state, &mut rng).gamma / 0.05)

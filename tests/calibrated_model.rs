@@ -132,7 +132,7 @@ fn bad_tables_are_refused_in_one_line() {
     let old_format = write("old.csv", &good.replacen("table v7", "table v6", 1));
     let lines: Vec<&str> = good.lines().collect();
     let mut shifted = lines.clone();
-    shifted[3] = "first,-5.500,0.050,10,1,0.100000";
+    shifted[3] = "first-d0,-5.500,0.050,10,1,0.100000";
     let shifted = write("shifted.csv", &shifted.join("\n"));
     for (model, path, needle) in [
         (
@@ -188,16 +188,23 @@ fn bad_tables_are_refused_in_one_line() {
 
 #[test]
 fn later_collisions_follow_the_table_of_the_later_stage() {
-    // The model's two stages differ where the deterministic run says they do: a particle
-    // trapped after a first collision escapes less easily at the same reduced angles.
+    // The first and the later stages differ where the deterministic run says they do: a
+    // particle trapped after a first collision escapes less easily at the same reduced
+    // angles, whatever the first collision's roughness angle.
     let t = EscapeTable::builtin();
-    let mut lower = 0;
-    for x_out in [0.2, 0.4, 0.6, 0.8] {
-        if t.p_escape(Stage::later(-0.75), -1.0, x_out) < t.p_escape(Stage::FIRST, -1.0, x_out) {
-            lower += 1;
+    for dg in [2.5, 5.5, 7.3] {
+        let first = Stage::first(f64::to_radians(dg));
+        let mut lower = 0;
+        for x_out in [0.2, 0.4, 0.6, 0.8] {
+            if t.p_escape(Stage::later(-0.75), -1.0, x_out) < t.p_escape(first, -1.0, x_out) {
+                lower += 1;
+            }
         }
+        assert!(
+            lower >= 3,
+            "Δγ = {dg}°: later-stage escape not lower at 3 of 4 points"
+        );
     }
-    assert!(lower >= 3, "later-stage escape not lower at 3 of 4 points");
 }
 
 /// `calibrated` draws γ* about Eq. (30)'s conditional mean with Eq. (30)'s spread times

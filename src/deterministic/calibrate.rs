@@ -50,9 +50,10 @@ pub fn escape_counts(
                     // from the new direction (its memory `q`).
                     let stages: Vec<Stage> = (0..hits.len())
                         .map(|j| match j {
+                            // The first by its plane's Δγ, counted along Δγ once.
                             0 => {
                                 let beta = incident_angles(&hits[0].0).1;
-                                Stage::first(delta_gamma(&setup.wall, beta))
+                                counts.push_first(delta_gamma(&setup.wall, beta))
                             }
                             _ => {
                                 let beta = incident_angles(&hits[j].0).1;
@@ -82,9 +83,6 @@ pub fn escape_counts(
                             g_det / dg,
                             g_model / dg,
                         );
-                    }
-                    if let Some((u_in, _, _)) = hits.first() {
-                        counts.push_first(delta_gamma(&setup.wall, incident_angles(u_in).1));
                     }
                     if h.fate == Fate::Escaped {
                         let last = hits.len().saturating_sub(1);

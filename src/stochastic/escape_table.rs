@@ -51,11 +51,12 @@ pub const X_OUT_BINS: usize = 40;
 pub const SLICES: usize = FIRST_STAGES + 1 + Q_EDGES.len();
 /// Edges (degrees) of the first collision's axis: the roughness angle `Δγ(β)` of the
 /// incident plane (Eq. 35). At one reduced angle `α⁻/Δγ` the deterministic law still
-/// depends on `Δγ` itself (the small-angle reduction of Eqs. 31–33 is not exact at
-/// 5–8°): at α⁻ = −2.5°, β⁻ = 90° on the Sec. 3 wall (`Δγ` = 7.3°) a table pooling
-/// `Δγ` = 3.6–7.3° drew the first element 0.035° too flat. The edges split the calibration
-/// sweep's directions (`Δγ` 2.5° and 3.6°; 5.1–5.8°; 6.9° and 7.3°) into three stages, and a
-/// first collision reads the two stages around its `Δγ` ([`EscapeTable::first_stage`]).
+/// depends on `Δγ` itself (presumably through the small-angle reductions behind Eqs. 31–33,
+/// not exact at 5–8°; not isolated): at α⁻ = −2.5°, β⁻ = 90° on the Sec. 3 wall
+/// (`Δγ` = 7.3°) a table pooling `Δγ` = 3.6–7.3° drew the first element 0.035° too flat.
+/// The edges split the calibration sweep's directions (`Δγ` 2.5° and 3.6°; 5.1–5.8°; 6.9°
+/// and 7.3°) into three stages, and a first collision reads one of the two stages around
+/// its `Δγ` ([`EscapeTable::first_stage`]).
 /// An axis by the anisotropy a direction sees (`Δγ*/Δγ`) fits the calibration wall as
 /// well but transfers worse to other walls: there the two are not tied together.
 pub const FIRST_DG_EDGES_DEG: [f64; 2] = [4.5, 6.5];
@@ -301,14 +302,15 @@ impl EscapeCounts {
     }
 
     /// Counts a first collision in an incident plane of roughness angle `delta_gamma`
-    /// (radians) under its stage ([`Stage::first`]).
-    pub fn push_first(&mut self, delta_gamma: f64) {
-        if !delta_gamma.is_finite() || delta_gamma <= 0.0 {
-            return;
+    /// (radians) and returns its stage ([`Stage::first`]; a plane without roughness is not
+    /// counted along `Δγ`).
+    pub fn push_first(&mut self, delta_gamma: f64) -> Stage {
+        let stage = Stage::first(delta_gamma);
+        if delta_gamma.is_finite() && delta_gamma > 0.0 {
+            self.first_count[stage.0] += 1;
+            self.first_dg_sum[stage.0] += (delta_gamma.to_degrees() / DG_SUM_UNIT).round() as i64;
         }
-        let k = Stage::first(delta_gamma).0;
-        self.first_count[k] += 1;
-        self.first_dg_sum[k] += (delta_gamma.to_degrees() / DG_SUM_UNIT).round() as i64;
+        stage
     }
 
     /// Adds `other` (exact integer sums).
@@ -488,8 +490,8 @@ fn first_positions(sums: &[i64], counts: &[u64]) -> Vec<f64> {
     (0..FIRST_STAGES)
         .map(|k| {
             if counts[k] > 0 {
-                // Inside its bin even if every sum was rounded up onto the upper edge (the
-                // reader checks that positions lie in their bins).
+                // Inside its bin even if every sum was rounded up onto the upper edge, so
+                // that the positions increase.
                 let (lo, hi) = first_edges(k);
                 let mean = sums[k] as f64 * DG_SUM_UNIT / counts[k] as f64;
                 mean.max(lo).min(hi - DG_SUM_UNIT)
@@ -521,6 +523,13 @@ fn rows_at(x_in: f64, pos: &[f64]) -> (usize, usize, f64) {
     }
 }
 
+/// The counts `v` of `stages` added cell by cell: one stage's plane of `plane` cells.
+fn pooled_stages(v: &[u64], plane: usize, stages: std::ops::Range<usize>) -> Vec<u64> {
+    (0..plane)
+        .map(|c| stages.clone().map(|k| v[k * plane + c]).sum())
+        .collect()
+}
+
 /// The escape probabilities of every cell. A cell with fewer than [`MIN_COUNT`] collisions
 /// takes the value of the nearest cell along `x_in` (same stage and `x_out`) that has enough;
 /// a column with none takes the pooled counts of its kind of stage, first or later (nearest
@@ -530,25 +539,14 @@ fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
     let plane = X_IN_BINS * X_OUT_BINS;
     let mut p = vec![f64::NAN; SLICES * plane];
     // The first and the later stages pooled: the fallback of a sparse cell.
-    let pooled = |c: usize, v: &[u64], ks: std::ops::Range<usize>| -> u64 {
-        ks.map(|k| v[k * plane + c]).sum()
-    };
-    let (pooled_c, pooled_e): (Vec<u64>, Vec<u64>) = (0..plane)
-        .map(|c| {
-            (
-                pooled(c, collisions, FIRST_STAGES..SLICES),
-                pooled(c, escaped, FIRST_STAGES..SLICES),
-            )
-        })
-        .unzip();
-    let (first_c, first_e): (Vec<u64>, Vec<u64>) = (0..plane)
-        .map(|c| {
-            (
-                pooled(c, collisions, 0..FIRST_STAGES),
-                pooled(c, escaped, 0..FIRST_STAGES),
-            )
-        })
-        .unzip();
+    let (first_c, first_e) = (
+        pooled_stages(collisions, plane, 0..FIRST_STAGES),
+        pooled_stages(escaped, plane, 0..FIRST_STAGES),
+    );
+    let (pooled_c, pooled_e) = (
+        pooled_stages(collisions, plane, FIRST_STAGES..SLICES),
+        pooled_stages(escaped, plane, FIRST_STAGES..SLICES),
+    );
     for stage in 0..SLICES {
         for i_out in 0..X_OUT_BINS {
             // Nearest populated bin along x_in, the lower one first on a tie.
@@ -592,18 +590,13 @@ fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
     // surface has fewer steep elements than the shadow law (the ratio falls to ~0.3 five Δγ
     // out): a sparse cell must not fall back to 1.
     let plane = X_IN_BINS * G_BINS;
-    let pooled = |v: &[u64], ks: std::ops::Range<usize>| -> Vec<u64> {
-        (0..plane)
-            .map(|c| ks.clone().map(|k| v[k * plane + c]).sum())
-            .collect()
-    };
-    let (later_d, later_m) = (
-        pooled(deterministic, FIRST_STAGES..SLICES),
-        pooled(model, FIRST_STAGES..SLICES),
-    );
     let (first_d, first_m) = (
-        pooled(deterministic, 0..FIRST_STAGES),
-        pooled(model, 0..FIRST_STAGES),
+        pooled_stages(deterministic, plane, 0..FIRST_STAGES),
+        pooled_stages(model, plane, 0..FIRST_STAGES),
+    );
+    let (later_d, later_m) = (
+        pooled_stages(deterministic, plane, FIRST_STAGES..SLICES),
+        pooled_stages(model, plane, FIRST_STAGES..SLICES),
     );
     (0..SLICES * plane)
         .map(|c| {
@@ -1265,6 +1258,67 @@ mod tests {
             .filter(|s| s.is_first())
             .eq([Stage(0), Stage(1), Stage(2)]));
         assert!(!Stage::later(-9.0).is_first());
+    }
+
+    /// The model reads a first collision's stage by its plane's `Δγ`: with a table whose
+    /// roughest first stage never lets a particle leave after its first collision (but for
+    /// rebounds beyond `x_out = 4`, which always leave), a wall rougher than that stage's
+    /// position loses its single collisions, one below the middle position keeps them, and
+    /// half way between the two upper positions half of them are lost.
+    #[test]
+    fn the_model_reads_the_first_stage_of_its_roughness_angle() {
+        use crate::collision::CollisionLaw;
+        use crate::stochastic::rebound_model::rebound_variant;
+        use crate::stochastic::Variant;
+        use rand::SeedableRng;
+        let deg = f64::to_radians;
+        let table = |trap_roughest: bool| -> &'static EscapeTable {
+            let mut c = EscapeCounts::default();
+            for k in 0..SLICES {
+                for i in 0..X_IN_BINS {
+                    for o in 0..X_OUT_BINS {
+                        let j = cell(Stage(k), i, o);
+                        c.collisions[j] = 400;
+                        c.escaped[j] = if trap_roughest && k == 2 { 0 } else { 400 };
+                    }
+                }
+            }
+            for d in [3.0, 5.0, 7.0] {
+                c.push_first(deg(d));
+            }
+            EscapeTable::from_counts(c.at_centres(), "stages").intern()
+        };
+        let single = |t: &'static EscapeTable, d: f64| {
+            let wall = Deviations {
+                delta_xi: deg(d),
+                delta_zeta: deg(d),
+            };
+            // The same reduced incidence on every wall.
+            let u = crate::angles::velocity_from_angles(1.0, -0.3 * deg(d), 0.0);
+            let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(4);
+            let n = 20_000;
+            let v = Variant::calibrated(Some(t));
+            (0..n)
+                .filter(|_| {
+                    let law = CollisionLaw::Elastic;
+                    rebound_variant(u, Vector3::zeros(), &wall, &law, 2.0, 1e-4, v, &mut rng)
+                        .candidates
+                        == 1
+                })
+                .count() as f64
+                / n as f64
+        };
+        let (trap, free) = (table(true), table(false));
+        // (A first rebound into the mean wall is trapped whatever the table says.)
+        assert!(single(free, 8.0) > 0.8, "{}", single(free, 8.0));
+        let steep = single(trap, 8.0) / single(free, 8.0);
+        assert!(steep < 0.25, "{steep}");
+        assert_eq!(single(trap, 4.0), single(free, 4.0));
+        let half = single(trap, 6.0) / single(free, 6.0);
+        assert!(
+            (half - 0.5 * (1.0 + steep)).abs() < 0.03,
+            "{half} ({steep})"
+        );
     }
 
     #[test]

@@ -742,6 +742,14 @@ mod tests {
         v
     }
 
+    /// This module's tests one at a time: a process spawned by one test (`dead_pid`) holds a
+    /// copy of every open descriptor between its fork and its exec, so another test's run
+    /// lock could seem held by "another run" for that moment.
+    fn serial() -> std::sync::MutexGuard<'static, ()> {
+        static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+        SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
     /// The pid of a process that has exited.
     fn dead_pid() -> u32 {
         let mut c = std::process::Command::new("true").spawn().unwrap();
@@ -752,6 +760,7 @@ mod tests {
 
     #[test]
     fn commit_swaps_and_drop_discards() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let d = tmp.path().join("d");
         let o = OutputDir::begin(&d, "--out").unwrap();
@@ -777,6 +786,7 @@ mod tests {
 
     #[test]
     fn the_rename_fallback_swaps_too() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let d = tmp.path().join("d");
         manifest(&d, "old = 1\n");
@@ -793,6 +803,7 @@ mod tests {
 
     #[test]
     fn nested_entries_are_carried() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let d = tmp.path().join("d");
         manifest(&d, "");
@@ -815,6 +826,7 @@ mod tests {
 
     #[test]
     fn a_second_run_on_the_same_out_is_refused() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let d = tmp.path().join("d");
         let o = OutputDir::begin(&d, "--out").unwrap();
@@ -829,6 +841,7 @@ mod tests {
 
     #[test]
     fn leftovers_of_killed_runs_are_cleaned_or_put_back() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let d = tmp.path().join("d");
         let pid = dead_pid();
@@ -850,6 +863,7 @@ mod tests {
 
     #[test]
     fn foreign_files_and_non_directories_are_refused() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let f = tmp.path().join("f");
         fs::write(&f, "x").unwrap();
@@ -874,6 +888,7 @@ mod tests {
 
     #[test]
     fn files_inside_out_must_not_be_outputs() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let d = tmp.path().join("d");
         let outs = ["run.toml", "a.csv"];
@@ -894,6 +909,7 @@ mod tests {
 
     #[test]
     fn resolve_applies_dots_to_missing_parts() {
+        let _serial = serial();
         let tmp = tempfile::tempdir().unwrap();
         let base = fs::canonicalize(tmp.path()).unwrap();
         assert_eq!(

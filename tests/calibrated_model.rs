@@ -129,7 +129,7 @@ fn bad_tables_are_refused_in_one_line() {
     let half: Vec<&str> = good.lines().take(900).collect();
     let truncated = write("trunc.csv", &half.join("\n"));
     let not_table = write("other.csv", "alpha,beta\n1,2\n");
-    let old_format = write("old.csv", &good.replacen("table v7", "table v6", 1));
+    let old_format = write("old.csv", &good.replacen("table v8", "table v7", 1));
     let lines: Vec<&str> = good.lines().collect();
     let mut shifted = lines.clone();
     shifted[3] = "first-d0,-5.500,0.050,10,1,0.100000";

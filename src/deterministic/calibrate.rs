@@ -2,14 +2,16 @@
 //! (`rebound calibrate`): every collision of every followed history is counted with its
 //! stage, its reduced incident and rebound angles and whether the particle then left the
 //! wall, and the first wall element of every history beside a draw of the paper's shadow
-//! law for the same direction ([`crate::stochastic::escape_table`]).
+//! law for the same direction ([`crate::stochastic::escape_table`]), and every later
+//! collision's transverse residual beside the element just left's
+//! ([`crate::stochastic::transverse_memory`]).
 
 use super::{history_observed, stream_prefix, Fate, HitInfo, ModelSetup, Realisations};
 use crate::angles::{gamma_from_normal, incident_angles};
 use crate::incidence::IncidentCondition;
 use crate::rng;
 use crate::stochastic::escape_table::{reduced_angle, EscapeCounts, Stage};
-use crate::stochastic::ShadowSampler;
+use crate::stochastic::{transverse_residual, ShadowSampler};
 use crate::wall::delta_gamma;
 use nalgebra::Vector3;
 use rayon::prelude::*;
@@ -47,7 +49,8 @@ pub fn escape_counts(
                         hits.push((hit.u_in, hit.u_out, hit.normal))
                     });
                     // Every collision's stage: a later one by the element just left, seen
-                    // from the new direction (its memory `q`).
+                    // from the new direction (its memory `q`), and its transverse residual
+                    // beside the element just left's, seen from the same direction.
                     let stages: Vec<Stage> = (0..hits.len())
                         .map(|j| match j {
                             // The first by its plane's Δγ, counted along Δγ once.
@@ -58,7 +61,14 @@ pub fn escape_counts(
                             _ => {
                                 let beta = incident_angles(&hits[j].0).1;
                                 let dg = delta_gamma(&setup.wall, beta);
-                                Stage::later(gamma_from_normal(&hits[j - 1].2, beta).0 / dg)
+                                let stage =
+                                    Stage::later(gamma_from_normal(&hits[j - 1].2, beta).0 / dg);
+                                counts.push_transverse(
+                                    stage,
+                                    transverse_residual(&hits[j - 1].2, beta, &setup.wall),
+                                    transverse_residual(&hits[j].2, beta, &setup.wall),
+                                );
+                                stage
                             }
                         })
                         .collect();

@@ -261,7 +261,8 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
          simulation, and follows multiple collisions instead of redrawing them (a trapped particle meets \
          the wall again with its rebound velocity; the stage of a later collision remembers the \
          inclination of the element it has just left, because a trapped particle meets the other side \
-         of its valley). The shipped table is calibrated on the (2.5°, 7.5°) \
+         of its valley, and its element leans across the path like the one just left: the transverse \
+         memory). The shipped table is calibrated on the (2.5°, 7.5°) \
          wall only ({}). Both models run with the deviations **measured on the deterministic \
          surfaces** (their `run.toml`: the generated, triangulated surfaces have a few per cent less slope than \
          nominal, and run with the nominal deviations a model is also judged on that difference), {n} particles per condition \

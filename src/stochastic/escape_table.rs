@@ -23,6 +23,7 @@
 //! `x_out` between bin centres, clamped at the edges); beyond `x_out = 4` it is 1 (the
 //! deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
 
+use super::transverse_memory::{TransverseCounts, TransverseMemory, LATER_STAGES};
 use crate::error::{Error, Result};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
@@ -101,7 +102,7 @@ pub const SAME_STAGE_ROWS: usize = 6;
 /// Cells of the element correction.
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
 /// First line of a table file (names the format and its version).
-pub const MAGIC: &str = "# roughwall escape table v7";
+pub const MAGIC: &str = "# roughwall escape table v8";
 /// What every version's first line starts with.
 const MAGIC_STEM: &str = "# roughwall escape table v";
 const HEADER: &str = "stage,x_in,x_out,collisions,escaped,p_escape";
@@ -109,6 +110,7 @@ const ELEMENT_HEADER: &str = "element_stage,x_in,s,deterministic,model,weight";
 const ROW_HEADER: &str =
     "row_stage,x_in,escape_x_in_sum,escape_position,element_x_in_sum,element_position";
 const FIRST_HEADER: &str = "first_stage,collisions,delta_gamma_sum,delta_gamma_position";
+const TRANSVERSE_HEADER: &str = "transverse_stage,pairs,z_prev_sq_sum,cross_sum,slope";
 const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
 
 const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
@@ -148,6 +150,12 @@ impl Stage {
     /// Whether this is the first collision.
     pub fn is_first(self) -> bool {
         self.0 < FIRST_STAGES
+    }
+
+    /// A later stage's index among the later stages (`None` for a first one).
+    #[inline]
+    pub fn later_index(self) -> Option<usize> {
+        self.0.checked_sub(FIRST_STAGES)
     }
 
     /// The stage's name in a table file: `first-d0`, `first-d1`, `first-d2`, `later-q0`, ….
@@ -227,6 +235,9 @@ pub struct EscapeCounts {
     /// [`DG_SUM_UNIT`]s): where each first stage's values belong along `Δγ`.
     pub first_count: Vec<u64>,
     pub first_dg_sum: Vec<i64>,
+    /// Successive elements' transverse residuals per later stage
+    /// ([`super::transverse_memory`]).
+    pub transverse: TransverseCounts,
 }
 
 /// Units of the `Δγ` sums (degrees; integers, so that sums are exact in any order).
@@ -243,6 +254,7 @@ impl Default for EscapeCounts {
             element_x_sum: vec![0; ROWS],
             first_count: vec![0; FIRST_STAGES],
             first_dg_sum: vec![0; FIRST_STAGES],
+            transverse: TransverseCounts::default(),
         }
     }
 }
@@ -301,6 +313,14 @@ impl EscapeCounts {
         self.escape_x_sum[c / X_OUT_BINS] += x_units(x_in);
     }
 
+    /// Counts a later collision's transverse residual `z` beside `z_prev` of the element the
+    /// particle has just left ([`super::transverse_memory`]); a first collision has none.
+    pub fn push_transverse(&mut self, stage: Stage, z_prev: f64, z: f64) {
+        if let Some(k) = stage.later_index() {
+            self.transverse.push(k, z_prev, z);
+        }
+    }
+
     /// Counts a first collision in an incident plane of roughness angle `delta_gamma`
     /// (radians) and returns its stage ([`Stage::first`]; a plane without roughness is not
     /// counted along `Δγ`).
@@ -343,6 +363,7 @@ impl EscapeCounts {
         for (a, b) in self.first_dg_sum.iter_mut().zip(&other.first_dg_sum) {
             *a += b;
         }
+        self.transverse.add(&other.transverse);
     }
 
     /// Sets every row's `x_in` sums as if its counts sat at the bin's centre (tables built
@@ -386,6 +407,8 @@ pub struct EscapeTable {
     element_pos: Vec<f64>,
     /// Where each first stage's values belong along `Δγ` (degrees, increasing).
     first_pos: Vec<f64>,
+    /// The later stages' transverse memory.
+    memory: TransverseMemory,
     /// Where the table came from (the `# source:` line of its file).
     pub source: String,
 }
@@ -631,6 +654,7 @@ impl EscapeTable {
             ELEMENT_MIN_COUNT,
         );
         let first_pos = first_positions(&counts.first_dg_sum, &counts.first_count);
+        let memory = TransverseMemory::from_counts(&counts.transverse);
         EscapeTable {
             counts,
             p,
@@ -639,6 +663,7 @@ impl EscapeTable {
             escape_pos,
             element_pos,
             first_pos,
+            memory,
             source: source.to_string(),
         }
     }
@@ -709,6 +734,22 @@ impl EscapeTable {
         let t = (d - pos[k]) / (pos[k + 1] - pos[k]);
         // (A NaN `t` compares false: the lower stage.)
         Stage(if u < t { k + 1 } else { k })
+    }
+
+    /// The residual of the transverse inclination of a later collision's element after an
+    /// element of residual `z_prev`, from a standard normal draw `n`
+    /// ([`super::transverse_memory`]); a first collision has no memory: `n`.
+    #[inline]
+    pub fn transverse_residual(&self, stage: Stage, z_prev: f64, n: f64) -> f64 {
+        match stage.later_index() {
+            Some(k) => self.memory.residual(k, z_prev, n),
+            None => n,
+        }
+    }
+
+    /// The transverse memory's slope of a later stage (0 for a first one).
+    pub fn transverse_slope(&self, stage: Stage) -> f64 {
+        stage.later_index().map_or(0.0, |k| self.memory.slope(k))
     }
 
     /// The probability of cell `(stage, i_in, i_out)`.
@@ -801,6 +842,19 @@ impl EscapeTable {
                 self.counts.first_count[k],
                 self.counts.first_dg_sum[k],
                 self.first_pos[k]
+            ));
+        }
+        s.push_str(TRANSVERSE_HEADER);
+        s.push('\n');
+        let t = &self.counts.transverse;
+        for k in 0..LATER_STAGES {
+            s.push_str(&format!(
+                "{},{},{},{},{:.6}\n",
+                Stage(FIRST_STAGES + k).name(),
+                t.pairs[k],
+                t.prev_sq_sum[k],
+                t.cross_sum[k],
+                self.memory.slope(k)
             ));
         }
         s
@@ -930,6 +984,25 @@ impl EscapeTable {
             let f = parse_first_row(l, Stage(k)).map_err(|m| bad(n, &m))?;
             (counts.first_count[k], counts.first_dg_sum[k], *pos) = f;
         }
+        header(
+            lines.next(),
+            TRANSVERSE_HEADER,
+            &format!("after the {FIRST_STAGES} first-stage rows"),
+        )?;
+        let mut written_slope = vec![0.0; LATER_STAGES];
+        for (k, slope) in written_slope.iter_mut().enumerate() {
+            let (n, l) = lines.next().ok_or_else(|| {
+                Error::Input(format!(
+                    "{what}: truncated after {k} of {LATER_STAGES} transverse rows"
+                ))
+            })?;
+            let t = &mut counts.transverse;
+            let f = parse_transverse_row(l, Stage(FIRST_STAGES + k)).map_err(|m| bad(n, &m))?;
+            (t.pairs[k], t.prev_sq_sum[k], t.cross_sum[k], *slope) = f;
+            if t.prev_sq_sum[k] < 0 {
+                return Err(bad(n, "a negative sum of squares"));
+            }
+        }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
             return Err(bad(n, "more rows than the grid has"));
         }
@@ -990,6 +1063,10 @@ impl EscapeTable {
         if let Some(e) = edited("first-stage position", &written_first_pos, &table.first_pos) {
             return Err(e);
         }
+        let slopes: Vec<f64> = (0..LATER_STAGES).map(|k| table.memory.slope(k)).collect();
+        if let Some(e) = edited("transverse", &written_slope, &slopes) {
+            return Err(e);
+        }
         if table.counts.total() == 0 {
             return Err(Error::Input(format!("{what}: no collisions counted")));
         }
@@ -1029,7 +1106,8 @@ impl EscapeTable {
 pub const BUILTIN: &str = include_str!("../../configs/calibration/aniso-escape.csv");
 
 /// A table row's fields (six for a cell or an `x_in` row, checked by [`Fields::of`]; four for
-/// a first-stage row, checked by [`parse_first_row`]).
+/// a first-stage row, checked by [`parse_first_row`]; five for a transverse row, checked by
+/// [`parse_transverse_row`]).
 struct Fields<'a>(Vec<&'a str>);
 
 impl<'a> Fields<'a> {
@@ -1128,6 +1206,22 @@ fn parse_first_row(line: &str, stage: Stage) -> std::result::Result<(u64, i64, f
     Ok((f.count(1)?, f.int(2)?, f.num(3)?))
 }
 
+/// One row `stage,pairs,sum,sum,slope` of the transverse block: checked against the stage
+/// it must be; the count, the two sums and the slope.
+fn parse_transverse_row(
+    line: &str,
+    stage: Stage,
+) -> std::result::Result<(u64, i64, i64, f64), String> {
+    let f = Fields(line.split(',').collect());
+    if f.0.len() != 5 || f.0[0] != stage.name() {
+        return Err(format!(
+            "expected the transverse row `{},<pairs>,<z_prev² sum>,<cross sum>,<slope>`: the table does not match this version's grid",
+            stage.name()
+        ));
+    }
+    Ok((f.count(1)?, f.int(2)?, f.int(3)?, f.num(4)?))
+}
+
 /// Bins `(lo, hi)` and the weight of `hi` for a bilinear read at `x` (centres at
 /// `min + (i + ½) dx`, clamped).
 #[inline]
@@ -1194,8 +1288,15 @@ mod tests {
             c.push(stage, &u_in, &u_out, &w, k % 5 != 0);
             let g = -1.0 + 0.004 * k as f64;
             c.push_element(stage, -1.2, g, g + 0.3);
+            let z = (k as f64 * 0.01).sin();
+            c.push_transverse(stage, z, 0.3 * z);
+            c.push_transverse(Stage::later(-1.0), z, 0.3 * z);
         }
+        assert_eq!(c.transverse.pairs.iter().sum::<u64>(), 2667);
         let t = EscapeTable::from_counts(c.clone(), "test");
+        assert!(t.transverse_slope(Stage::later(-1.0)) > 0.29);
+        assert_eq!(t.transverse_slope(Stage::FIRST), 0.0);
+        assert_eq!(t.transverse_residual(Stage::FIRST, 2.0, 0.5), 0.5);
         let back = EscapeTable::parse(&t.to_csv(), "t").unwrap();
         assert_eq!(back, t);
         assert_eq!(back.counts(), &c);
@@ -1414,7 +1515,7 @@ mod tests {
         };
         let cases: Vec<(String, &str)> = vec![
             (String::new(), "not an escape table"),
-            (good.replacen("v7", "v6", 1), "another format"),
+            (good.replacen("v8", "v7", 1), "another format"),
             (
                 good.replacen("# roughwall", "# other", 1),
                 "not an escape table",
@@ -1438,13 +1539,15 @@ mod tests {
                 "more rows than the grid",
             ),
         ];
+        // Line `row` with field `k` replaced.
+        let field_of = |row: usize, k: usize, v: &str| {
+            let mut f: Vec<&str> = lines[row].split(',').collect();
+            f[k] = v;
+            edit(row, &f.join(","))
+        };
         // The rows' block: its first row with field `k` replaced.
         let first_row = lines.iter().position(|l| *l == ROW_HEADER).unwrap() + 1;
-        let row_field = |k: usize, v: &str| {
-            let mut f: Vec<&str> = lines[first_row].split(',').collect();
-            f[k] = v;
-            edit(first_row, &f.join(","))
-        };
+        let row_field = |k: usize, v: &str| field_of(first_row, k, v);
         let truncated = format!("truncated after 3 of {ROWS} x_in rows");
         let cases: Vec<(String, &str)> = cases
             .into_iter()
@@ -1457,6 +1560,25 @@ mod tests {
                     "does not match this version's grid",
                 ),
                 (lines[..first_row + 3].join("\n"), &truncated),
+            ])
+            .collect();
+        // The transverse block: its first row with field `k` replaced.
+        let t_row = lines.iter().position(|l| *l == TRANSVERSE_HEADER).unwrap() + 1;
+        let t_field = |k: usize, v: &str| field_of(t_row, k, v);
+        let t_truncated = format!("truncated after 2 of {LATER_STAGES} transverse rows");
+        let cases: Vec<(String, &str)> = cases
+            .into_iter()
+            .chain([
+                (edit(t_row, "later-q0,1,2,3"), "expected the transverse row"),
+                (t_field(0, "later-q1"), "expected the transverse row"),
+                (t_field(1, "-1"), "not a non-negative integer"),
+                (t_field(2, "-5"), "negative sum of squares"),
+                (t_field(4, "0.123457"), "transverse row 1 gives"),
+                (lines[..t_row + 2].join("\n"), &t_truncated),
+                (
+                    lines[..t_row - 1].join("\n"),
+                    "after the 3 first-stage rows",
+                ),
             ])
             .collect();
         for (text, needle) in cases {

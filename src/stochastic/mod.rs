@@ -7,15 +7,17 @@
 //! * [`simulate`]: many rebounds of one incident condition, parallel and reproducible.
 //! * [`variants`]: the simpler rough-wall models CFD codes ship, for the benchmark.
 //! * [`escape_table`]: the calibrated escape law of the `calibrated` model.
+//! * [`transverse_memory`]: its later collisions' memory of the transverse inclination.
 pub mod escape_table;
 pub mod rebound_model;
 pub mod shadow_effect;
 pub mod simulate;
+pub mod transverse_memory;
 pub mod variants;
 
 pub use rebound_model::{
     rebound, rebound_from, rebound_from_observed, rebound_variant, single_collision_probability,
-    Incidence, Rebound, SeenWall, MAX_TRIES,
+    transverse_residual, Incidence, Rebound, SeenWall, MAX_TRIES,
 };
 pub use shadow_effect::ShadowSampler;
 pub use variants::{Variant, VariantKind};

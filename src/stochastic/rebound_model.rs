@@ -66,6 +66,28 @@ fn shrink_normalised(gamma: f64, rms_cos: f64) -> f64 {
     gamma.cos() / rms_cos
 }
 
+/// The residual of the transverse inclination of the wall element of unit normal `n` seen
+/// from direction `β` on `wall`: `γ*` less its conditional mean given `γ` (Eq. 30), over
+/// its conditional spread times [`transverse_shrink`] — the standard normal the
+/// `calibrated` model draws it from. The calibrated model's later collisions remember it
+/// ([`super::transverse_memory`]); `rebound calibrate` counts it the same way. 0 where
+/// Eq. (30) leaves `γ*` no spread.
+pub fn transverse_residual(n: &Vector3<f64>, beta: f64, wall: &Deviations) -> f64 {
+    let moments = rotated_moments(wall, beta);
+    let (gamma, gamma_star) = gamma_from_normal(n, beta);
+    residual_of_angles(&moments, rms_cos(moments.var_a), gamma, gamma_star)
+}
+
+#[inline]
+fn residual_of_angles(moments: &Moments, rms_cos: f64, gamma: f64, gamma_star: f64) -> f64 {
+    let (mean, var) = conditional_gamma_star(moments, gamma);
+    if var > 0.0 {
+        (gamma_star - mean) / (var.sqrt() * shrink_normalised(gamma, rms_cos))
+    } else {
+        0.0
+    }
+}
+
 /// `√E[cos² γ]` for `γ ~ N(0, Δγ²)`: [`transverse_shrink`]'s normalisation.
 #[inline]
 fn rms_cos(delta_gamma_sq: f64) -> f64 {
@@ -162,19 +184,35 @@ impl Incidence {
     fn draw_wall_corrected<R: Rng + ?Sized>(
         &self,
         table: &EscapeTable,
-        (_, read): &(Stage, ElementRead),
+        &(stage, read, z_prev): &(Stage, ElementRead, f64),
         rng: &mut R,
     ) -> SeenWall {
         let dg = self.sampler.delta_gamma();
         let mut gamma = self.sampler.sample(rng);
         // The bound makes ~1–2 proposals typical; the cap only guards a degenerate table.
         for _ in 0..1000 {
-            if dg <= 0.0 || rng.gen::<f64>() * read.bound < table.weight_at(read, gamma / dg) {
+            if dg <= 0.0 || rng.gen::<f64>() * read.bound < table.weight_at(&read, gamma / dg) {
                 break;
             }
             gamma = self.sampler.sample(rng);
         }
-        self.wall_given_gamma(gamma, rng)
+        // γ* of Eq. (30) with the calibrated shrink, its residual remembering the element
+        // just left (a first collision: a fresh draw).
+        let (mean, var) = conditional_gamma_star(&self.moments, gamma);
+        let gamma_star = if var > 0.0 {
+            let z = table.transverse_residual(stage, z_prev, rng.sample(StandardNormal));
+            mean + var.sqrt() * z * shrink_normalised(gamma, self.rms_cos)
+        } else {
+            mean
+        };
+        self.wall_of_gammas(gamma, gamma_star)
+    }
+
+    /// The residual of the transverse inclination of an element of inclinations
+    /// `(γ, γ*)` seen from this direction ([`transverse_residual`], with its moments).
+    #[inline]
+    fn residual_of(&self, gamma: f64, gamma_star: f64) -> f64 {
+        residual_of_angles(&self.moments, self.rms_cos, gamma, gamma_star)
     }
 
     /// Steps 3–4 for a drawn `γ`: `γ*` from Eq. (30), the normal of Eq. (23).
@@ -613,19 +651,22 @@ fn rebound_calibrated<R: Rng + ?Sized>(
         rng,
         observe,
         // Per hit, once: its stage (for a later hit, by the inclination of the element just
-        // left, seen from the new direction: the valley's memory) and where the element
-        // table is read at its reduced angle (rows and bound, once per hit).
+        // left, seen from the new direction: the valley's memory), where the element
+        // table is read at its reduced angle (rows and bound, once per hit), and the
+        // transverse residual of the element just left (0 for the first hit: unused).
         |cur, left, rng| {
-            let stage = match left {
-                None => table.first_stage(cur.moments.delta_gamma(), rng.gen()),
+            let (stage, z_prev) = match left {
+                None => (table.first_stage(cur.moments.delta_gamma(), rng.gen()), 0.0),
                 Some(n) => {
-                    Stage::later(gamma_from_normal(n, cur.beta).0 / cur.moments.delta_gamma())
+                    let (gamma, gamma_star) = gamma_from_normal(n, cur.beta);
+                    let q = gamma / cur.moments.delta_gamma();
+                    (Stage::later(q), cur.residual_of(gamma, gamma_star))
                 }
             };
-            (stage, table.element_read(stage, cur.x_in))
+            (stage, table.element_read(stage, cur.x_in), z_prev)
         },
         |cur, state, rng| cur.draw_wall_corrected(table, state, rng),
-        |cur, &(stage, _), u_out, rng| {
+        |cur, &(stage, _, _), u_out, rng| {
             u_out.y > 0.0 && {
                 let p = table.p_escape(stage, cur.x_in, reduced_angle(u_out, wall));
                 p >= 1.0 || rng.gen::<f64>() < p
@@ -872,7 +913,11 @@ mod tests {
             c.element_deterministic[cell] = if g > 0.0 { 3 } else { 1 } * ELEMENT_MIN_COUNT;
         }
         let table = EscapeTable::from_counts(c.at_centres(), "w");
-        let state = (Stage::FIRST, table.element_read(Stage::FIRST, inc.x_in));
+        let state = (
+            Stage::FIRST,
+            table.element_read(Stage::FIRST, inc.x_in),
+            0.0,
+        );
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
         let n = 200_000;
         let plain = (0..n)
@@ -904,7 +949,7 @@ mod tests {
         let table = EscapeTable::builtin();
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(9);
         let mut mean = |stage: Stage| {
-            let state = (stage, table.element_read(stage, inc.x_in));
+            let state = (stage, table.element_read(stage, inc.x_in), 0.0);
             let n = 100_000;
             (0..n)
                 .map(|_| inc.draw_wall_corrected(table, &state, &mut rng).gamma / 0.05)

@@ -1,0 +1,276 @@
+//! The transverse memory of the `calibrated` model: a trapped particle's next wall element
+//! leans across its path the way the element it has just left does.
+//!
+//! Radenkovic & Simonin 2021 draw every element's transverse inclination `γ*` afresh from
+//! Eq. (30). On the deterministic surface two successive elements of one history are a
+//! short hop apart, and the slope *across* the hop decorrelates slowly (for a Gaussian
+//! autocorrelation of length `l`, the transverse slopes at lag `d` correlate as
+//! `exp(−d²/l²)`, while the slopes *along* the hop change sign: the valley's memory of
+//! [`super::escape_table::Stage::later`]). Measured on the Sec. 4 glass–steel wall at
+//! α⁻ = −5°, β⁻ = 0° (16 surfaces, 10⁶ histories): the residuals of successive elements'
+//! `γ*` correlate by 0.45 (regression slope 0.43), where independent draws give 0; a trapped
+//! history's transverse deflections then add up too little (`β⁺ − β⁻` of the two-collision
+//! histories: std 1.41° against 1.55°).
+//!
+//! The memory is the regression of the next element's residual on the one just left, per
+//! later stage (`rebound calibrate` counts it): with `z_prev` the residual of the element
+//! just left and `N` a standard normal, the next residual is
+//! `z = b z_prev + √(1 − b² E[z_prev²]) N` (its variance stays 1, as in Eq. 30, when the
+//! model's `z_prev` has the calibration's spread). The residual is
+//! [`super::rebound_model::transverse_residual`]: `γ*` less its conditional mean, over its
+//! conditional spread (Eq. 30 with the calibrated shrink), both seen from the new direction.
+
+/// Later stages (the memory is per later stage: the valley's depth `q` sets the hop).
+pub const LATER_STAGES: usize = super::escape_table::SLICES - super::escape_table::FIRST_STAGES;
+/// Pairs a later stage needs for its own slope (the slope's standard error is then about
+/// `1/√n`: 0.03); a sparser stage takes the later stages' pooled slope.
+pub const MIN_PAIRS: u64 = 1000;
+/// Residuals are clamped to `±Z_MAX` when counted and when read: a residual of a
+/// near-degenerate conditional spread must not dominate the sums or a draw.
+pub const Z_MAX: f64 = 4.0;
+/// Units of the sums (integers, so that sums are exact in any order).
+const UNIT: f64 = 1e-6;
+/// The slope is kept within `±B_MAX` (a degenerate table cannot freeze `γ*`).
+const B_MAX: f64 = 0.95;
+
+/// Pairs of successive elements' residuals per later stage: what a calibration counts.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TransverseCounts {
+    pub pairs: Vec<u64>,
+    /// `Σ z_prev²` and `Σ z_prev z` in [`UNIT`]s.
+    pub prev_sq_sum: Vec<i64>,
+    pub cross_sum: Vec<i64>,
+}
+
+impl Default for TransverseCounts {
+    fn default() -> Self {
+        TransverseCounts {
+            pairs: vec![0; LATER_STAGES],
+            prev_sq_sum: vec![0; LATER_STAGES],
+            cross_sum: vec![0; LATER_STAGES],
+        }
+    }
+}
+
+fn clamp_z(z: f64) -> f64 {
+    z.clamp(-Z_MAX, Z_MAX)
+}
+
+impl TransverseCounts {
+    /// Counts one later collision of later stage `k` (0-based among the later stages):
+    /// the residual `z_prev` of the element just left and `z` of the element hit, both seen
+    /// from the direction between them. A non-finite pair is not counted.
+    pub fn push(&mut self, k: usize, z_prev: f64, z: f64) {
+        if !(z_prev.is_finite() && z.is_finite()) {
+            return;
+        }
+        let (p, z) = (clamp_z(z_prev), clamp_z(z));
+        self.pairs[k] += 1;
+        self.prev_sq_sum[k] += (p * p / UNIT).round() as i64;
+        self.cross_sum[k] += (p * z / UNIT).round() as i64;
+    }
+
+    /// Adds `other` (exact integer sums).
+    pub fn add(&mut self, other: &TransverseCounts) {
+        for k in 0..LATER_STAGES {
+            self.pairs[k] += other.pairs[k];
+            self.prev_sq_sum[k] += other.prev_sq_sum[k];
+            self.cross_sum[k] += other.cross_sum[k];
+        }
+    }
+}
+
+/// The memory read by the model: per later stage, the slope `b` and the spread of the
+/// fresh part.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TransverseMemory {
+    slope: Vec<f64>,
+    fresh: Vec<f64>,
+}
+
+/// `(b, E[z_prev²])` of the sums, `None` without [`MIN_PAIRS`] pairs or a spread.
+fn regression(pairs: u64, prev_sq: i64, cross: i64) -> Option<(f64, f64)> {
+    (pairs >= MIN_PAIRS && prev_sq > 0).then(|| {
+        let b = (cross as f64 / prev_sq as f64).clamp(-B_MAX, B_MAX);
+        (b, prev_sq as f64 * UNIT / pairs as f64)
+    })
+}
+
+impl TransverseMemory {
+    /// The memory of `counts`: each later stage's own regression, or for a sparse stage the
+    /// later stages' pooled one, or none (slope 0: Eq. 30's independent draws).
+    pub fn from_counts(counts: &TransverseCounts) -> TransverseMemory {
+        let pooled = regression(
+            counts.pairs.iter().sum(),
+            counts.prev_sq_sum.iter().sum(),
+            counts.cross_sum.iter().sum(),
+        );
+        let (slope, fresh) = (0..LATER_STAGES)
+            .map(|k| {
+                regression(counts.pairs[k], counts.prev_sq_sum[k], counts.cross_sum[k])
+                    .or(pooled)
+                    .map_or((0.0, 1.0), |(b, m2)| {
+                        (b, (1.0 - b * b * m2).max(0.0).sqrt())
+                    })
+            })
+            .unzip();
+        TransverseMemory { slope, fresh }
+    }
+
+    /// The slope of later stage `k`.
+    pub fn slope(&self, k: usize) -> f64 {
+        self.slope[k]
+    }
+
+    /// The next element's residual at later stage `k` after an element of residual
+    /// `z_prev`, from a standard normal draw `n`.
+    #[inline]
+    pub fn residual(&self, k: usize, z_prev: f64, n: f64) -> f64 {
+        let z_prev = if z_prev.is_finite() {
+            clamp_z(z_prev)
+        } else {
+            0.0
+        };
+        self.slope[k] * z_prev + self.fresh[k] * n
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_slope_is_the_regression_of_the_counted_pairs() {
+        let mut c = TransverseCounts::default();
+        // z = 0.4 z_prev + e, with e alternating ±0.3 so that it is uncorrelated.
+        for i in 0..2000 {
+            let zp = ((i % 17) as f64 - 8.0) / 4.0;
+            let e = if i % 2 == 0 { 0.3 } else { -0.3 };
+            c.push(2, zp, 0.4 * zp + e);
+        }
+        let m = TransverseMemory::from_counts(&c);
+        assert!((m.slope(2) - 0.4).abs() < 0.01, "{}", m.slope(2));
+        // The sparse stages take the pooled slope (here the one populated stage).
+        assert_eq!(m.slope(0), m.slope(2));
+        // The fresh part keeps the residual's variance at 1 for z_prev of the counted spread.
+        let m2 = c.prev_sq_sum[2] as f64 * UNIT / c.pairs[2] as f64;
+        let f = m.fresh[2];
+        assert!((m.slope(2).powi(2) * m2 + f * f - 1.0).abs() < 1e-12);
+        assert_eq!(m.residual(2, 1.0, 0.0), m.slope(2));
+        assert_eq!(m.residual(2, 0.0, 1.0), f);
+    }
+
+    #[test]
+    fn no_pairs_is_no_memory_and_bad_values_are_harmless() {
+        let mut c = TransverseCounts::default();
+        c.push(0, f64::NAN, 1.0);
+        c.push(0, 1.0, f64::INFINITY);
+        assert_eq!(c, TransverseCounts::default());
+        let m = TransverseMemory::from_counts(&c);
+        for k in 0..LATER_STAGES {
+            assert_eq!(m.residual(k, 2.0, 0.7), 0.7);
+        }
+        // Residuals are clamped when counted and read.
+        let mut c = TransverseCounts::default();
+        for _ in 0..MIN_PAIRS {
+            c.push(1, 1e9, 1e9);
+        }
+        assert_eq!(
+            c.prev_sq_sum[1],
+            (Z_MAX * Z_MAX / UNIT) as i64 * MIN_PAIRS as i64
+        );
+        let m = TransverseMemory::from_counts(&c);
+        assert_eq!(m.slope(1), B_MAX);
+        assert!(m.residual(1, f64::NAN, 0.0) == 0.0);
+        assert!(m.residual(1, 1e300, 0.0) <= B_MAX * Z_MAX);
+    }
+
+    /// The calibrated model's successive elements: their residuals regress on each other
+    /// with the table's slope (0 without memory: Eq. 30's independent draws).
+    #[test]
+    fn the_model_remembers_the_transverse_inclination_with_the_table_slope() {
+        use super::super::escape_table::{EscapeCounts, EscapeTable, Stage, CELLS};
+        use super::super::rebound_model::{rebound_from_observed, transverse_residual};
+        use super::super::{Incidence, Variant};
+        use crate::angles::{incident_angles, velocity_from_angles};
+        use crate::collision::CollisionLaw;
+        use crate::wall::Deviations;
+        use nalgebra::Vector3;
+        use rand::SeedableRng;
+        let deg = f64::to_radians;
+        let wall = Deviations {
+            delta_xi: deg(3.8),
+            delta_zeta: deg(7.5),
+        };
+        let measured = |b: f64| {
+            // Half the rebounds trapped: many later collisions.
+            let mut c = EscapeCounts::default();
+            for j in 0..CELLS {
+                c.collisions[j] = 400;
+                c.escaped[j] = 200;
+            }
+            for k in 0..LATER_STAGES {
+                for i in 0..2000 {
+                    let z = ((i % 21) as f64 - 10.0) / 5.0;
+                    c.transverse.push(k, z, b * z);
+                }
+            }
+            let table = EscapeTable::from_counts(c, "memory").intern();
+            assert!((table.transverse_slope(Stage::later(0.0)) - b).abs() < 1e-6);
+            let inc =
+                Incidence::with_variant(deg(-5.0), 0.0, &wall, Variant::calibrated(Some(table)));
+            let u = velocity_from_angles(1.0, deg(-5.0), 0.0);
+            let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(11);
+            let (mut pp, mut pz) = (0.0, 0.0);
+            let mut hits: Vec<(Vector3<f64>, Vector3<f64>)> = Vec::new();
+            for _ in 0..40_000 {
+                hits.clear();
+                let law = CollisionLaw::Elastic;
+                rebound_from_observed(
+                    &inc,
+                    u,
+                    Vector3::zeros(),
+                    &wall,
+                    &law,
+                    2.0,
+                    1e-4,
+                    &mut rng,
+                    |u, n, _| hits.push((*u, *n)),
+                );
+                for k in 1..hits.len() {
+                    let beta = incident_angles(&hits[k].0).1;
+                    let zp = transverse_residual(&hits[k - 1].1, beta, &wall);
+                    let z = transverse_residual(&hits[k].1, beta, &wall);
+                    pp += zp * zp;
+                    pz += zp * z;
+                }
+            }
+            pz / pp
+        };
+        for b in [0.0, 0.6] {
+            let got = measured(b);
+            assert!((got - b).abs() < 0.03, "slope {b}: measured {got}");
+        }
+    }
+
+    #[test]
+    fn sums_do_not_depend_on_the_order() {
+        let pairs: Vec<(f64, f64)> = (0..500)
+            .map(|i| ((i as f64 * 0.37).sin() * 2.0, (i as f64 * 0.11).cos()))
+            .collect();
+        let (mut a, mut b) = (TransverseCounts::default(), TransverseCounts::default());
+        for &(p, z) in &pairs {
+            a.push(3, p, z);
+        }
+        let (mut h1, mut h2) = (TransverseCounts::default(), TransverseCounts::default());
+        for &(p, z) in pairs.iter().rev().take(200) {
+            h1.push(3, p, z);
+        }
+        for &(p, z) in pairs.iter().rev().skip(200) {
+            h2.push(3, p, z);
+        }
+        b.add(&h2);
+        b.add(&h1);
+        assert_eq!(a, b);
+    }
+}

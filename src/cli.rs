@@ -67,7 +67,7 @@ pub struct CommonArgs {
     /// Without it the subcommand runs its built-in default case.
     #[arg(long, value_name = "FILE")]
     pub case: Option<PathBuf>,
-    /// Output directory [default: results/<case name>/<subcommand>/].
+    /// Output directory [default: results/CASE_NAME/SUBCOMMAND/, the case's `name`].
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Seed of every random stream; overrides the case's `seed`.
@@ -152,7 +152,7 @@ pub struct CalibrateArgs {
 
 #[derive(Args, Debug, Clone, Default)]
 pub struct MergeArgs {
-    /// Output directory [default: results/<case name>/<subcommand>/].
+    /// Output directory [default: results/CASE_NAME/SUBCOMMAND/, the case's `name`].
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Worker threads for the figures [default: all cores].

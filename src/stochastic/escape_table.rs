@@ -69,7 +69,7 @@ pub const CELLS: usize = SLICES * X_IN_BINS * X_OUT_BINS;
 /// `√(0.25/50) ≈ 0.07`); sparser cells take their neighbour's value.
 pub const MIN_COUNT: u64 = 50;
 /// Shadow-law draws a first-element cell needs for its weight (the weight's relative
-/// noise is about `√(2/n)`: 4.5 % here); sparser cells pool neighbours ([`window_ratio`]).
+/// noise is about `√(2/n)`: 4.5 % here); sparser cells pool neighbours (`window_ratio`).
 pub const ELEMENT_MIN_COUNT: u64 = 1000;
 /// Lower edge of the element's reduced local impact angle `s = (γ − α)/Δγ(β)` (`α` clamped
 /// to the `x_in` range): an element the particle can reach has `s > 0`, and the shadow law
@@ -91,13 +91,13 @@ pub const G_BINS: usize = 125;
 /// where the next element's mean `γ/Δγ` rises from 1.1 to 2.0.
 pub const Q_EDGES: [f64; 6] = [-2.75, -2.25, -1.75, -1.25, -0.5, 0.25];
 /// Half-width (in `s` cells, 0.08 each) of the window a sparse later-stage element cell may
-/// pool within its own stage ([`same_stage_ratio`]). With [`SAME_STAGE_ROWS`]: between the
+/// pool within its own stage (`same_stage_ratio`). With [`SAME_STAGE_ROWS`]: between the
 /// windows measured at α⁻ = −32.5°, β⁻ = 90° on the Sec. 3 wall (±3 cells and ±3 rows: mean
 /// α⁺ −0.038° off; ±3 and ±6: +0.008°; ±5 and ±4: +0.014°; docs/models.md), not tuned
 /// further.
 pub const SAME_STAGE_S_CELLS: usize = 4;
 /// How many `x_in` bins each side a sparse later-stage element cell may pool within its own
-/// stage ([`same_stage_ratio`]; the choice: [`SAME_STAGE_S_CELLS`]).
+/// stage (`same_stage_ratio`; the choice: [`SAME_STAGE_S_CELLS`]).
 pub const SAME_STAGE_ROWS: usize = 6;
 /// Cells of the element correction.
 pub const ELEMENT_CELLS: usize = SLICES * X_IN_BINS * G_BINS;
@@ -232,7 +232,7 @@ pub struct EscapeCounts {
     pub escape_x_sum: Vec<i64>,
     pub element_x_sum: Vec<i64>,
     /// First collisions per first stage and the sum of their `Δγ(β)` (in
-    /// [`DG_SUM_UNIT`]s): where each first stage's values belong along `Δγ`.
+    /// `DG_SUM_UNIT`s): where each first stage's values belong along `Δγ`.
     pub first_count: Vec<u64>,
     pub first_dg_sum: Vec<i64>,
     /// Successive elements' transverse residuals per later stage
@@ -420,7 +420,7 @@ fn window_ratio(d: &[u64], m: &[u64], j: usize) -> Option<f64> {
     window_ratio_within(d, m, j, usize::MAX)
 }
 
-/// [`window_ratio`] with the window's half-width at most `max_k` cells.
+/// `window_ratio` with the window's half-width at most `max_k` cells.
 fn window_ratio_within(d: &[u64], m: &[u64], j: usize, max_k: usize) -> Option<f64> {
     let (mut sd, mut sm) = (d[j], m[j]);
     let mut k = 0;
@@ -605,8 +605,8 @@ fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
 
 /// The element weights of every cell. An element cell with fewer than [`ELEMENT_MIN_COUNT`]
 /// draws takes, for a later stage, the ratio pooled nearby in its own stage
-/// ([`same_stage_ratio`]); else the ratio over the narrowest window that has enough
-/// ([`window_ratio`]) in the pooled row of its kind of stage (first or later); a row without
+/// (`same_stage_ratio`); else the ratio over the narrowest window that has enough
+/// (`window_ratio`) in the pooled row of its kind of stage (first or later); a row without
 /// enough draws keeps the shadow law (1).
 fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
     // The shadow law's tails are where cells are sparse, and there the deterministic
@@ -639,7 +639,7 @@ fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
 }
 
 impl EscapeTable {
-    /// The table of `counts` ([`escape_probabilities`], [`element_weights`]).
+    /// The table of `counts` (`escape_probabilities`, `element_weights`).
     pub fn from_counts(counts: EscapeCounts, source: &str) -> EscapeTable {
         let p = escape_probabilities(&counts.collisions, &counts.escaped);
         let weight = element_weights(&counts.element_deterministic, &counts.element_model);

@@ -37,7 +37,7 @@ const B_MAX: f64 = 0.95;
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TransverseCounts {
     pub pairs: Vec<u64>,
-    /// `Σ z_prev²` and `Σ z_prev z` in [`UNIT`]s.
+    /// `Σ z_prev²` and `Σ z_prev z` in `UNIT`s.
     pub prev_sq_sum: Vec<i64>,
     pub cross_sum: Vec<i64>,
 }

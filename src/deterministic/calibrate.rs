@@ -19,7 +19,7 @@ use rayon::prelude::*;
 /// The escape counts of histories `0..count` of every condition: the same histories (same
 /// streams) as `rebound deterministic` of the same case and seed. Exact integer sums, so
 /// the counts are the same for any thread count. The escape counts leave lost histories out;
-/// the element and first-collision counts take every collision they saw. History `i`
+/// the element, first-collision and transverse counts take every collision they saw. History `i`
 /// bounces on the realisation `deterministic` gives it ([`Realisations::for_history`]).
 pub fn escape_counts(
     surfaces: &Realisations<'_>,

@@ -23,7 +23,7 @@
 //! `x_out` between bin centres, clamped at the edges); beyond `x_out = 4` it is 1 (the
 //! deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
 
-use super::transverse_memory::{TransverseCounts, TransverseMemory, LATER_STAGES};
+use super::transverse_memory::{plausible, TransverseCounts, TransverseMemory, LATER_STAGES};
 use crate::error::{Error, Result};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
@@ -110,7 +110,7 @@ const ELEMENT_HEADER: &str = "element_stage,x_in,s,deterministic,model,weight";
 const ROW_HEADER: &str =
     "row_stage,x_in,escape_x_in_sum,escape_position,element_x_in_sum,element_position";
 const FIRST_HEADER: &str = "first_stage,collisions,delta_gamma_sum,delta_gamma_position";
-const TRANSVERSE_HEADER: &str = "transverse_stage,pairs,z_prev_sq_sum,cross_sum,slope";
+const TRANSVERSE_HEADER: &str = "transverse_stage,pairs,z_prev_sq_sum,cross_sum,slope,fresh";
 const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
 
 const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
@@ -849,12 +849,13 @@ impl EscapeTable {
         let t = &self.counts.transverse;
         for k in 0..LATER_STAGES {
             s.push_str(&format!(
-                "{},{},{},{},{:.6}\n",
+                "{},{},{},{},{:.6},{:.6}\n",
                 Stage(FIRST_STAGES + k).name(),
                 t.pairs[k],
                 t.prev_sq_sum[k],
                 t.cross_sum[k],
-                self.memory.slope(k)
+                self.memory.slope(k),
+                self.memory.fresh(k)
             ));
         }
         s
@@ -989,8 +990,9 @@ impl EscapeTable {
             TRANSVERSE_HEADER,
             &format!("after the {FIRST_STAGES} first-stage rows"),
         )?;
-        let mut written_slope = vec![0.0; LATER_STAGES];
-        for (k, slope) in written_slope.iter_mut().enumerate() {
+        let (mut written_slope, mut written_fresh) =
+            (vec![0.0; LATER_STAGES], vec![0.0; LATER_STAGES]);
+        for k in 0..LATER_STAGES {
             let (n, l) = lines.next().ok_or_else(|| {
                 Error::Input(format!(
                     "{what}: truncated after {k} of {LATER_STAGES} transverse rows"
@@ -998,9 +1000,21 @@ impl EscapeTable {
             })?;
             let t = &mut counts.transverse;
             let f = parse_transverse_row(l, Stage(FIRST_STAGES + k)).map_err(|m| bad(n, &m))?;
-            (t.pairs[k], t.prev_sq_sum[k], t.cross_sum[k], *slope) = f;
-            if t.prev_sq_sum[k] < 0 {
-                return Err(bad(n, "a negative sum of squares"));
+            (
+                t.pairs[k],
+                t.prev_sq_sum[k],
+                t.cross_sum[k],
+                written_slope[k],
+                written_fresh[k],
+            ) = f;
+            if !plausible(t.pairs[k], t.prev_sq_sum[k], t.cross_sum[k]) {
+                return Err(bad(
+                    n,
+                    &format!(
+                        "sums {} and {} cannot come from {} pairs of residuals within ±4 (0 ≤ z_prev² sum ≤ 16·10⁶ per pair, |cross sum| as large)",
+                        t.prev_sq_sum[k], t.cross_sum[k], t.pairs[k]
+                    ),
+                ));
             }
         }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
@@ -1064,7 +1078,11 @@ impl EscapeTable {
             return Err(e);
         }
         let slopes: Vec<f64> = (0..LATER_STAGES).map(|k| table.memory.slope(k)).collect();
-        if let Some(e) = edited("transverse", &written_slope, &slopes) {
+        if let Some(e) = edited("transverse slope", &written_slope, &slopes) {
+            return Err(e);
+        }
+        let fresh: Vec<f64> = (0..LATER_STAGES).map(|k| table.memory.fresh(k)).collect();
+        if let Some(e) = edited("transverse fresh", &written_fresh, &fresh) {
             return Err(e);
         }
         if table.counts.total() == 0 {
@@ -1106,7 +1124,7 @@ impl EscapeTable {
 pub const BUILTIN: &str = include_str!("../../configs/calibration/aniso-escape.csv");
 
 /// A table row's fields (six for a cell or an `x_in` row, checked by [`Fields::of`]; four for
-/// a first-stage row, checked by [`parse_first_row`]; five for a transverse row, checked by
+/// a first-stage row, checked by [`parse_first_row`]; six for a transverse row, checked by
 /// [`parse_transverse_row`]).
 struct Fields<'a>(Vec<&'a str>);
 
@@ -1206,20 +1224,20 @@ fn parse_first_row(line: &str, stage: Stage) -> std::result::Result<(u64, i64, f
     Ok((f.count(1)?, f.int(2)?, f.num(3)?))
 }
 
-/// One row `stage,pairs,sum,sum,slope` of the transverse block: checked against the stage
-/// it must be; the count, the two sums and the slope.
+/// One row `stage,pairs,sum,sum,slope,fresh` of the transverse block: checked against the
+/// stage it must be; the count, the two sums, the slope and the fresh part's spread.
 fn parse_transverse_row(
     line: &str,
     stage: Stage,
-) -> std::result::Result<(u64, i64, i64, f64), String> {
+) -> std::result::Result<(u64, i64, i64, f64, f64), String> {
     let f = Fields(line.split(',').collect());
-    if f.0.len() != 5 || f.0[0] != stage.name() {
+    if f.0.len() != 6 || f.0[0] != stage.name() {
         return Err(format!(
-            "expected the transverse row `{},<pairs>,<z_prev² sum>,<cross sum>,<slope>`: the table does not match this version's grid",
+            "expected the transverse row `{},<pairs>,<z_prev² sum>,<cross sum>,<slope>,<fresh>`: the table does not match this version's grid",
             stage.name()
         ));
     }
-    Ok((f.count(1)?, f.int(2)?, f.int(3)?, f.num(4)?))
+    Ok((f.count(1)?, f.int(2)?, f.int(3)?, f.num(4)?, f.num(5)?))
 }
 
 /// Bins `(lo, hi)` and the weight of `hi` for a bilinear read at `x` (centres at
@@ -1569,11 +1587,18 @@ mod tests {
         let cases: Vec<(String, &str)> = cases
             .into_iter()
             .chain([
-                (edit(t_row, "later-q0,1,2,3"), "expected the transverse row"),
+                (
+                    edit(t_row, "later-q0,1,2,3,4"),
+                    "expected the transverse row",
+                ),
                 (t_field(0, "later-q1"), "expected the transverse row"),
                 (t_field(1, "-1"), "not a non-negative integer"),
-                (t_field(2, "-5"), "negative sum of squares"),
-                (t_field(4, "0.123457"), "transverse row 1 gives"),
+                (t_field(2, "-5"), "cannot come from"),
+                (t_field(1, "0"), "cannot come from"),
+                (t_field(4, "0.123457"), "transverse slope row 1 gives"),
+                (t_field(5, "0.123457"), "transverse fresh row 1 gives"),
+                // More pairs for the same sums: the slope is the same, the fresh part not.
+                (t_field(1, "98789"), "transverse fresh row 1 gives"),
                 (lines[..t_row + 2].join("\n"), &t_truncated),
                 (
                     lines[..t_row - 1].join("\n"),

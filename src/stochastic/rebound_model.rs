@@ -50,7 +50,7 @@ impl SeenWall {
 
 /// The factor on the spread of `γ*` given `γ` of a facet inclined by `γ` along the incident
 /// plane, `cos γ / √E[cos² γ]` with `γ ~ N(0, Δγ²)` over the wall (`E[cos² γ] =
-/// (1 + e^{−2Δγ²})/2`): exact geometry of the facet normal (see `wall_given_gamma`) to second
+/// (1 + e^{−2Δγ²})/2`): exact geometry of the facet normal (see `draw_wall_corrected`) to second
 /// order, normalised so that the wall's marginal `Δγ*` (Eq. 27) is kept. Measured on the
 /// Sec. 3 wall at α⁻ = −2.5°, β⁻ = 90° (16 surfaces): the deterministic first elements'
 /// std of γ* is 2.455°, Eq. (30) gives 2.472°, with this factor 2.456°.
@@ -180,6 +180,14 @@ impl Incidence {
     /// [`Self::draw_wall`] with the element's `γ` law corrected by the calibrated weight
     /// `w(stage, x_in, γ/Δγ(β⁻) − x_in)` of [`EscapeTable::element_weight`]: a shadow-law
     /// draw is accepted with `w / bound` (rejection sampling: exact for the corrected law).
+    ///
+    /// `γ*` keeps Eq. (30)'s conditional mean `Cov/Δγ² · γ` (a ratio of slopes), and its
+    /// spread about it is scaled by [`transverse_shrink`]: on a real facet of slopes
+    /// `(s_l, s_t)` (along and across the incident plane) the angles are `γ ≈ s_l/N` and
+    /// `γ* ≈ s_t/N` with `N = √(1 + s_l² + s_t²)`, so a steep element (large `γ`) has a
+    /// smaller transverse angle for the same transverse slope; Eq. (30) treats the angles as
+    /// jointly Gaussian and misses this. A later collision's standardised residual remembers
+    /// the element just left (`z_prev`, [`super::transverse_memory`]).
     #[inline]
     fn draw_wall_corrected<R: Rng + ?Sized>(
         &self,
@@ -196,8 +204,7 @@ impl Incidence {
             }
             gamma = self.sampler.sample(rng);
         }
-        // γ* of Eq. (30) with the calibrated shrink, its residual remembering the element
-        // just left (a first collision: a fresh draw).
+        // (A first collision: a fresh draw.)
         let (mean, var) = conditional_gamma_star(&self.moments, gamma);
         let gamma_star = if var > 0.0 {
             let z = table.transverse_residual(stage, z_prev, rng.sample(StandardNormal));
@@ -215,25 +222,14 @@ impl Incidence {
         residual_of_angles(&self.moments, self.rms_cos, gamma, gamma_star)
     }
 
-    /// Steps 3–4 for a drawn `γ`: `γ*` from Eq. (30), the normal of Eq. (23).
-    ///
-    /// `calibrated` scales the spread of `γ*` about its conditional mean by
-    /// [`transverse_shrink`]: on a real facet of slopes `(s_l, s_t)` (along and across the
-    /// incident plane) the angles are `γ ≈ s_l/N` and `γ* ≈ s_t/N` with
-    /// `N = √(1 + s_l² + s_t²)`, so a steep element (large `γ`) has a smaller transverse
-    /// angle for the same transverse slope; Eq. (30) treats the angles as jointly Gaussian
-    /// and misses this. The conditional mean `Cov/Δγ² · γ` is a ratio of slopes and keeps
-    /// its value. The paper's model (and every other variant) draws Eq. (30) as published.
+    /// Steps 3–4 for a drawn `γ`: `γ*` from Eq. (30) as published, the normal of Eq. (23)
+    /// (`calibrated` draws its own γ*: [`Self::draw_wall_corrected`]).
     #[inline]
     fn wall_given_gamma<R: Rng + ?Sized>(&self, gamma: f64, rng: &mut R) -> SeenWall {
         let (mean, var) = conditional_gamma_star(&self.moments, gamma);
         let gamma_star = if var > 0.0 {
             let z: f64 = rng.sample(StandardNormal);
-            let spread = match self.variant.kind {
-                VariantKind::Calibrated => shrink_normalised(gamma, self.rms_cos),
-                _ => 1.0,
-            };
-            mean + var.sqrt() * z * spread
+            mean + var.sqrt() * z
         } else {
             mean
         };

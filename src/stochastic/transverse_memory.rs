@@ -30,8 +30,12 @@ pub const MIN_PAIRS: u64 = 1000;
 pub const Z_MAX: f64 = 4.0;
 /// Units of the sums (integers, so that sums are exact in any order).
 const UNIT: f64 = 1e-6;
-/// The slope is kept within `±B_MAX` (a degenerate table cannot freeze `γ*`).
+/// The slope is kept within `±B_MAX`, and the fresh part's spread at least
+/// `√(1 − B_MAX²)`: however degenerate a table, every later element keeps a fresh random part
+/// (the built-in table's slopes are at most 0.78 with `E[z_prev²]` ≈ 1: fresh parts 0.63–0.94).
 const B_MAX: f64 = 0.95;
+/// The largest `Σ z_prev²` (or `|Σ z_prev z|`) per pair, in `UNIT`s: a clamped residual's.
+pub const MAX_TERM: i64 = 16_000_000;
 
 /// Pairs of successive elements' residuals per later stage: what a calibration counts.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -59,9 +63,10 @@ fn clamp_z(z: f64) -> f64 {
 impl TransverseCounts {
     /// Counts one later collision of later stage `k` (0-based among the later stages):
     /// the residual `z_prev` of the element just left and `z` of the element hit, both seen
-    /// from the direction between them. A non-finite pair is not counted.
+    /// from the direction between them. A NaN is not counted; an infinite residual (a facet
+    /// at γ = ±90°) counts at the clamp, as the model reads it.
     pub fn push(&mut self, k: usize, z_prev: f64, z: f64) {
-        if !(z_prev.is_finite() && z.is_finite()) {
+        if z_prev.is_nan() || z.is_nan() {
             return;
         }
         let (p, z) = (clamp_z(z_prev), clamp_z(z));
@@ -88,12 +93,20 @@ pub struct TransverseMemory {
     fresh: Vec<f64>,
 }
 
-/// `(b, E[z_prev²])` of the sums, `None` without [`MIN_PAIRS`] pairs or a spread.
-fn regression(pairs: u64, prev_sq: i64, cross: i64) -> Option<(f64, f64)> {
-    (pairs >= MIN_PAIRS && prev_sq > 0).then(|| {
+/// `(b, E[z_prev²])` of the sums (wide integers: a pooled sum of hand-edited values cannot
+/// overflow), `None` without [`MIN_PAIRS`] pairs or a spread.
+fn regression(pairs: u128, prev_sq: i128, cross: i128) -> Option<(f64, f64)> {
+    (pairs >= MIN_PAIRS as u128 && prev_sq > 0).then(|| {
         let b = (cross as f64 / prev_sq as f64).clamp(-B_MAX, B_MAX);
         (b, prev_sq as f64 * UNIT / pairs as f64)
     })
+}
+
+/// Whether the sums of one stage can come from `pairs` clamped residuals (a check of a table
+/// read back: its `pairs` enter the fresh part).
+pub fn plausible(pairs: u64, prev_sq: i64, cross: i64) -> bool {
+    let bound = MAX_TERM as i128 * pairs as i128;
+    (0..=bound).contains(&(prev_sq as i128)) && (cross as i128).abs() <= bound
 }
 
 impl TransverseMemory {
@@ -101,17 +114,20 @@ impl TransverseMemory {
     /// later stages' pooled one, or none (slope 0: Eq. 30's independent draws).
     pub fn from_counts(counts: &TransverseCounts) -> TransverseMemory {
         let pooled = regression(
-            counts.pairs.iter().sum(),
-            counts.prev_sq_sum.iter().sum(),
-            counts.cross_sum.iter().sum(),
+            counts.pairs.iter().map(|&v| v as u128).sum(),
+            counts.prev_sq_sum.iter().map(|&v| v as i128).sum(),
+            counts.cross_sum.iter().map(|&v| v as i128).sum(),
         );
         let (slope, fresh) = (0..LATER_STAGES)
             .map(|k| {
-                regression(counts.pairs[k], counts.prev_sq_sum[k], counts.cross_sum[k])
-                    .or(pooled)
-                    .map_or((0.0, 1.0), |(b, m2)| {
-                        (b, (1.0 - b * b * m2).max(0.0).sqrt())
-                    })
+                let own = regression(
+                    counts.pairs[k] as u128,
+                    counts.prev_sq_sum[k] as i128,
+                    counts.cross_sum[k] as i128,
+                );
+                own.or(pooled).map_or((0.0, 1.0), |(b, m2)| {
+                    (b, (1.0 - b * b * m2).max(1.0 - B_MAX * B_MAX).sqrt())
+                })
             })
             .unzip();
         TransverseMemory { slope, fresh }
@@ -122,14 +138,20 @@ impl TransverseMemory {
         self.slope[k]
     }
 
+    /// The spread of later stage `k`'s fresh part.
+    pub fn fresh(&self, k: usize) -> f64 {
+        self.fresh[k]
+    }
+
     /// The next element's residual at later stage `k` after an element of residual
     /// `z_prev`, from a standard normal draw `n`.
     #[inline]
     pub fn residual(&self, k: usize, z_prev: f64, n: f64) -> f64 {
-        let z_prev = if z_prev.is_finite() {
-            clamp_z(z_prev)
-        } else {
+        // (An infinite residual reads at the clamp, as it was counted; a NaN as 0.)
+        let z_prev = if z_prev.is_nan() {
             0.0
+        } else {
+            clamp_z(z_prev)
         };
         self.slope[k] * z_prev + self.fresh[k] * n
     }
@@ -154,7 +176,7 @@ mod tests {
         assert_eq!(m.slope(0), m.slope(2));
         // The fresh part keeps the residual's variance at 1 for z_prev of the counted spread.
         let m2 = c.prev_sq_sum[2] as f64 * UNIT / c.pairs[2] as f64;
-        let f = m.fresh[2];
+        let f = m.fresh(2);
         assert!((m.slope(2).powi(2) * m2 + f * f - 1.0).abs() < 1e-12);
         assert_eq!(m.residual(2, 1.0, 0.0), m.slope(2));
         assert_eq!(m.residual(2, 0.0, 1.0), f);
@@ -164,8 +186,10 @@ mod tests {
     fn no_pairs_is_no_memory_and_bad_values_are_harmless() {
         let mut c = TransverseCounts::default();
         c.push(0, f64::NAN, 1.0);
-        c.push(0, 1.0, f64::INFINITY);
+        c.push(0, 1.0, f64::NAN);
         assert_eq!(c, TransverseCounts::default());
+        c.push(0, f64::INFINITY, 1.0);
+        assert_eq!((c.pairs[0], c.prev_sq_sum[0]), (1, MAX_TERM));
         let m = TransverseMemory::from_counts(&c);
         for k in 0..LATER_STAGES {
             assert_eq!(m.residual(k, 2.0, 0.7), 0.7);
@@ -179,10 +203,24 @@ mod tests {
             c.prev_sq_sum[1],
             (Z_MAX * Z_MAX / UNIT) as i64 * MIN_PAIRS as i64
         );
+        assert!(plausible(c.pairs[1], c.prev_sq_sum[1], c.cross_sum[1]));
+        assert!(!plausible(c.pairs[1], c.prev_sq_sum[1] + 1, c.cross_sum[1]));
+        assert!(!plausible(0, 1, 0) && !plausible(5, -1, 0) && !plausible(1, 0, 2 * MAX_TERM));
+        // A degenerate table keeps a fresh part.
         let m = TransverseMemory::from_counts(&c);
         assert_eq!(m.slope(1), B_MAX);
+        assert!((m.fresh(1) - (1.0 - B_MAX * B_MAX).sqrt()).abs() < 1e-15);
         assert!(m.residual(1, f64::NAN, 0.0) == 0.0);
+        assert_eq!(m.residual(1, f64::INFINITY, 0.0), B_MAX * Z_MAX);
         assert!(m.residual(1, 1e300, 0.0) <= B_MAX * Z_MAX);
+        // Sums far beyond any table's pool without overflow.
+        let mut huge = TransverseCounts::default();
+        for k in 0..LATER_STAGES {
+            (huge.pairs[k], huge.prev_sq_sum[k], huge.cross_sum[k]) =
+                (u64::MAX, i64::MAX, i64::MAX);
+        }
+        let m = TransverseMemory::from_counts(&huge);
+        assert!(m.slope(0).is_finite() && m.fresh(0).is_finite());
     }
 
     /// The calibrated model's successive elements: their residuals regress on each other
@@ -202,7 +240,7 @@ mod tests {
             delta_xi: deg(3.8),
             delta_zeta: deg(7.5),
         };
-        let measured = |b: f64| {
+        let measured = |b: f64, beta: f64| {
             // Half the rebounds trapped: many later collisions.
             let mut c = EscapeCounts::default();
             for j in 0..CELLS {
@@ -217,9 +255,13 @@ mod tests {
             }
             let table = EscapeTable::from_counts(c, "memory").intern();
             assert!((table.transverse_slope(Stage::later(0.0)) - b).abs() < 1e-6);
-            let inc =
-                Incidence::with_variant(deg(-5.0), 0.0, &wall, Variant::calibrated(Some(table)));
-            let u = velocity_from_angles(1.0, deg(-5.0), 0.0);
+            let inc = Incidence::with_variant(
+                deg(-5.0),
+                deg(beta),
+                &wall,
+                Variant::calibrated(Some(table)),
+            );
+            let u = velocity_from_angles(1.0, deg(-5.0), deg(beta));
             let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(11);
             let (mut pp, mut pz) = (0.0, 0.0);
             let mut hits: Vec<(Vector3<f64>, Vector3<f64>)> = Vec::new();
@@ -247,9 +289,14 @@ mod tests {
             }
             pz / pp
         };
-        for b in [0.0, 0.6] {
-            let got = measured(b);
-            assert!((got - b).abs() < 0.03, "slope {b}: measured {got}");
+        // Along a principal direction, and obliquely (γ and γ* correlated, β changing from
+        // hit to hit): the residuals are seen from the direction between the two elements.
+        for (b, beta) in [(0.0, 0.0), (0.6, 0.0), (0.6, 60.0)] {
+            let got = measured(b, beta);
+            assert!(
+                (got - b).abs() < 0.03,
+                "slope {b} at β⁻ = {beta}°: measured {got}"
+            );
         }
     }
 

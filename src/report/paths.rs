@@ -136,6 +136,11 @@ pub const VS_REFERENCE: &str = "vs-reference";
 pub const CALIBRATION_TABLE: &str = "table";
 /// Calibration: `deterministic` on another surface, compared with the first.
 pub const CALIBRATION_NOISE: &str = "noise";
+/// Calibration: `calibrated` run again with another seed ([`CALIBRATION_RESEED`]) against
+/// the same reference: how far the worst cells move with the model run's own Monte Carlo noise.
+pub const CALIBRATION_RESEEDED: &str = "calibrated-reseeded";
+/// Calibration: the seed of that second run.
+pub const CALIBRATION_RESEED: &str = "8";
 /// Calibration: the runs against an ensemble of surfaces (`[deterministic] surfaces`), in
 /// this directory under each scene's, laid out like the single-surface ones.
 pub const CALIBRATION_ENSEMBLE: &str = "ensemble";
@@ -169,7 +174,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 48] = [
+pub const SHELL: [(&str, &[&str]); 50] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -201,6 +206,8 @@ pub const SHELL: [(&str, &[&str]); 48] = [
     ("VS_REFERENCE", &[VS_REFERENCE]),
     ("CALIBRATION_TABLE", &[CALIBRATION_TABLE]),
     ("CALIBRATION_NOISE", &[CALIBRATION_NOISE]),
+    ("CALIBRATION_RESEEDED", &[CALIBRATION_RESEEDED]),
+    ("CALIBRATION_RESEED", &[CALIBRATION_RESEED]),
     ("CALIBRATION_ENSEMBLE", &[CALIBRATION_ENSEMBLE]),
     ("CALIBRATION_SURFACES", &[CALIBRATION_SURFACES]),
     ("CALIBRATION_SCENES", &CALIBRATION_SCENES),

@@ -45,6 +45,19 @@ fn the_table_reads_back_equal_to_its_source_run() {
     let counts = escape_counts(&tracker.into(), &setup, &p.scene.conditions, 3000, 7);
     assert_eq!(table.counts(), &counts);
 
+    // The deterministic surface's transverse memory: a trapped particle's successive
+    // elements lean the same way across its path (regression slope about 0.4 on the
+    // ensembles, docs/models.md; independent draws would give 0). ~700 pairs here: one
+    // standard error ≈ 0.04.
+    let t = &counts.transverse;
+    let pairs: u64 = t.pairs.iter().sum();
+    let slope = t.cross_sum.iter().sum::<i64>() as f64 / t.prev_sq_sum.iter().sum::<i64>() as f64;
+    assert!(pairs > 300, "{pairs} pairs");
+    assert!(
+        (0.25..0.6).contains(&slope),
+        "slope {slope} over {pairs} pairs"
+    );
+
     // Against the deterministic run of the same case and seed: every history's first
     // collision is counted once at most, and a counted first collision escapes exactly when
     // the history had one collision.

@@ -11,7 +11,7 @@ use crate::angles::{gamma_from_normal, incident_angles};
 use crate::incidence::IncidentCondition;
 use crate::rng;
 use crate::stochastic::escape_table::{reduced_angle, EscapeCounts, Stage};
-use crate::stochastic::{transverse_residual, ShadowSampler};
+use crate::stochastic::{left_element_memory, transverse_residual, ShadowSampler};
 use crate::wall::delta_gamma;
 use nalgebra::Vector3;
 use rayon::prelude::*;
@@ -60,14 +60,11 @@ pub fn escape_counts(
                             }
                             _ => {
                                 let beta = incident_angles(&hits[j].0).1;
-                                let dg = delta_gamma(&setup.wall, beta);
-                                let stage =
-                                    Stage::later(gamma_from_normal(&hits[j - 1].2, beta).0 / dg);
-                                counts.push_transverse(
-                                    stage,
-                                    transverse_residual(&hits[j - 1].2, beta, &setup.wall),
-                                    transverse_residual(&hits[j].2, beta, &setup.wall),
-                                );
+                                let (q, z_prev) =
+                                    left_element_memory(&hits[j - 1].2, beta, &setup.wall);
+                                let stage = Stage::later(q);
+                                let z = transverse_residual(&hits[j].2, beta, &setup.wall);
+                                counts.push_transverse(stage, z_prev, z);
                                 stage
                             }
                         })

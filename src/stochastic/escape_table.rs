@@ -23,7 +23,9 @@
 //! `x_out` between bin centres, clamped at the edges); beyond `x_out = 4` it is 1 (the
 //! deterministic runs measure `P ≥ 0.9999` from `x_out ≈ 2.6`).
 
-use super::transverse_memory::{plausible, TransverseCounts, TransverseMemory, LATER_STAGES};
+use super::transverse_memory::{
+    plausible, TransverseCounts, TransverseMemory, LATER_STAGES, MAX_TERM, Z_MAX,
+};
 use crate::error::{Error, Result};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
@@ -58,8 +60,10 @@ pub const SLICES: usize = FIRST_STAGES + 1 + Q_EDGES.len();
 /// The edges split the calibration sweep's directions (`Δγ` 2.5° and 3.6°; 5.1–5.8°; 6.9°
 /// and 7.3°) into three stages, and a first collision reads one of the two stages around
 /// its `Δγ` ([`EscapeTable::first_stage`]).
-/// An axis by the anisotropy a direction sees (`Δγ*/Δγ`) fits the calibration wall as
-/// well but transfers worse to other walls: there the two are not tied together.
+/// An axis by the anisotropy a direction sees (`Δγ*/Δγ`) instead fits the calibration wall as
+/// well but transfers worse to other walls: there the two are not tied together. Yet at fixed
+/// `Δγ` the transfer error grows with `Δγ*` (docs/models.md, "What remains"): the next axis is
+/// `Δγ*` beside `Δγ`, which needs a calibration on more than one wall.
 pub const FIRST_DG_EDGES_DEG: [f64; 2] = [4.5, 6.5];
 /// First-collision stages (by [`FIRST_DG_EDGES_DEG`]).
 pub const FIRST_STAGES: usize = 1 + FIRST_DG_EDGES_DEG.len();
@@ -553,6 +557,17 @@ fn pooled_stages(v: &[u64], plane: usize, stages: std::ops::Range<usize>) -> Vec
         .collect()
 }
 
+/// Two tables of counts `(a, b)` pooled over each kind of stage: `[first, later]`, each the
+/// pair of pooled planes (the fallback of a sparse cell).
+fn pooled_by_kind(a: &[u64], b: &[u64], plane: usize) -> [(Vec<u64>, Vec<u64>); 2] {
+    [0..FIRST_STAGES, FIRST_STAGES..SLICES].map(|stages| {
+        (
+            pooled_stages(a, plane, stages.clone()),
+            pooled_stages(b, plane, stages),
+        )
+    })
+}
+
 /// The escape probabilities of every cell. A cell with fewer than [`MIN_COUNT`] collisions
 /// takes the value of the nearest cell along `x_in` (same stage and `x_out`) that has enough;
 /// a column with none takes the pooled counts of its kind of stage, first or later (nearest
@@ -561,15 +576,7 @@ fn pooled_stages(v: &[u64], plane: usize, stages: std::ops::Range<usize>) -> Vec
 fn escape_probabilities(collisions: &[u64], escaped: &[u64]) -> Vec<f64> {
     let plane = X_IN_BINS * X_OUT_BINS;
     let mut p = vec![f64::NAN; SLICES * plane];
-    // The first and the later stages pooled: the fallback of a sparse cell.
-    let (first_c, first_e) = (
-        pooled_stages(collisions, plane, 0..FIRST_STAGES),
-        pooled_stages(escaped, plane, 0..FIRST_STAGES),
-    );
-    let (pooled_c, pooled_e) = (
-        pooled_stages(collisions, plane, FIRST_STAGES..SLICES),
-        pooled_stages(escaped, plane, FIRST_STAGES..SLICES),
-    );
+    let [(first_c, first_e), (pooled_c, pooled_e)] = pooled_by_kind(collisions, escaped, plane);
     for stage in 0..SLICES {
         for i_out in 0..X_OUT_BINS {
             // Nearest populated bin along x_in, the lower one first on a tie.
@@ -613,14 +620,7 @@ fn element_weights(deterministic: &[u64], model: &[u64]) -> Vec<f64> {
     // surface has fewer steep elements than the shadow law (the ratio falls to ~0.3 five Δγ
     // out): a sparse cell must not fall back to 1.
     let plane = X_IN_BINS * G_BINS;
-    let (first_d, first_m) = (
-        pooled_stages(deterministic, plane, 0..FIRST_STAGES),
-        pooled_stages(model, plane, 0..FIRST_STAGES),
-    );
-    let (later_d, later_m) = (
-        pooled_stages(deterministic, plane, FIRST_STAGES..SLICES),
-        pooled_stages(model, plane, FIRST_STAGES..SLICES),
-    );
+    let [(first_d, first_m), (later_d, later_m)] = pooled_by_kind(deterministic, model, plane);
     (0..SLICES * plane)
         .map(|c| {
             let (d, m, base) = if model[c] >= ELEMENT_MIN_COUNT {
@@ -1011,7 +1011,7 @@ impl EscapeTable {
                 return Err(bad(
                     n,
                     &format!(
-                        "sums {} and {} cannot come from {} pairs of residuals within ±4 (0 ≤ z_prev² sum ≤ 16·10⁶ per pair, |cross sum| as large)",
+                        "sums {} and {} cannot come from {} pairs of residuals within ±{Z_MAX} (0 ≤ z_prev² sum ≤ {MAX_TERM} per pair, |cross sum| as large)",
                         t.prev_sq_sum[k], t.cross_sum[k], t.pairs[k]
                     ),
                 ));

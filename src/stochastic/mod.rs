@@ -16,8 +16,8 @@ pub mod transverse_memory;
 pub mod variants;
 
 pub use rebound_model::{
-    rebound, rebound_from, rebound_from_observed, rebound_variant, single_collision_probability,
-    transverse_residual, Incidence, Rebound, SeenWall, MAX_TRIES,
+    left_element_memory, rebound, rebound_from, rebound_from_observed, rebound_variant,
+    single_collision_probability, transverse_residual, Incidence, Rebound, SeenWall, MAX_TRIES,
 };
 pub use shadow_effect::ShadowSampler;
 pub use variants::{Variant, VariantKind};

@@ -78,6 +78,26 @@ pub fn transverse_residual(n: &Vector3<f64>, beta: f64, wall: &Deviations) -> f6
     residual_of_angles(&moments, rms_cos(moments.var_a), gamma, gamma_star)
 }
 
+/// What a later collision remembers of the element of unit normal `n_left` it has just
+/// left, seen from its own direction `β` on `wall`: the reduced inclination
+/// `q = γ/Δγ(β)` (Eq. 35) that sets its stage (the valley's memory, [`Stage::later`]) and the
+/// transverse residual `z_prev` ([`transverse_residual`]). The model and `rebound
+/// calibrate` both read the memory here.
+pub fn left_element_memory(n_left: &Vector3<f64>, beta: f64, wall: &Deviations) -> (f64, f64) {
+    let moments = rotated_moments(wall, beta);
+    memory_of(&moments, rms_cos(moments.var_a), n_left, beta)
+}
+
+/// [`left_element_memory`] with the direction's moments and shrink normalisation given.
+#[inline]
+fn memory_of(moments: &Moments, rms_cos: f64, n_left: &Vector3<f64>, beta: f64) -> (f64, f64) {
+    let (gamma, gamma_star) = gamma_from_normal(n_left, beta);
+    (
+        gamma / moments.delta_gamma(),
+        residual_of_angles(moments, rms_cos, gamma, gamma_star),
+    )
+}
+
 #[inline]
 fn residual_of_angles(moments: &Moments, rms_cos: f64, gamma: f64, gamma_star: f64) -> f64 {
     let (mean, var) = conditional_gamma_star(moments, gamma);
@@ -213,13 +233,6 @@ impl Incidence {
             mean
         };
         self.wall_of_gammas(gamma, gamma_star)
-    }
-
-    /// The residual of the transverse inclination of an element of inclinations
-    /// `(γ, γ*)` seen from this direction ([`transverse_residual`], with its moments).
-    #[inline]
-    fn residual_of(&self, gamma: f64, gamma_star: f64) -> f64 {
-        residual_of_angles(&self.moments, self.rms_cos, gamma, gamma_star)
     }
 
     /// Steps 3–4 for a drawn `γ`: `γ*` from Eq. (30) as published, the normal of Eq. (23)
@@ -654,9 +667,8 @@ fn rebound_calibrated<R: Rng + ?Sized>(
             let (stage, z_prev) = match left {
                 None => (table.first_stage(cur.moments.delta_gamma(), rng.gen()), 0.0),
                 Some(n) => {
-                    let (gamma, gamma_star) = gamma_from_normal(n, cur.beta);
-                    let q = gamma / cur.moments.delta_gamma();
-                    (Stage::later(q), cur.residual_of(gamma, gamma_star))
+                    let (q, z_prev) = memory_of(&cur.moments, cur.rms_cos, n, cur.beta);
+                    (Stage::later(q), z_prev)
                 }
             };
             (stage, table.element_read(stage, cur.x_in), z_prev)
@@ -699,7 +711,7 @@ impl<'a> Hits<'a> {
     }
 
     /// Hit `k = 0, 1, …` with velocity `u` and its incidence: `at_hit(incidence, the normal
-    /// of the element just left (None for the first hit))` once,
+    /// of the element just left (None for the first hit), rng)` once,
     /// then `draw(incidence, state, rng)` an element the particle can reach (redrawn while
     /// `U·n ≥ 0`), the collision law, then `leaves(incidence, state, u⁺, rng)` or the next
     /// hit with `u⁺` from its own incidence; the mean wall after [`MAX_TRIES`].

@@ -7,10 +7,13 @@
 //! ([`crate::stochastic::transverse_memory`]).
 
 use super::{history_observed, stream_prefix, Fate, HitInfo, ModelSetup, Realisations};
-use crate::angles::{gamma_from_normal, incident_angles};
+use crate::angles::incident_angles;
 use crate::incidence::IncidentCondition;
 use crate::rng;
-use crate::stochastic::escape_table::{reduced_angle, EscapeCounts, Stage};
+use crate::stochastic::escape_table::{EscapeCounts, Stage};
+use crate::stochastic::slope_space::{
+    proposal_alpha, reduced_slope, slope_deviations, slopes_from_normal, PROPOSAL_EPS,
+};
 use crate::stochastic::{left_element_memory, transverse_residual, ShadowSampler};
 use crate::wall::delta_gamma;
 use nalgebra::Vector3;
@@ -29,6 +32,8 @@ pub fn escape_counts(
     seed: u64,
 ) -> EscapeCounts {
     let mut total = EscapeCounts::default();
+    // The model's coordinates: slopes ([`crate::stochastic::slope_space`]).
+    let slopes = slope_deviations(&setup.wall);
     for (k, cond) in conditions.iter().enumerate() {
         let prefix = stream_prefix(seed, k as u64);
         // Shadow-law draws from a stream of their own (the histories' are untouched).
@@ -56,45 +61,42 @@ pub fn escape_counts(
                             // The first by its plane's Δγ, counted along Δγ once.
                             0 => {
                                 let beta = incident_angles(&hits[0].0).1;
-                                counts.push_first(delta_gamma(&setup.wall, beta))
+                                counts.push_first(delta_gamma(&slopes, beta))
                             }
                             _ => {
                                 let beta = incident_angles(&hits[j].0).1;
                                 let (q, z_prev) =
-                                    left_element_memory(&hits[j - 1].2, beta, &setup.wall);
+                                    left_element_memory(&hits[j - 1].2, beta, &slopes);
                                 let stage = Stage::later(q);
-                                let z = transverse_residual(&hits[j].2, beta, &setup.wall);
+                                let z = transverse_residual(&hits[j].2, beta, &slopes);
                                 counts.push_transverse(stage, z_prev, z);
                                 stage
                             }
                         })
                         .collect();
-                    // Every collision's element beside a shadow-law draw for its direction.
+                    // Every collision's element beside a draw of the model's proposal (the
+                    // shadow law in slopes) for its direction.
                     let mut model_stream = model_prefix.stream(i);
                     for (j, (u_in, _, normal)) in hits.iter().enumerate() {
-                        let (alpha, beta) = incident_angles(u_in);
-                        let dg = delta_gamma(&setup.wall, beta);
-                        if dg <= 0.0 {
+                        let beta = incident_angles(u_in).1;
+                        let sigma = delta_gamma(&slopes, beta);
+                        if sigma <= 0.0 {
                             continue;
                         }
-                        let shadow = if alpha > 0.0 {
-                            ShadowSampler::rising(alpha, dg)
+                        let x = reduced_slope(u_in, &slopes);
+                        let proposal = if x > 0.0 {
+                            ShadowSampler::rising(proposal_alpha(x), PROPOSAL_EPS)
                         } else {
-                            ShadowSampler::new(alpha, dg)
+                            ShadowSampler::new(proposal_alpha(x), PROPOSAL_EPS)
                         };
-                        let (g_det, _) = gamma_from_normal(normal, beta);
-                        let g_model = shadow.sample(&mut model_stream);
-                        counts.push_element(
-                            stages[j],
-                            reduced_angle(u_in, &setup.wall),
-                            g_det / dg,
-                            g_model / dg,
-                        );
+                        let g_det = slopes_from_normal(normal, beta).0 / sigma;
+                        let g_model = proposal.sample(&mut model_stream) / PROPOSAL_EPS;
+                        counts.push_element(stages[j], x, g_det, g_model);
                     }
                     if h.fate == Fate::Escaped {
                         let last = hits.len().saturating_sub(1);
                         for (j, (u_in, u_out, _)) in hits.iter().enumerate() {
-                            counts.push(stages[j], u_in, u_out, &setup.wall, j == last);
+                            counts.push(stages[j], u_in, u_out, &slopes, j == last);
                         }
                     }
                     (counts, hits)

@@ -273,10 +273,13 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
     };
     let _ = write!(
         md,
-        "`[stochastic] model = \"calibrated\"` keeps the paper's virtual walls (Eqs. 26, 29–33) but \
+        "`[stochastic] model = \"calibrated\"` keeps the paper's virtual walls (Eqs. 26, 29–33) in the \
+         wall's slopes rather than its normal's angles (σ(β) the slope spread along the direction β: \
+         a point particle's first element then has one law for every wall at one tan α/σ(β)), \
          replaces the single-collision law (Eq. 34) by an escape probability \
-         P(escape | stage, α/Δγ(β), α⁺/Δγ(β⁺)), corrects the shadow law's γ (Eq. 31) by a weight \
-         w(stage, α/Δγ(β), (γ − α)/Δγ(β)), both measured by `rebound calibrate` on the deterministic \
+         P(escape | stage, tan α/σ(β), tan α⁺/σ(β⁺)), corrects the shadow law (Eq. 31) by a weight \
+         w(stage, tan α/σ(β), (s − tan α)/σ(β)) on the element's slope s along the path, both \
+         measured by `rebound calibrate` on the deterministic \
          simulation, and follows multiple collisions instead of redrawing them (a trapped particle meets \
          the wall again with its rebound velocity; the stage of a later collision remembers the \
          inclination of the element it has just left, because a trapped particle meets the other side \

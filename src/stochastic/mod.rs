@@ -12,6 +12,7 @@ pub mod escape_table;
 pub mod rebound_model;
 pub mod shadow_effect;
 pub mod simulate;
+pub mod slope_space;
 pub mod transverse_memory;
 pub mod variants;
 

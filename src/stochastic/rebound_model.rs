@@ -5,8 +5,12 @@
 //! collision: it needs only the incident state, the wall's two deviations, the
 //! collision law and a random generator — no surface, no tables.
 
-use super::escape_table::{reduced_angle, ElementRead, EscapeTable, Stage};
+use super::escape_table::{ElementRead, EscapeTable, Stage};
 use super::shadow_effect::ShadowSampler;
+use super::slope_space::{
+    normal_from_slopes, proposal_alpha, reduced_slope, slope_deviations, slopes_from_normal,
+    PROPOSAL_EPS,
+};
 use super::variants::{Variant, VariantKind};
 use crate::angles::{
     gamma_from_normal, incident_angles, normal_from_xi_zeta, xi_zeta_of_normal, xi_zeta_rotated,
@@ -48,70 +52,45 @@ impl SeenWall {
     };
 }
 
-/// The factor on the spread of `γ*` given `γ` of a facet inclined by `γ` along the incident
-/// plane, `cos γ / √E[cos² γ]` with `γ ~ N(0, Δγ²)` over the wall (`E[cos² γ] =
-/// (1 + e^{−2Δγ²})/2`): exact geometry of the facet normal (see `draw_wall_corrected`) to second
-/// order, normalised so that the wall's marginal `Δγ*` (Eq. 27) is kept. Measured on the
-/// Sec. 3 wall at α⁻ = −2.5°, β⁻ = 90° (16 surfaces): the deterministic first elements'
-/// std of γ* is 2.455°, Eq. (30) gives 2.472°, with this factor 2.456°.
-#[inline]
-pub fn transverse_shrink(gamma: f64, delta_gamma_sq: f64) -> f64 {
-    shrink_normalised(gamma, rms_cos(delta_gamma_sq))
-}
-
-/// [`transverse_shrink`] with its normalisation `rms_cos` given (computed once per
-/// incidence on the hot path).
-#[inline]
-fn shrink_normalised(gamma: f64, rms_cos: f64) -> f64 {
-    gamma.cos() / rms_cos
-}
-
-/// The residual of the transverse inclination of the wall element of unit normal `n` seen
-/// from direction `β` on `wall`: `γ*` less its conditional mean given `γ` (Eq. 30), over
-/// its conditional spread times [`transverse_shrink`] — the standard normal the
-/// `calibrated` model draws it from. The calibrated model's later collisions remember it
-/// ([`super::transverse_memory`]); `rebound calibrate` counts it the same way. 0 where
-/// Eq. (30) leaves `γ*` no spread.
-pub fn transverse_residual(n: &Vector3<f64>, beta: f64, wall: &Deviations) -> f64 {
-    let moments = rotated_moments(wall, beta);
-    let (gamma, gamma_star) = gamma_from_normal(n, beta);
-    residual_of_angles(&moments, rms_cos(moments.var_a), gamma, gamma_star)
+/// The residual of the transverse slope of the wall element of unit normal `n` seen from
+/// direction `β` on the wall of slope spreads `slopes` ([`slope_deviations`]): `s_t` less
+/// its conditional mean given `s_l` (Eq. 30 in slopes), over its conditional spread — the
+/// standard normal the `calibrated` model draws it from. The calibrated model's later
+/// collisions remember it ([`super::transverse_memory`]); `rebound calibrate` counts it the
+/// same way. 0 where Eq. (30) leaves `s_t` no spread.
+pub fn transverse_residual(n: &Vector3<f64>, beta: f64, slopes: &Deviations) -> f64 {
+    let moments = rotated_moments(slopes, beta);
+    let (s_l, s_t) = slopes_from_normal(n, beta);
+    residual_of_slopes(&moments, s_l, s_t)
 }
 
 /// What a later collision remembers of the element of unit normal `n_left` it has just
-/// left, seen from its own direction `β` on `wall`: the reduced inclination
-/// `q = γ/Δγ(β)` (Eq. 35) that sets its stage (the valley's memory, [`Stage::later`]) and the
-/// transverse residual `z_prev` ([`transverse_residual`]). The model and `rebound
-/// calibrate` both read the memory here.
-pub fn left_element_memory(n_left: &Vector3<f64>, beta: f64, wall: &Deviations) -> (f64, f64) {
-    let moments = rotated_moments(wall, beta);
-    memory_of(&moments, rms_cos(moments.var_a), n_left, beta)
+/// left, seen from its own direction `β` on the wall of slope spreads `slopes`: the
+/// reduced slope `q = s_l/σ(β)` that sets its stage (the valley's memory,
+/// [`Stage::later`]) and the transverse residual `z_prev` ([`transverse_residual`]). The
+/// model and `rebound calibrate` both read the memory here.
+pub fn left_element_memory(n_left: &Vector3<f64>, beta: f64, slopes: &Deviations) -> (f64, f64) {
+    memory_of(&rotated_moments(slopes, beta), n_left, beta)
 }
 
-/// [`left_element_memory`] with the direction's moments and shrink normalisation given.
+/// [`left_element_memory`] with the direction's slope moments given.
 #[inline]
-fn memory_of(moments: &Moments, rms_cos: f64, n_left: &Vector3<f64>, beta: f64) -> (f64, f64) {
-    let (gamma, gamma_star) = gamma_from_normal(n_left, beta);
+fn memory_of(moments: &Moments, n_left: &Vector3<f64>, beta: f64) -> (f64, f64) {
+    let (s_l, s_t) = slopes_from_normal(n_left, beta);
     (
-        gamma / moments.delta_gamma(),
-        residual_of_angles(moments, rms_cos, gamma, gamma_star),
+        s_l / moments.delta_gamma(),
+        residual_of_slopes(moments, s_l, s_t),
     )
 }
 
 #[inline]
-fn residual_of_angles(moments: &Moments, rms_cos: f64, gamma: f64, gamma_star: f64) -> f64 {
-    let (mean, var) = conditional_gamma_star(moments, gamma);
+fn residual_of_slopes(moments: &Moments, s_l: f64, s_t: f64) -> f64 {
+    let (mean, var) = conditional_gamma_star(moments, s_l);
     if var > 0.0 {
-        (gamma_star - mean) / (var.sqrt() * shrink_normalised(gamma, rms_cos))
+        (s_t - mean) / var.sqrt()
     } else {
         0.0
     }
-}
-
-/// `√E[cos² γ]` for `γ ~ N(0, Δγ²)`: [`transverse_shrink`]'s normalisation.
-#[inline]
-fn rms_cos(delta_gamma_sq: f64) -> f64 {
-    (0.5 * (1.0 + (-2.0 * delta_gamma_sq.max(0.0)).exp())).sqrt()
 }
 
 /// Step 1 of the procedure and the shadow-effect sampler: everything that depends only on
@@ -133,11 +112,12 @@ pub struct Incidence {
     variant: Variant,
     /// The isotropic variants' roughness angle `Δγ` (rad).
     delta_gamma_iso: f64,
-    /// The reduced incident angle `α⁻/Δγ(β⁻)` of the calibrated model's tables
-    /// ([`reduced_angle`]), once per direction rather than once per particle.
+    /// The reduced incidence `tan α⁻/σ(β⁻)` of the calibrated model's tables
+    /// ([`reduced_slope`]), once per direction rather than once per particle.
     x_in: f64,
-    /// [`transverse_shrink`]'s normalisation at `Δγ(β⁻)`, once per direction.
-    rms_cos: f64,
+    /// The calibrated model's slope spreads of the wall ([`slope_deviations`]; the wall's
+    /// deviations for the other models).
+    slopes: Deviations,
 }
 
 impl Incidence {
@@ -148,29 +128,40 @@ impl Incidence {
 
     /// The direction `(α⁻, β⁻)` (rad) on `wall`, walls drawn by `variant`.
     pub fn with_variant(alpha: f64, beta: f64, wall: &Deviations, variant: Variant) -> Incidence {
-        let moments = rotated_moments(wall, beta);
         let delta_gamma_iso = variant.delta_gamma_on(wall);
-        let delta_gamma = if variant.kind.anisotropic() {
-            moments.delta_gamma()
+        // `calibrated` works in slopes ([`super::slope_space`]): its moments are the
+        // slopes', its proposal the shadow law in `tan α/σ(β)`, and its reduced incidence that.
+        let calibrated = variant.kind == VariantKind::Calibrated;
+        let slopes = if calibrated {
+            slope_deviations(wall)
         } else {
-            delta_gamma_iso
+            *wall
+        };
+        let moments = rotated_moments(&slopes, beta);
+        let x_in = if calibrated {
+            alpha.tan() / moments.delta_gamma()
+        } else {
+            alpha / moments.delta_gamma()
+        };
+        let (alpha_law, delta_gamma) = if calibrated {
+            (proposal_alpha(x_in), PROPOSAL_EPS)
+        } else if variant.kind.anisotropic() {
+            (alpha, moments.delta_gamma())
+        } else {
+            (alpha, delta_gamma_iso)
         };
         // A rising particle meets the wall only in the calibrated model's later collisions.
         let sampler = if alpha > 0.0 {
-            ShadowSampler::rising(alpha, delta_gamma)
+            ShadowSampler::rising(alpha_law, delta_gamma)
         } else {
-            ShadowSampler::new(alpha, delta_gamma)
+            ShadowSampler::new(alpha_law, delta_gamma)
         };
         Incidence {
             alpha,
             beta,
             sin_cos_beta: beta.sin_cos(),
-            x_in: alpha / moments.delta_gamma(),
-            // Only `calibrated` shrinks γ*: the other models do not pay for the exp.
-            rms_cos: match variant.kind {
-                VariantKind::Calibrated => rms_cos(moments.var_a),
-                _ => 1.0,
-            },
+            x_in,
+            slopes,
             moments,
             sampler,
             variant,
@@ -197,17 +188,15 @@ impl Incidence {
         self.wall_given_gamma(gamma, rng)
     }
 
-    /// [`Self::draw_wall`] with the element's `γ` law corrected by the calibrated weight
-    /// `w(stage, x_in, γ/Δγ(β⁻) − x_in)` of [`EscapeTable::element_weight`]: a shadow-law
-    /// draw is accepted with `w / bound` (rejection sampling: exact for the corrected law).
-    ///
-    /// `γ*` keeps Eq. (30)'s conditional mean `Cov/Δγ² · γ` (a ratio of slopes), and its
-    /// spread about it is scaled by [`transverse_shrink`]: on a real facet of slopes
-    /// `(s_l, s_t)` (along and across the incident plane) the angles are `γ ≈ s_l/N` and
-    /// `γ* ≈ s_t/N` with `N = √(1 + s_l² + s_t²)`, so a steep element (large `γ`) has a
-    /// smaller transverse angle for the same transverse slope; Eq. (30) treats the angles as
-    /// jointly Gaussian and misses this. A later collision's standardised residual remembers
-    /// the element just left (`z_prev`, [`super::transverse_memory`]).
+    /// The `calibrated` model's element, in slopes ([`super::slope_space`]): the reduced
+    /// slope along the path `g = s_l/σ(β⁻)` from the shadow law in `x = tan α⁻/σ(β⁻)`
+    /// (Eq. 32 at a vanishing roughness: `(g − x) e^{−g²/2}` on `g > x`) corrected by the
+    /// calibrated weight `w(stage, x, g − x)` of [`EscapeTable::element_weight`] (a draw is
+    /// accepted with `w / bound`: rejection sampling, exact for the corrected law); the
+    /// transverse slope `s_t` given `s_l` from Eq. (30) in slopes, exact for a Gaussian
+    /// surface, its standardised residual remembering the element just left (`z_prev`,
+    /// [`super::transverse_memory`]; a first collision: a fresh draw); the normal of those
+    /// slopes.
     #[inline]
     fn draw_wall_corrected<R: Rng + ?Sized>(
         &self,
@@ -215,24 +204,40 @@ impl Incidence {
         &(stage, read, z_prev): &(Stage, ElementRead, f64),
         rng: &mut R,
     ) -> SeenWall {
-        let dg = self.sampler.delta_gamma();
-        let mut gamma = self.sampler.sample(rng);
+        let eps = self.sampler.delta_gamma();
+        let mut g = self.sampler.sample(rng) / eps;
         // The bound makes ~1–2 proposals typical; the cap only guards a degenerate table.
         for _ in 0..1000 {
-            if dg <= 0.0 || rng.gen::<f64>() * read.bound < table.weight_at(&read, gamma / dg) {
+            if rng.gen::<f64>() * read.bound < table.weight_at(&read, g) {
                 break;
             }
-            gamma = self.sampler.sample(rng);
+            g = self.sampler.sample(rng) / eps;
         }
-        // (A first collision: a fresh draw.)
-        let (mean, var) = conditional_gamma_star(&self.moments, gamma);
-        let gamma_star = if var > 0.0 {
+        let s_l = g * self.moments.delta_gamma();
+        let (mean, var) = conditional_gamma_star(&self.moments, s_l);
+        let s_t = if var > 0.0 {
             let z = table.transverse_residual(stage, z_prev, rng.sample(StandardNormal));
-            mean + var.sqrt() * z * shrink_normalised(gamma, self.rms_cos)
+            mean + var.sqrt() * z
         } else {
             mean
         };
-        self.wall_of_gammas(gamma, gamma_star)
+        self.wall_of_slopes(s_l, s_t)
+    }
+
+    /// A wall element of slopes `(s_l, s_t)` along and across the incident plane, with its
+    /// angles (`ξ' = acos n_x − π/2 = −asin n_x`, Eqs. 20–21 for `(γ, γ*)`).
+    #[inline]
+    fn wall_of_slopes(&self, s_l: f64, s_t: f64) -> SeenWall {
+        let normal = normal_from_slopes(s_l, s_t, self.sin_cos_beta);
+        let (xi, zeta) = (-normal.x.asin(), -normal.z.asin());
+        let (s, c) = self.sin_cos_beta;
+        SeenWall {
+            gamma: c * xi - s * zeta,
+            gamma_star: s * xi + c * zeta,
+            xi,
+            zeta,
+            normal,
+        }
     }
 
     /// Steps 3–4 for a drawn `γ`: `γ*` from Eq. (30) as published, the normal of Eq. (23)
@@ -667,7 +672,7 @@ fn rebound_calibrated<R: Rng + ?Sized>(
             let (stage, z_prev) = match left {
                 None => (table.first_stage(cur.moments.delta_gamma(), rng.gen()), 0.0),
                 Some(n) => {
-                    let (q, z_prev) = memory_of(&cur.moments, cur.rms_cos, n, cur.beta);
+                    let (q, z_prev) = memory_of(&cur.moments, n, cur.beta);
                     (Stage::later(q), z_prev)
                 }
             };
@@ -676,7 +681,7 @@ fn rebound_calibrated<R: Rng + ?Sized>(
         |cur, state, rng| cur.draw_wall_corrected(table, state, rng),
         |cur, &(stage, _, _), u_out, rng| {
             u_out.y > 0.0 && {
-                let p = table.p_escape(stage, cur.x_in, reduced_angle(u_out, wall));
+                let p = table.p_escape(stage, cur.x_in, reduced_slope(u_out, &cur.slopes));
                 p >= 1.0 || rng.gen::<f64>() < p
             }
         },

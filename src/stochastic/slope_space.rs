@@ -1,0 +1,211 @@
+//! The `calibrated` model's coordinates: the wall's *slopes*, not its normal's angles.
+//!
+//! Why: a point particle's first hit is decided by the height profile under its path
+//! alone, and stretching the heights by `k` maps the path of slope `tan α` and a profile
+//! of slope spread `σ` onto `k tan α` and `k σ` with the same hit points. So the first
+//! element's slope along the path, over `σ(β)` (the profile's slope spread along the
+//! direction `β`), has one law for every wall and direction at one `tan α / σ(β)`
+//! (Gaussian surface of Gaussian correlation: its profiles differ only by these scales).
+//! The normal's angles `(γ, γ*)` of Radenkovic & Simonin 2021 (Eqs. 20–21) are not that
+//! variable: `γ = asin(s_l/N)` with `N = √(1 + s_l² + s_t²)` shrinks with the transverse
+//! slope `s_t`, so at one `α/Δγ` the law of `γ/Δγ` moves with `Δγ*` (docs/models.md:
+//! about 0.01° in the first element's mean per degree of `Δγ*` at `Δγ` = 6.5°), and a table
+//! measured on one wall did not transfer to another. The transverse slope given the
+//! profile is exactly Gaussian too: `s_t = (Cov/σ_l²) s_l + N(0, σ_t² − Cov²/σ_l²)`
+//! (Eq. 30 in slopes; a Gaussian correlation's cross-covariances with the profile are
+//! proportional to the along-path slope's), so no shrink factor is needed there either.
+//!
+//! The wall is given by its normal-angle deviations `(Δξ, Δζ)` (Eq. 15, as measured on a
+//! surface: the RMS of `asin` of the normal's components); [`slope_deviations`] turns them
+//! into the slope spreads `(σ_x, σ_z)` of a Gaussian slope field with those angle spreads.
+
+use crate::wall::{delta_gamma_sq_of_direction, Deviations};
+use nalgebra::Vector3;
+use std::cell::Cell;
+
+/// `Δγ` of the proposal law: the paper's shadow law (Eq. 32) at a vanishing roughness,
+/// `sin(ε(g − x)) e^{−g²/2}`, is the slope-space law `(g − x) e^{−g²/2}` on `g > x` (the
+/// rate at which a path of slope `x σ` crosses profile slopes `g σ`) to a relative
+/// `(ε x)²/6`.
+pub const PROPOSAL_EPS: f64 = 1e-4;
+
+/// `|x|` beyond which the proposal reads `x` at this bound (its law is then the Gaussian
+/// tilted by less than `1/5000` per unit `g`); keeps `ε x` at most 0.5 rad.
+pub const PROPOSAL_X_MAX: f64 = 5000.0;
+
+/// Nodes each side of 0 and step (in standard deviations) of the trapezoid rule behind
+/// [`slope_deviations`]: exact to round-off for these smooth Gaussian integrands.
+const NODES: i32 = 28;
+const STEP: f64 = 0.25;
+/// Fixed-point steps of [`slope_deviations`] at most: each shrinks the error by about
+/// `2σ²`, and the steps stop once a step changes nothing beyond round-off.
+const ITERATIONS: usize = 100;
+
+/// The slope spreads `(σ_x, σ_z)` (tangents) of a Gaussian slope field whose normal
+/// angles have the RMS `(Δξ, Δζ)` of `dev` (`ξ' = asin(h_x/N)`, `N = √(1 + h_x² + h_z²)`;
+/// the measurement of `crate::surface::stats::measured_deviations`). A fixed point of
+/// `σ ← σ Δ/RMS(σ)`, computed once per wall and thread (cached).
+pub fn slope_deviations(dev: &Deviations) -> Deviations {
+    thread_local! {
+        static LAST: Cell<Option<(Deviations, Deviations)>> = const { Cell::new(None) };
+    }
+    LAST.with(|last| match last.get() {
+        Some((d, s)) if d == *dev => s,
+        _ => {
+            let s = invert_angle_rms(dev);
+            last.set(Some((*dev, s)));
+            s
+        }
+    })
+}
+
+fn invert_angle_rms(dev: &Deviations) -> Deviations {
+    let clean = |d: f64| if d.is_finite() && d > 0.0 { d } else { 0.0 };
+    let (dx, dz) = (clean(dev.delta_xi), clean(dev.delta_zeta));
+    let (mut sx, mut sz) = (dx.tan(), dz.tan());
+    for _ in 0..ITERATIONS {
+        let (rx, rz) = angle_rms(sx, sz);
+        let nx = if rx > 0.0 { sx * dx / rx } else { sx };
+        let nz = if rz > 0.0 { sz * dz / rz } else { sz };
+        // Angles saturate at 90°: a spread no slope field reaches keeps the last finite step.
+        if !(nx.is_finite() && nz.is_finite()) {
+            break;
+        }
+        let done = (nx - sx).abs() <= 1e-15 * sx && (nz - sz).abs() <= 1e-15 * sz;
+        (sx, sz) = (nx, nz);
+        if done {
+            break;
+        }
+    }
+    Deviations {
+        delta_xi: sx,
+        delta_zeta: sz,
+    }
+}
+
+/// RMS of `asin(h_x/N)` and `asin(h_z/N)` for independent `h_x ~ N(0, σ_x²)`,
+/// `h_z ~ N(0, σ_z²)`.
+fn angle_rms(sx: f64, sz: f64) -> (f64, f64) {
+    let (mut ax, mut az, mut wsum) = (0.0, 0.0, 0.0);
+    for i in -NODES..=NODES {
+        let ti = i as f64 * STEP;
+        let wi = (-0.5 * ti * ti).exp();
+        let hx = sx * ti;
+        for j in -NODES..=NODES {
+            let tj = j as f64 * STEP;
+            let w = wi * (-0.5 * tj * tj).exp();
+            let hz = sz * tj;
+            let n = (1.0 + hx * hx + hz * hz).sqrt();
+            ax += w * (hx / n).asin().powi(2);
+            az += w * (hz / n).asin().powi(2);
+            wsum += w;
+        }
+    }
+    ((ax / wsum).sqrt(), (az / wsum).sqrt())
+}
+
+/// The slopes `(s_l, s_t)` of the element of unit normal `n` along and across the
+/// direction `β` (`s_l ≈ γ`, `s_t ≈ γ*` of Eqs. 20–21 at small angles; heights `h` with
+/// `n ∝ (−h_x, 1, −h_z)`). A normal in the mean plane gives infinite slopes.
+#[inline]
+pub fn slopes_from_normal(n: &Vector3<f64>, beta: f64) -> (f64, f64) {
+    let (s, c) = beta.sin_cos();
+    let (hx, hz) = (-n.x / n.y, -n.z / n.y);
+    (c * hx - s * hz, s * hx + c * hz)
+}
+
+/// The unit normal of slopes `(s_l, s_t)` seen from direction `β` (`(sin β, cos β)`
+/// given): the inverse of [`slopes_from_normal`].
+#[inline]
+pub fn normal_from_slopes(s_l: f64, s_t: f64, (s, c): (f64, f64)) -> Vector3<f64> {
+    let hx = c * s_l + s * s_t;
+    let hz = -s * s_l + c * s_t;
+    Vector3::new(-hx, 1.0, -hz) / (1.0 + hx * hx + hz * hz).sqrt()
+}
+
+/// `tan α / σ(β)` of the velocity `u` on the wall of slope spreads `slopes`
+/// ([`slope_deviations`]; `σ(β)` of Eq. 35 with slopes for angles): the reduced incidence
+/// of the calibrated tables. A wall without slope in that plane gives `±∞`, a vertical
+/// velocity `±10¹²/σ`.
+#[inline]
+pub fn reduced_slope(u: &Vector3<f64>, slopes: &Deviations) -> f64 {
+    let h = (u.x * u.x + u.z * u.z).sqrt();
+    let tan_alpha = u.y / h.max(1e-12 * u.y.abs());
+    tan_alpha / delta_gamma_sq_of_direction(u.x, u.z, slopes).sqrt()
+}
+
+/// The angle `α` the proposal law reads for a reduced incidence `x` (`x ε`, `x` clamped to
+/// `±`[`PROPOSAL_X_MAX`]; a NaN counts as grazing).
+#[inline]
+pub fn proposal_alpha(x: f64) -> f64 {
+    let x = if x.is_nan() { 0.0 } else { x };
+    x.clamp(-PROPOSAL_X_MAX, PROPOSAL_X_MAX) * PROPOSAL_EPS
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slope_spreads_reproduce_the_angle_spreads() {
+        for (dx, dz) in [
+            (2.5f64, 7.5f64),
+            (6.5, 8.7),
+            (3.8, 0.0),
+            (5.0, 5.0),
+            (20.0, 1.0),
+        ] {
+            let dev = Deviations {
+                delta_xi: dx.to_radians(),
+                delta_zeta: dz.to_radians(),
+            };
+            let s = slope_deviations(&dev);
+            let (rx, rz) = angle_rms(s.delta_xi, s.delta_zeta);
+            assert!((rx - dev.delta_xi).abs() < 1e-12, "{dx} {dz}: {rx}");
+            assert!((rz - dev.delta_zeta).abs() < 1e-12, "{dx} {dz}: {rz}");
+            // A slope spreads more than its angle, and more so with transverse slope.
+            assert!(s.delta_xi >= dev.delta_xi.tan() - 1e-15);
+        }
+        // The series' first terms: RMS² = σ_x²(1 − 2σ_x² − σ_z²) + O(σ⁶).
+        let s = 0.1f64;
+        let (r, _) = angle_rms(s, 0.0);
+        assert!((r * r - s * s * (1.0 - 2.0 * s * s)).abs() < 20.0 * s.powi(6));
+        let (r, _) = angle_rms(s, s);
+        assert!((r * r - s * s * (1.0 - 3.0 * s * s)).abs() < 20.0 * s.powi(6));
+    }
+
+    #[test]
+    fn slopes_and_normals_round_trip() {
+        for beta in [-2.0f64, -0.3, 0.0, 0.7, std::f64::consts::FRAC_PI_2, 3.0] {
+            for (sl, st) in [(0.0, 0.0), (0.12, -0.05), (-0.4, 0.3), (1.5, 2.0)] {
+                let n = normal_from_slopes(sl, st, beta.sin_cos());
+                assert!((n.norm() - 1.0).abs() < 1e-14);
+                let (a, b) = slopes_from_normal(&n, beta);
+                assert!(
+                    (a - sl).abs() < 1e-13 && (b - st).abs() < 1e-13,
+                    "{beta} {sl} {st}"
+                );
+            }
+        }
+        // Small angles: the slopes are the paper's (γ, γ*).
+        let n = crate::angles::normal_from_gamma(1e-4, -2e-4, 0.6);
+        let (sl, st) = slopes_from_normal(&n, 0.6);
+        assert!((sl - 1e-4).abs() < 1e-11 && (st + 2e-4).abs() < 1e-11);
+    }
+
+    #[test]
+    fn reduced_slope_is_tan_alpha_over_the_profile_spread() {
+        let slopes = Deviations {
+            delta_xi: 0.05,
+            delta_zeta: 0.15,
+        };
+        let u = crate::angles::velocity_from_angles(2.0, (-10f64).to_radians(), 0.0);
+        let x = reduced_slope(&u, &slopes);
+        assert!((x - (-10f64).to_radians().tan() / 0.05).abs() < 1e-12);
+        let u = crate::angles::velocity_from_angles(2.0, (-10f64).to_radians(), 1.0);
+        let sigma = (1f64.cos().powi(2) * 0.05f64.powi(2) + 1f64.sin().powi(2) * 0.0225).sqrt();
+        assert!((reduced_slope(&u, &slopes) - (-10f64).to_radians().tan() / sigma).abs() < 1e-12);
+        let down = reduced_slope(&Vector3::new(0.0, -1.0, 0.0), &slopes);
+        assert!(down.is_finite() && down < -1e12);
+    }
+}

@@ -1,8 +1,9 @@
 //! The escape law of the `calibrated` stochastic model, measured on a deterministic run
 //! (`rebound calibrate`): every collision of every followed history is counted with its
-//! stage, its reduced incident and rebound angles and whether the particle then left the
-//! wall, and the first wall element of every history beside a draw of the paper's shadow
-//! law for the same direction ([`crate::stochastic::escape_table`]), and every later
+//! stage, its reduced incidence and rebound (in the wall's slopes,
+//! [`crate::stochastic::slope_space`]) and whether the particle then left the wall, and the
+//! wall element of every collision beside a draw of the model's proposal (the shadow law in
+//! slopes) for the same direction ([`crate::stochastic::escape_table`]), and every later
 //! collision's transverse residual beside the element just left's
 //! ([`crate::stochastic::transverse_memory`]).
 
@@ -10,7 +11,7 @@ use super::{history_observed, stream_prefix, Fate, HitInfo, ModelSetup, Realisat
 use crate::angles::incident_angles;
 use crate::incidence::IncidentCondition;
 use crate::rng;
-use crate::stochastic::escape_table::{EscapeCounts, Stage};
+use crate::stochastic::escape_table::{EscapeCounts, Stage, G_MAX, X_IN_MAX};
 use crate::stochastic::slope_space::{
     proposal_alpha, reduced_slope, slope_deviations, slopes_from_normal, PROPOSAL_EPS,
 };
@@ -58,7 +59,7 @@ pub fn escape_counts(
                     // beside the element just left's, seen from the same direction.
                     let stages: Vec<Stage> = (0..hits.len())
                         .map(|j| match j {
-                            // The first by its plane's Δγ, counted along Δγ once.
+                            // The first by its plane's slope spread σ(β), counted along σ once.
                             0 => {
                                 let beta = incident_angles(&hits[0].0).1;
                                 counts.push_first(delta_gamma(&slopes, beta))
@@ -84,6 +85,12 @@ pub fn escape_counts(
                             continue;
                         }
                         let x = reduced_slope(u_in, &slopes);
+                        // A rising proposal takes about x² tries, and beyond this its draws
+                        // and the element (both steeper than the path) fall outside every
+                        // element cell: nothing to count.
+                        if x >= X_IN_MAX + G_MAX {
+                            continue;
+                        }
                         let proposal = if x > 0.0 {
                             ShadowSampler::rising(proposal_alpha(x), PROPOSAL_EPS)
                         } else {

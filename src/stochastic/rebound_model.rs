@@ -103,10 +103,12 @@ pub struct Incidence {
     pub beta: f64,
     /// `(sin β⁻, cos β⁻)`, for Eq. (23).
     sin_cos_beta: (f64, f64),
-    /// `Δγ², Δγ*², Cov(γ, γ*)` at `β⁻` (Eq. 26).
+    /// `Δγ², Δγ*², Cov(γ, γ*)` at `β⁻` (Eq. 26); for `calibrated`, the same moments of the
+    /// slopes ([`super::slope_space`]).
     moments: Moments,
     /// `P_eff(γ | α⁻)` (Eqs. 31–33) with `Δγ(β⁻)` of Eq. (26) — or, for the isotropic
-    /// variants, with their one roughness angle.
+    /// variants, with their one roughness angle; for `calibrated`, the law at a vanishing
+    /// roughness ([`super::slope_space::PROPOSAL_EPS`]) at the reduced incidence.
     sampler: ShadowSampler,
     /// The rough-wall model drawing the walls ([`super::variants`]).
     variant: Variant,
@@ -290,7 +292,16 @@ impl Incidence {
         let t = Vector3::new(cb, 0.0, -sb);
         let j = Vector3::new(0.0, 1.0, 0.0);
         match self.variant.kind {
-            VariantKind::RadenkovicSimonin2021 | VariantKind::Calibrated => self.draw_wall(rng),
+            VariantKind::RadenkovicSimonin2021 => self.draw_wall(rng),
+            // `calibrated`'s proposal, without its table's correction (the model itself
+            // reads the table: `draw_wall_corrected`).
+            VariantKind::Calibrated => {
+                let g = self.sampler.sample(rng) / self.sampler.delta_gamma();
+                let s_l = g * self.moments.delta_gamma();
+                let (mean, var) = conditional_gamma_star(&self.moments, s_l);
+                let z: f64 = rng.sample(StandardNormal);
+                self.wall_of_slopes(s_l, mean + var.sqrt() * z)
+            }
             // Sommerfeld & Huber 1999: the shadow law in the incident plane, an independent
             // normal law across it, one Δγ for both (isotropic).
             VariantKind::SommerfeldHuber1999 => {
@@ -637,12 +648,13 @@ fn rebound_repeated<R: Rng + ?Sized>(
 }
 
 /// The `calibrated` model: the paper's virtual walls (Eqs. 26, 29–33, for the current
-/// direction; their `γ` law corrected by the calibrated weight), the collision law, and then
-/// the particle leaves with the calibrated probability `P(escape | stage, α/Δγ(β),
-/// α⁺/Δγ(β⁺))` of [`super::escape_table`] — or it is trapped and meets the wall again *with
+/// direction, in the wall's slopes: [`super::slope_space`]; the element's law corrected by the
+/// calibrated weight), the collision law, and then the particle leaves with the calibrated
+/// probability `P(escape | stage, tan α/σ(β), tan α⁺/σ(β⁺))` of [`super::escape_table`] — or
+/// it is trapped and meets the wall again *with
 /// its rebound velocity* (rising or not: the shadow law continued to `α > 0`,
 /// [`ShadowSampler::rising`]). A later collision's stage remembers the element just left
-/// ([`Stage::later`]: its inclination seen from the new direction), because a trapped
+/// ([`Stage::later`]: its slope seen from the new direction), because a trapped
 /// particle meets the other side of the valley it is in. Radenkovic & Simonin 2021 instead
 /// reject the trapped rebound and redraw for the same incident particle (Eq. 34, Fig. 13),
 /// which makes every multiple-collision history end like a single collision. Every collision is reported to
@@ -664,9 +676,9 @@ fn rebound_calibrated<R: Rng + ?Sized>(
         omega_in,
         rng,
         observe,
-        // Per hit, once: its stage (for a later hit, by the inclination of the element just
+        // Per hit, once: its stage (for a later hit, by the slope of the element just
         // left, seen from the new direction: the valley's memory), where the element
-        // table is read at its reduced angle (rows and bound, once per hit), and the
+        // table is read at its reduced incidence (rows and bound, once per hit), and the
         // transverse residual of the element just left (0 for the first hit: unused).
         |cur, left, rng| {
             let (stage, z_prev) = match left {
@@ -908,10 +920,13 @@ mod tests {
             delta_xi: 0.05,
             delta_zeta: 0.05,
         };
-        // x_in = −1.125, a row's centre (where `at_centres` puts the row's values).
-        let (alpha, beta) = (-0.05625, 0.0);
+        // x_in = tan α/σ = −1.125, a row's centre (where `at_centres` puts the row's values).
+        let beta = 0.0;
+        let sigma = crate::stochastic::slope_space::slope_deviations(&wall).delta_xi;
+        let alpha = (-1.125 * sigma).atan();
         let inc = Incidence::with_variant(alpha, beta, &wall, Variant::calibrated(None));
-        let x_in = alpha / 0.05;
+        let x_in = -1.125;
+        assert!((inc.x_in - x_in).abs() < 1e-12, "{}", inc.x_in);
         let mut c = EscapeCounts::default();
         let mut probe = EscapeCounts::default();
         for k in 0..100 {
@@ -934,7 +949,7 @@ mod tests {
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(5);
         let n = 200_000;
         let plain = (0..n)
-            .filter(|_| inc.draw_wall(&mut rng).gamma > 0.0)
+            .filter(|_| inc.draw_variant(&mut rng).gamma > 0.0)
             .count() as f64
             / n as f64;
         let corrected = (0..n)

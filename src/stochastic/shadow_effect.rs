@@ -109,8 +109,8 @@ impl ShadowSampler {
     /// `γ > α`, the elements steeper than the trajectory, weighted by the rate at which it
     /// meets them — Eq. (32) continued to `α > 0`. `alpha` is clamped into
     /// `[−π/2, π/2 − 10⁻³]`. The sampler above stays exact (`a > 0` only makes `m < 0`);
-    /// it needs about `1 + (α/Δγ)²` proposals, and the model asks for it only while
-    /// `α/Δγ < 4`.
+    /// it needs about `1 + (α/Δγ)²` proposals, and the model asks for it only while its
+    /// reduced incidence is below 4 (a rebound beyond `x_out = 4` always leaves).
     pub fn rising(alpha: f64, delta_gamma: f64) -> Self {
         Self::build(alpha.clamp(-FRAC_PI_2, FRAC_PI_2 - 1e-3), delta_gamma)
     }

@@ -17,8 +17,9 @@
 //! just left and `N` a standard normal, the next residual is
 //! `z = b z_prev + √(1 − b² E[z_prev²]) N` (its variance stays 1, as in Eq. 30, when the
 //! model's `z_prev` has the calibration's spread). The residual is
-//! [`super::rebound_model::transverse_residual`]: `γ*` less its conditional mean, over its
-//! conditional spread (Eq. 30 with the calibrated shrink), both seen from the new direction.
+//! [`super::rebound_model::transverse_residual`]: the transverse slope less its conditional
+//! mean given the slope along the path, over its conditional spread (Eq. 30 in slopes,
+//! [`super::slope_space`]), both seen from the new direction.
 
 /// Later stages (the memory is per later stage: the valley's depth `q` sets the hop).
 pub const LATER_STAGES: usize = super::escape_table::SLICES - super::escape_table::FIRST_STAGES;
@@ -279,10 +280,12 @@ mod tests {
                     &mut rng,
                     |u, n, _| hits.push((*u, *n)),
                 );
+                // The residuals are the model's: in the wall's slopes.
+                let slopes = crate::stochastic::slope_space::slope_deviations(&wall);
                 for k in 1..hits.len() {
                     let beta = incident_angles(&hits[k].0).1;
-                    let zp = transverse_residual(&hits[k - 1].1, beta, &wall);
-                    let z = transverse_residual(&hits[k].1, beta, &wall);
+                    let zp = transverse_residual(&hits[k - 1].1, beta, &slopes);
+                    let z = transverse_residual(&hits[k].1, beta, &slopes);
                     pp += zp * zp;
                     pz += zp * z;
                 }

@@ -11,7 +11,7 @@
 //! | `gaussian-angle` | `α₁ = max(α + Δγ N(0,1), 0)`: a tilt in the incident plane only | no | hits again |
 //! | `gaussian-tilt` | tilt `δ = \|Δγ N(0,1)\|`, azimuth uniform in `[0, π)` towards the particle | no | hits again |
 //! | `normal-perturbation` | rotation by `θ₁` about `n × t`, then by `θ₂` about `n`, both from the shadow-weighted Gaussian | yes | hits again |
-//! | `calibrated` | as `radenkovic-simonin-2021` | yes (Eq. 31, continued to rising particles) | leaves with the calibrated probability of [`super::escape_table`], otherwise hits the wall again with the rebound velocity |
+//! | `calibrated` | as `radenkovic-simonin-2021`, in the wall's slopes, corrected by the calibrated table | yes (Eq. 31 in slopes, continued to rising particles) | leaves with the calibrated probability of [`super::escape_table`], otherwise hits the wall again with the rebound velocity |
 //!
 //! Sources:
 //! * Sommerfeld & Huber, Int. J. Multiphase Flow 25 (1999) 1457–1489: the shadow-effect

@@ -965,6 +965,57 @@ mod tests {
     }
 
     #[test]
+    fn the_calibrated_incidence_is_the_reduced_slope_of_its_velocity() {
+        // x_in of an incidence (from its angles) and of a velocity (`reduced_slope`, what the
+        // calibration and the escape decision read) agree in every quadrant, rising or not.
+        let wall = Deviations {
+            delta_xi: 0.04,
+            delta_zeta: 0.12,
+        };
+        let slopes = slope_deviations(&wall);
+        for a in [-80.0f64, -2.0, 3.0, 60.0] {
+            for b in [-150.0f64, -30.0, 0.0, 40.0, 120.0] {
+                let (alpha, beta) = (a.to_radians(), b.to_radians());
+                let inc = Incidence::with_variant(alpha, beta, &wall, Variant::calibrated(None));
+                let u = crate::angles::velocity_from_angles(1.5, alpha, beta);
+                let x = reduced_slope(&u, &slopes);
+                assert!((x - inc.x_in).abs() < 1e-12 * x.abs().max(1.0), "{a} {b}");
+                assert_eq!(x > 0.0, a > 0.0);
+            }
+        }
+    }
+
+    #[test]
+    fn calibrated_rebounds_off_a_wall_without_slope_along_the_path() {
+        // 2-D roughness seen along its lay (σ(β) = 0, x_in infinite): finite rebounds, the
+        // transverse roughness deflecting them, no NaN.
+        let wall = Deviations {
+            delta_xi: 0.0,
+            delta_zeta: 0.1,
+        };
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(9);
+        let u = crate::angles::velocity_from_angles(1.0, -0.2, 0.0);
+        let law = CollisionLaw::Elastic;
+        let mut deflected = 0;
+        for _ in 0..2000 {
+            let r = rebound_variant(
+                u,
+                Vector3::zeros(),
+                &wall,
+                &law,
+                2.0,
+                1e-4,
+                Variant::calibrated(None),
+                &mut rng,
+            );
+            assert!(r.velocity.iter().all(|v| v.is_finite()) && r.velocity.y > 0.0);
+            assert!((r.velocity.norm() - 1.0).abs() < 1e-12);
+            deflected += (r.velocity.z.abs() > 1e-3) as u32;
+        }
+        assert!(deflected > 1000, "{deflected}");
+    }
+
+    #[test]
     fn a_trapped_particle_meets_steeper_elements_after_a_downslope() {
         // The built-in table's memory (escape_table::Q_EDGES): on the deterministic surface a
         // particle that has just left a steep downslope (q ≈ −2) meets the valley's other

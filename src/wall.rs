@@ -71,6 +71,19 @@ pub fn conditional_gamma_star(m: &Moments, gamma: f64) -> (f64, f64) {
     }
 }
 
+/// A draw of `γ*` given `γ` from Eq. (30) ([`conditional_gamma_star`]): the conditional mean
+/// plus the conditional spread times `z()`, a standard normal asked for only where there is a
+/// spread (so a degenerate direction uses no random number).
+#[inline]
+pub fn draw_gamma_star(m: &Moments, gamma: f64, z: impl FnOnce() -> f64) -> f64 {
+    let (mean, var) = conditional_gamma_star(m, gamma);
+    if var > 0.0 {
+        mean + var.sqrt() * z()
+    } else {
+        mean
+    }
+}
+
 /// Standard deviation of the wall inclination in the plane of direction `β`,
 /// `Δγ(β) = sqrt(cos²β Δξ² + sin²β Δζ²)` (Radenkovic & Simonin 2021, Eq. 35; root of Eq. 26's first line).
 pub fn delta_gamma(dev: &Deviations, beta: f64) -> f64 {

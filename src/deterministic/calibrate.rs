@@ -13,9 +13,9 @@ use crate::incidence::IncidentCondition;
 use crate::rng;
 use crate::stochastic::escape_table::{EscapeCounts, Stage, G_MAX, X_IN_MAX};
 use crate::stochastic::slope_space::{
-    proposal_alpha, reduced_slope, slope_deviations, slopes_from_normal, PROPOSAL_EPS,
+    proposal, reduced_slope, slope_deviations, slopes_from_normal, PROPOSAL_EPS,
 };
-use crate::stochastic::{left_element_memory, transverse_residual, ShadowSampler};
+use crate::stochastic::{left_element_memory, transverse_residual};
 use crate::wall::delta_gamma;
 use nalgebra::Vector3;
 use rayon::prelude::*;
@@ -91,13 +91,8 @@ pub fn escape_counts(
                         if x >= X_IN_MAX + G_MAX {
                             continue;
                         }
-                        let proposal = if x > 0.0 {
-                            ShadowSampler::rising(proposal_alpha(x), PROPOSAL_EPS)
-                        } else {
-                            ShadowSampler::new(proposal_alpha(x), PROPOSAL_EPS)
-                        };
                         let g_det = slopes_from_normal(normal, beta).0 / sigma;
-                        let g_model = proposal.sample(&mut model_stream) / PROPOSAL_EPS;
+                        let g_model = proposal(x).sample(&mut model_stream) / PROPOSAL_EPS;
                         counts.push_element(stages[j], x, g_det, g_model);
                     }
                     if h.fate == Fate::Escaped {

@@ -8,8 +8,7 @@
 use super::escape_table::{ElementRead, EscapeTable, Stage};
 use super::shadow_effect::ShadowSampler;
 use super::slope_space::{
-    normal_from_slopes, proposal_alpha, reduced_slope, slope_deviations, slopes_from_normal,
-    PROPOSAL_EPS,
+    normal_from_slopes, proposal, reduced_slope, slope_deviations, slopes_from_normal, PROPOSAL_EPS,
 };
 use super::variants::{Variant, VariantKind};
 use crate::angles::{
@@ -17,7 +16,8 @@ use crate::angles::{
 };
 use crate::collision::CollisionLaw;
 use crate::wall::{
-    conditional_gamma_star, delta_gamma_sq_of_direction, rotated_moments, Deviations, Moments,
+    conditional_gamma_star, delta_gamma_sq_of_direction, draw_gamma_star, rotated_moments,
+    Deviations, Moments,
 };
 use nalgebra::Vector3;
 use rand::Rng;
@@ -145,18 +145,20 @@ impl Incidence {
         } else {
             alpha / moments.delta_gamma()
         };
-        let (alpha_law, delta_gamma) = if calibrated {
-            (proposal_alpha(x_in), PROPOSAL_EPS)
-        } else if variant.kind.anisotropic() {
-            (alpha, moments.delta_gamma())
-        } else {
-            (alpha, delta_gamma_iso)
-        };
         // A rising particle meets the wall only in the calibrated model's later collisions.
-        let sampler = if alpha > 0.0 {
-            ShadowSampler::rising(alpha_law, delta_gamma)
+        let sampler = if calibrated {
+            proposal(x_in)
         } else {
-            ShadowSampler::new(alpha_law, delta_gamma)
+            let delta_gamma = if variant.kind.anisotropic() {
+                moments.delta_gamma()
+            } else {
+                delta_gamma_iso
+            };
+            if alpha > 0.0 {
+                ShadowSampler::rising(alpha, delta_gamma)
+            } else {
+                ShadowSampler::new(alpha, delta_gamma)
+            }
         };
         Incidence {
             alpha,
@@ -206,23 +208,18 @@ impl Incidence {
         &(stage, read, z_prev): &(Stage, ElementRead, f64),
         rng: &mut R,
     ) -> SeenWall {
-        let eps = self.sampler.delta_gamma();
-        let mut g = self.sampler.sample(rng) / eps;
+        let mut g = self.sampler.sample(rng) / PROPOSAL_EPS;
         // The bound makes ~1–2 proposals typical; the cap only guards a degenerate table.
         for _ in 0..1000 {
             if rng.gen::<f64>() * read.bound < table.weight_at(&read, g) {
                 break;
             }
-            g = self.sampler.sample(rng) / eps;
+            g = self.sampler.sample(rng) / PROPOSAL_EPS;
         }
         let s_l = g * self.moments.delta_gamma();
-        let (mean, var) = conditional_gamma_star(&self.moments, s_l);
-        let s_t = if var > 0.0 {
-            let z = table.transverse_residual(stage, z_prev, rng.sample(StandardNormal));
-            mean + var.sqrt() * z
-        } else {
-            mean
-        };
+        let s_t = draw_gamma_star(&self.moments, s_l, || {
+            table.transverse_residual(stage, z_prev, rng.sample(StandardNormal))
+        });
         self.wall_of_slopes(s_l, s_t)
     }
 
@@ -246,13 +243,7 @@ impl Incidence {
     /// (`calibrated` draws its own γ*: [`Self::draw_wall_corrected`]).
     #[inline]
     fn wall_given_gamma<R: Rng + ?Sized>(&self, gamma: f64, rng: &mut R) -> SeenWall {
-        let (mean, var) = conditional_gamma_star(&self.moments, gamma);
-        let gamma_star = if var > 0.0 {
-            let z: f64 = rng.sample(StandardNormal);
-            mean + var.sqrt() * z
-        } else {
-            mean
-        };
+        let gamma_star = draw_gamma_star(&self.moments, gamma, || rng.sample(StandardNormal));
         self.wall_of_gammas(gamma, gamma_star)
     }
 
@@ -296,11 +287,10 @@ impl Incidence {
             // `calibrated`'s proposal, without its table's correction (the model itself
             // reads the table: `draw_wall_corrected`).
             VariantKind::Calibrated => {
-                let g = self.sampler.sample(rng) / self.sampler.delta_gamma();
+                let g = self.sampler.sample(rng) / PROPOSAL_EPS;
                 let s_l = g * self.moments.delta_gamma();
-                let (mean, var) = conditional_gamma_star(&self.moments, s_l);
-                let z: f64 = rng.sample(StandardNormal);
-                self.wall_of_slopes(s_l, mean + var.sqrt() * z)
+                let s_t = draw_gamma_star(&self.moments, s_l, || rng.sample(StandardNormal));
+                self.wall_of_slopes(s_l, s_t)
             }
             // Sommerfeld & Huber 1999: the shadow law in the incident plane, an independent
             // normal law across it, one Δγ for both (isotropic).

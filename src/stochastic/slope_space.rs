@@ -19,6 +19,7 @@
 //! surface: the RMS of `asin` of the normal's components); [`slope_deviations`] turns them
 //! into the slope spreads `(σ_x, σ_z)` of a Gaussian slope field with those angle spreads.
 
+use super::shadow_effect::ShadowSampler;
 use crate::wall::{delta_gamma_sq_of_direction, Deviations};
 use nalgebra::Vector3;
 use std::cell::RefCell;
@@ -34,7 +35,9 @@ pub const PROPOSAL_EPS: f64 = 1e-4;
 pub const PROPOSAL_X_MAX: f64 = 5000.0;
 
 /// Nodes each side of 0 and step (in standard deviations) of the trapezoid rule behind
-/// [`slope_deviations`]: exact to round-off for these smooth Gaussian integrands.
+/// [`slope_deviations`]. For an analytic integrand under a Gaussian weight the rule's error
+/// is of order `e^{−2π²/h²}` (1e−137 at `h` = 0.25), and ±7 standard deviations leave out
+/// `e^{−24.5}` of the weight: round-off is all that remains.
 const NODES: i32 = 28;
 const STEP: f64 = 0.25;
 /// Fixed-point steps of [`slope_deviations`] at most: each shrinks the error by about
@@ -64,7 +67,9 @@ pub fn slope_deviations(dev: &Deviations) -> Deviations {
     })
 }
 
-/// Walls whose slope spreads [`slope_deviations`] keeps per thread (the oldest goes first).
+/// Walls whose slope spreads [`slope_deviations`] keeps per thread (the oldest goes first): a
+/// choice, not a measurement — a few wall types per CFD case, with room to spare; a lookup
+/// scans them (16 comparisons at most).
 pub const CACHED_WALLS: usize = 16;
 
 /// `(angle deviations, slope spreads)` of the walls kept, and the next slot to replace.
@@ -137,7 +142,8 @@ pub fn slopes_from_normal(n: &Vector3<f64>, beta: f64) -> (f64, f64) {
 }
 
 /// The unit normal of slopes `(s_l, s_t)` seen from direction `β` (`(sin β, cos β)`
-/// given): the inverse of [`slopes_from_normal`].
+/// given): the inverse of [`slopes_from_normal`], the exact form of Radenkovic & Simonin
+/// 2021, Eq. (23) with slopes for the angles `(γ, γ*)`.
 #[inline]
 pub fn normal_from_slopes(s_l: f64, s_t: f64, (s, c): (f64, f64)) -> Vector3<f64> {
     let hx = c * s_l + s * s_t;
@@ -156,12 +162,20 @@ pub fn reduced_slope(u: &Vector3<f64>, slopes: &Deviations) -> f64 {
     tan_alpha / delta_gamma_sq_of_direction(u.x, u.z, slopes).sqrt()
 }
 
-/// The angle `α` the proposal law reads for a reduced incidence `x` (`x ε`, `x` clamped to
-/// `±`[`PROPOSAL_X_MAX`]; a NaN counts as grazing).
+/// The calibrated model's proposal for the element at reduced incidence `x`: the shadow law
+/// of Radenkovic & Simonin 2021, Eq. (32) (continued to rising particles, `x > 0`), at the
+/// roughness [`PROPOSAL_EPS`] and the angle `x ε` (`x` clamped to `±`[`PROPOSAL_X_MAX`]; a
+/// NaN counts as grazing). A draw over `ε` is the element's slope along the path over `σ(β)`.
+/// The model and `rebound calibrate` both draw from it.
 #[inline]
-pub fn proposal_alpha(x: f64) -> f64 {
-    let x = if x.is_nan() { 0.0 } else { x };
-    x.clamp(-PROPOSAL_X_MAX, PROPOSAL_X_MAX) * PROPOSAL_EPS
+pub fn proposal(x: f64) -> ShadowSampler {
+    let x_law = if x.is_nan() { 0.0 } else { x };
+    let alpha = x_law.clamp(-PROPOSAL_X_MAX, PROPOSAL_X_MAX) * PROPOSAL_EPS;
+    if x > 0.0 {
+        ShadowSampler::rising(alpha, PROPOSAL_EPS)
+    } else {
+        ShadowSampler::new(alpha, PROPOSAL_EPS)
+    }
 }
 
 #[cfg(test)]

@@ -1,9 +1,10 @@
-//! Build script: the source digest behind `roughwall::BUILD_VERSION`.
+//! Build script: the source digest behind `BUILD_VERSION` (src/main.rs).
 //!
 //! The package version (`CARGO_PKG_VERSION`) does not change from commit to commit, so on its
 //! own it cannot tell two builds apart. This script hashes what produces the results — every
-//! `src/**/*.rs` file, `Cargo.toml` and `Cargo.lock`, as sorted relative paths with their
-//! contents (each length-prefixed) — with 64-bit FNV-1a, and exports the 16 hex digits as
+//! `.rs` file of `src/` (the application) and `crates/roughwall/src/` (the library), and
+//! both manifests and `Cargo.lock`, as sorted relative paths with their contents (each
+//! length-prefixed) — with 64-bit FNV-1a, and exports the 16 hex digits as
 //! `ROUGHWALL_SOURCE_DIGEST`. Partial tallies record `version+src.DIGEST` and `rebound merge`
 //! refuses shards of another build. No dependency: FNV-1a is a few lines and needs to tell
 //! builds apart, not resist an adversary (the partial tally's checksum is SHA-256).
@@ -41,7 +42,13 @@ fn main() {
     let root = PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").expect("CARGO_MANIFEST_DIR"));
     let mut files = Vec::new();
     rust_files(&root.join("src"), &mut files);
-    for name in ["Cargo.toml", "Cargo.lock"] {
+    rust_files(&root.join("crates/roughwall/src"), &mut files);
+    for name in [
+        "Cargo.toml",
+        "Cargo.lock",
+        "crates/roughwall/Cargo.toml",
+        "crates/roughwall/src/calibrated/aniso-escape.csv",
+    ] {
         let path = root.join(name);
         if path.is_file() {
             files.push(path);

@@ -6,7 +6,7 @@
 #ifndef ROUGHWALL_H
 #define ROUGHWALL_H
 
-/* Generated from src/ffi.rs by cbindgen (tests/c_header.rs checks it); do not edit. */
+/* Generated from crates/roughwall/src/ffi.rs by cbindgen (crates/roughwall/tests/c_header.rs checks it); do not edit. */
 
 #include <stdint.h>
 #include <stddef.h>

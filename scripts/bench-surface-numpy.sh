@@ -3,19 +3,18 @@
 # outputs) beside a NumPy port of Bergström's rsgeng2D (generation only) on the same
 # machine, with peak memory from /usr/bin/time -v. Prints a Markdown table of medians.
 #
-# Usage: scripts/bench-surface-numpy.sh [REPS]   (default 5; env VENV, CARGO_TARGET_DIR)
+# Usage: scripts/bench-surface-numpy.sh [REPS]   (default 5; env REBOUND_VENV, CARGO_TARGET_DIR)
+# NumPy comes from the project's virtual environment (scripts/install-deps.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 REPS=${1:-5}
 TARGET=${CARGO_TARGET_DIR:-target}
-VENV=${VENV:-$TARGET/bench-venv}
+VENV=${REBOUND_VENV:-.venv}
 OUT=$TARGET/bench-surface
 mkdir -p "$OUT"
 
-if [ ! -x "$VENV/bin/python" ]; then
-    python3 -m venv "$VENV"
-fi
-"$VENV/bin/python" -c "import numpy" 2>/dev/null || "$VENV/bin/pip" install -q numpy
+"$VENV/bin/python" -c "import numpy" 2>/dev/null ||
+    { echo "numpy not found in $VENV: run scripts/install-deps.sh" >&2; exit 1; }
 cargo build --release --quiet
 REBOUND=$TARGET/release/rebound
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A model within the deterministic noise? (issue "which rough-wall model to trust", part 3)
 #  1. `rebound calibrate` on configs/calibration/aniso.toml regenerates the escape table the
-#     library ships (configs/calibration/aniso-escape.csv) and checks it is byte-identical.
+#     library ships (crates/roughwall/src/calibrated/aniso-escape.csv) and checks it is byte-identical.
 #  2. On every scene below, `deterministic` and then the stochastic model twice — the paper's
 #     (`radenkovic-simonin-2021`) and `calibrated` — both run with the deviations MEASURED on
 #     the deterministic surface (its run.toml), so that the comparison isolates the model from
@@ -30,10 +30,10 @@ if [ "$QUICK" = 1 ]; then
   run calibrate --case "$quick" --particles 2000 --out "$C/$P_CALIBRATION_TABLE"
 else
   run calibrate --case calibration/aniso.toml --out "$C/$P_CALIBRATION_TABLE"
-  if cmp -s "$C/$P_CALIBRATION_TABLE/escape_table.csv" configs/calibration/aniso-escape.csv; then
+  if cmp -s "$C/$P_CALIBRATION_TABLE/escape_table.csv" crates/roughwall/src/calibrated/aniso-escape.csv; then
     echo "shipped table: byte-identical" > "$C/$P_CALIBRATION_TABLE/shipped.txt"
   else
-    echo "shipped table: DIFFERENT from configs/calibration/aniso-escape.csv" > "$C/$P_CALIBRATION_TABLE/shipped.txt"
+    echo "shipped table: DIFFERENT from crates/roughwall/src/calibrated/aniso-escape.csv" > "$C/$P_CALIBRATION_TABLE/shipped.txt"
   fi
   cat "$C/$P_CALIBRATION_TABLE/shipped.txt"
 fi

@@ -1,16 +1,14 @@
 //! Command-line interface (clap): parses arguments and dispatches to `commands`.
 
-use crate::commands::{self, Summary};
+use crate::runner::TallyOverrides;
 use clap::{Args, Parser, Subcommand};
-use roughwall::error::{Error, Result};
-use roughwall::runner::TallyOverrides;
 use roughwall::tally::Shard;
 use std::path::PathBuf;
 
 /// Particles bouncing off anisotropic rough walls: surfaces, deterministic bouncing,
 /// a stochastic wall model, and the peak elastic force of spheroids.
 #[derive(Parser, Debug)]
-#[command(name = "rebound", version = roughwall::BUILD_VERSION, about, long_about = None)]
+#[command(name = "rebound", version = crate::BUILD_VERSION, about, long_about = None)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -195,56 +193,6 @@ pub struct ReportArgs {
     pub results: PathBuf,
 }
 
-/// Runs a parsed command inside a rayon pool of the requested size.
-pub fn run(cli: Cli) -> Result<()> {
-    let threads = match &cli.command {
-        Command::Surface(a) => a.common.threads,
-        Command::Deterministic(a) => a.common.threads,
-        Command::Stochastic(a) => a.common.threads,
-        Command::ForceSweep(a) => a.common.threads,
-        Command::Merge(a) => a.threads,
-        Command::Calibrate(a) => a.common.threads,
-        Command::Compare(_) | Command::Report(_) => None,
-    };
-    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-    // More threads than a few per core only cost memory (a stack each) and scheduling.
-    let max_threads = (8 * cores).max(8);
-    let threads = match threads {
-        Some(n) if n == 0 || n > max_threads => {
-            return Err(Error::invalid(
-                "--threads",
-                n,
-                &format!("1 to {max_threads} (8 per core, {cores} cores here)"),
-            ))
-        }
-        Some(n) => n,
-        None => cores,
-    };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .map_err(|e| Error::Io(format!("thread pool: {e}")))?;
-    if cli.quiet {
-        roughwall::progress::hide();
-    }
-    let t0 = std::time::Instant::now();
-    // Warnings are printed once the command has succeeded, so that an error is always the
-    // one line a failed run prints. `install` runs the command on a pool thread: its
-    // warnings are kept there.
-    let (result, warnings) = pool.install(|| (dispatch(&cli), commands::take_warnings()));
-    let summary = result?;
-    for w in warnings {
-        eprintln!("warning: {w}");
-    }
-    if !cli.quiet {
-        eprintln!(
-            "{}",
-            summary.line(cli.command.name(), t0.elapsed().as_secs_f64())
-        );
-    }
-    Ok(())
-}
-
 impl Command {
     /// The subcommand's name on the command line.
     pub fn name(&self) -> &'static str {
@@ -258,19 +206,6 @@ impl Command {
             Command::Merge(_) => "merge",
             Command::Calibrate(_) => "calibrate",
         }
-    }
-}
-
-fn dispatch(cli: &Cli) -> Result<Summary> {
-    match &cli.command {
-        Command::Surface(a) => commands::surface::run(a),
-        Command::Deterministic(a) => commands::deterministic::run(a),
-        Command::Stochastic(a) => commands::stochastic::run(a),
-        Command::ForceSweep(a) => commands::force_sweep::run(a),
-        Command::Compare(a) => commands::compare::run(a),
-        Command::Report(a) => commands::report::run(a),
-        Command::Merge(a) => commands::merge::run(a),
-        Command::Calibrate(a) => commands::calibrate::run(a),
     }
 }
 

@@ -1,5 +1,5 @@
 //! `rebound compare`: distances between the PDFs of two runs with the `summary.csv` /
-//! `pdfs.csv` schema of `crate::tally` (e.g. `deterministic` "DS" against `stochastic`
+//! `pdfs.csv` schema of `roughwall::tally` (e.g. `deterministic` "DS" against `stochastic`
 //! "SM", as in Radenkovic & Simonin 2021, Figs. 10–11, 14–17).
 //!
 //! For every incident condition and PDF quantity present in both runs: the
@@ -11,10 +11,11 @@
 //! still piecewise constant, so L1 is exact and the (piecewise-linear) CDFs differ most
 //! at an edge, where KS is evaluated.
 
-use crate::error::Result;
 use crate::output::{fmt_num, fmt_opt, CsvTable};
-use crate::tally::schema::{read_run as read_tables, ConditionKey, RunTables};
-use crate::tally::Quantity;
+use crate::schema::{read_run as read_tables, ConditionKey, RunTables};
+use roughwall::error::Result;
+use roughwall::tally::distance::{distances, BinnedPdf};
+use roughwall::tally::Quantity;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -44,95 +45,6 @@ pub const UNMATCHED_HEADER: [&str; 4] = ["alpha_in_deg", "beta_in_deg", "quantit
 /// single-collision probability curves (`p_single_given_alpha_out`, …).
 fn is_pdf(quantity: &str) -> bool {
     Quantity::from_name(quantity).is_none_or(|q| q.is_density())
-}
-
-/// A piecewise-constant density on contiguous or gapped bins (any unit of `x`).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct BinnedPdf {
-    /// Bins `(lo, hi, density)`, sorted by `lo`, non-overlapping.
-    pub bins: Vec<(f64, f64, f64)>,
-}
-
-impl BinnedPdf {
-    /// From bins in any order; drops empty or non-finite bins.
-    pub fn new(mut bins: Vec<(f64, f64, f64)>) -> Self {
-        bins.retain(|&(l, h, p)| l.is_finite() && h.is_finite() && p.is_finite() && h > l);
-        bins.sort_by(|a, b| a.0.total_cmp(&b.0));
-        Self { bins }
-    }
-
-    /// Total probability `Σ p_i (hi_i − lo_i)`.
-    pub fn mass(&self) -> f64 {
-        self.bins
-            .iter()
-            .map(|&(l, h, p)| p.max(0.0) * (h - l))
-            .sum()
-    }
-
-    /// Density at `x` (0 outside every bin), normalised to unit mass.
-    fn density_at(&self, x: f64, mass: f64) -> f64 {
-        if mass <= 0.0 {
-            return 0.0;
-        }
-        // Bins are few (≤ a few hundred): a binary search on `lo`.
-        let i = self.bins.partition_point(|b| b.0 <= x);
-        if i == 0 {
-            return 0.0;
-        }
-        let (l, h, p) = self.bins[i - 1];
-        if x >= l && x < h {
-            p.max(0.0) / mass
-        } else {
-            0.0
-        }
-    }
-
-    /// Mean and standard deviation of the binned law (bin centres, weights `p_i w_i`).
-    pub fn mean_std(&self) -> (f64, f64) {
-        let mass = self.mass();
-        if mass <= 0.0 {
-            return (0.0, 0.0);
-        }
-        let mean = self
-            .bins
-            .iter()
-            .map(|&(l, h, p)| 0.5 * (l + h) * p.max(0.0) * (h - l))
-            .sum::<f64>()
-            / mass;
-        let var = self
-            .bins
-            .iter()
-            .map(|&(l, h, p)| (0.5 * (l + h) - mean).powi(2) * p.max(0.0) * (h - l))
-            .sum::<f64>()
-            / mass;
-        (mean, var.max(0.0).sqrt())
-    }
-}
-
-/// Kolmogorov–Smirnov distance `sup |F_a − F_b|` and L1 distance `∫|p_a − p_b|` of two
-/// binned PDFs, each normalised to unit mass (an empty PDF counts as all-zero).
-pub fn distances(a: &BinnedPdf, b: &BinnedPdf) -> (f64, f64) {
-    let (ma, mb) = (a.mass(), b.mass());
-    let mut edges: Vec<f64> = a
-        .bins
-        .iter()
-        .chain(b.bins.iter())
-        .flat_map(|&(l, h, _)| [l, h])
-        .collect();
-    edges.sort_by(|x, y| x.total_cmp(y));
-    edges.dedup();
-    let (mut fa, mut fb, mut ks, mut l1) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for w in edges.windows(2) {
-        let (l, h) = (w[0], w[1]);
-        let mid = 0.5 * (l + h);
-        let pa = a.density_at(mid, ma);
-        let pb = b.density_at(mid, mb);
-        l1 += (pa - pb).abs() * (h - l);
-        fa += pa * (h - l);
-        fb += pb * (h - l);
-        ks = ks.max((fa - fb).abs());
-    }
-    (ks.min(1.0), l1.min(2.0))
 }
 
 /// One run's outputs: per condition (the CSV strings of α⁻, β⁻), per quantity, a PDF, and
@@ -303,49 +215,4 @@ pub fn unmatched_table(list: &[Unmatched]) -> CsvTable {
         t.push(vec![a.clone(), b.clone(), q.clone(), w.to_string()]);
     }
     t
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn uniform(lo: f64, hi: f64, n: usize) -> BinnedPdf {
-        let w = (hi - lo) / n as f64;
-        BinnedPdf::new(
-            (0..n)
-                .map(|i| (lo + i as f64 * w, lo + (i + 1) as f64 * w, 1.0 / (hi - lo)))
-                .collect(),
-        )
-    }
-
-    #[test]
-    fn identical_pdfs_have_zero_distance() {
-        let a = uniform(0.0, 10.0, 20);
-        assert_eq!(distances(&a, &a), (0.0, 0.0));
-        // Same law on different bins.
-        let b = uniform(0.0, 10.0, 7);
-        let (ks, l1) = distances(&a, &b);
-        assert!(ks < 1e-12 && l1 < 1e-12);
-    }
-
-    #[test]
-    fn disjoint_pdfs_have_maximal_distance() {
-        let (ks, l1) = distances(&uniform(0.0, 1.0, 4), &uniform(2.0, 3.0, 4));
-        assert!((ks - 1.0).abs() < 1e-12 && (l1 - 2.0).abs() < 1e-12);
-    }
-
-    #[test]
-    fn shifted_uniform_ks_and_l1() {
-        // U(0,1) vs U(0.5,1.5): KS = 0.5, L1 = 1.
-        let (ks, l1) = distances(&uniform(0.0, 1.0, 10), &uniform(0.5, 1.5, 10));
-        assert!((ks - 0.5).abs() < 1e-12 && (l1 - 1.0).abs() < 1e-12);
-    }
-
-    #[test]
-    fn mean_and_std_of_a_uniform_histogram() {
-        let (m, s) = uniform(0.0, 10.0, 10).mean_std();
-        assert!((m - 5.0).abs() < 1e-12);
-        // Bin centres 0.5..9.5: variance (n² − 1)/12 = 99/12.
-        assert!((s - (99.0f64 / 12.0).sqrt()).abs() < 1e-12);
-    }
 }

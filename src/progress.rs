@@ -20,21 +20,6 @@ fn visible() -> bool {
         && std::env::var_os("CI").is_none()
 }
 
-/// A bar of `len` steps labelled `what`, or a hidden bar when not on a terminal.
-pub fn bar(len: u64, what: &str) -> ProgressBar {
-    if !visible() {
-        return ProgressBar::hidden();
-    }
-    let pb = ProgressBar::new(len);
-    pb.set_style(
-        ProgressStyle::with_template("{msg:>24} [{bar:40}] {pos}/{len} ({eta})")
-            .unwrap_or_else(|_| ProgressStyle::default_bar())
-            .progress_chars("=> "),
-    );
-    pb.set_message(what.to_string());
-    pb
-}
-
 /// Progress of a Monte Carlo run counted in particles: rate, ETA and, under a target
 /// standard error, the current error.
 pub struct Progress {
@@ -61,13 +46,6 @@ impl Progress {
         Progress { bar }
     }
 
-    /// A progress that draws nothing (tests, library callers).
-    pub fn hidden() -> Progress {
-        Progress {
-            bar: ProgressBar::hidden(),
-        }
-    }
-
     /// `n` more particles done.
     pub fn advance(&self, n: u64) {
         self.bar.inc(n);
@@ -88,5 +66,19 @@ impl Progress {
     /// Removes the bar.
     pub fn finish(&self) {
         self.bar.finish_and_clear();
+    }
+}
+
+impl roughwall::tally::engine::Progress for Progress {
+    fn advance(&self, n: u64) {
+        Progress::advance(self, n)
+    }
+
+    fn skip(&self, n: u64) {
+        Progress::skip(self, n)
+    }
+
+    fn note(&self, msg: &str) {
+        Progress::note(self, msg)
     }
 }

@@ -1,27 +1,26 @@
-//! What every simulation command resolves first: the case, the seed, the threads and the
-//! output folder. Plain values in (no command-line types), so that the library runs a case
+//! What every simulation command resolves first: the case, the seed and the output folder
+//! (the thread count goes into the manifest). Plain values in (no command-line types), so that the library runs a case
 //! the same way whatever drives it.
 
 use crate::case::{self, Case, DEFAULT_SEED};
-use crate::error::{Error, Result};
 use crate::output::Manifest;
+use roughwall::error::{Error, Result};
 use std::path::{Path, PathBuf};
 
-/// A run's case, seed, threads and output folder.
+/// A run's case, seed and output folder.
 pub struct Context {
     pub case: Case,
     /// The case file's text and where it came from (a shard's partial tally carries them).
     pub case_text: String,
     pub case_origin: String,
     pub seed: u64,
-    pub threads: usize,
     pub out_dir: PathBuf,
     pub manifest: Manifest,
 }
 
 impl Context {
     /// Loads the case file `case_file` (or the built-in `default_toml`) and resolves the seed
-    /// (`seed` overrides the case's), threads and `out` (default
+    /// (`seed` overrides the case's) and `out` (default
     /// `results/<case name>/<command>/`, for a case `name` that is one plain path component).
     /// Creates nothing on disk: commands write through an
     /// [`OutputDir`](crate::output::OutputDir) begun on `out_dir`.
@@ -60,7 +59,6 @@ impl Context {
             case_text,
             case_origin,
             seed,
-            threads,
             out_dir,
             manifest,
         })
@@ -68,7 +66,7 @@ impl Context {
 
     /// Where a shard writes its partial tally: `out` (`--out`), else
     /// `results/<name>/<command>/shard-K-of-N`.
-    pub fn shard_dir(&self, out: Option<&Path>, shard: crate::tally::Shard) -> PathBuf {
+    pub fn shard_dir(&self, out: Option<&Path>, shard: roughwall::tally::Shard) -> PathBuf {
         match out {
             Some(d) => d.to_path_buf(),
             None => self

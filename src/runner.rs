@@ -5,11 +5,11 @@
 //! Shared by `deterministic`, `stochastic` and `merge`; the models only say how to fill a
 //! block of particles (`deterministic::fill_block`, `stochastic::simulate::fill_block`).
 
-use crate::error::{Error, Result};
+use crate::partial::{Partial, PartialFile, RunIdentity, PARTIAL_FILE};
 use crate::progress::Progress;
-use crate::tally::engine::{self, ConditionStats};
-use crate::tally::partial::{Partial, PartialFile, RunIdentity, PARTIAL_FILE};
-use crate::tally::{BlockTally, ConditionTally, Plan, Shard, TallySpec};
+use roughwall::error::{Error, Result};
+use roughwall::tally::engine::{self, ConditionStats};
+use roughwall::tally::{BlockTally, ConditionTally, Plan, Shard, TallySpec};
 use sha2::Digest;
 use std::path::{Path, PathBuf};
 

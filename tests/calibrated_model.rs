@@ -3,7 +3,7 @@
 //! and malformed or mismatched tables are one-line errors.
 use crate::common;
 
-use roughwall::stochastic::escape_table::{EscapeTable, Stage};
+use roughwall::calibrated::{EscapeTable, Stage};
 use std::path::Path;
 
 const CASE: &str = "name = \"cal\"\nseed = 7\n[wall]\ndelta_xi_deg = 3.0\ndelta_zeta_deg = 6.0\n\
@@ -32,18 +32,9 @@ fn the_table_reads_back_equal_to_its_source_run() {
     );
     let table = EscapeTable::parse(&text, "t").unwrap();
 
-    // The same histories counted through the library: the same table.
-    use roughwall::case::deterministic::prepare;
-    use roughwall::deterministic::scene::generate_surface;
-    use roughwall::deterministic::{calibrate::escape_counts, Tracker};
-    let case = roughwall::case::parse(CASE, "cal").unwrap();
-    let p = prepare(&case, &Default::default(), None).unwrap();
-    let field = generate_surface(p.surface.as_ref().unwrap(), 7, p.options.triangulation).unwrap();
-    let tracker = Tracker::new(&field, p.options.max_collisions).unwrap();
-    let mut setup = p.setup;
-    setup.wall = roughwall::surface::stats::measured_deviations(&field);
-    let counts = escape_counts(&tracker.into(), &setup, &p.scene.conditions, 3000, 7);
-    assert_eq!(table.counts(), &counts);
+    // (The same histories counted through the library give the same table: a unit test
+    // of src/commands/calibrate.rs.)
+    let counts = table.counts();
 
     // The deterministic surface's transverse memory: a trapped particle's successive
     // elements lean the same way across its path (regression slope about 0.4 on the
@@ -75,7 +66,8 @@ fn the_table_reads_back_equal_to_its_source_run() {
         single += s.num(row, "p_single") * n;
     }
     // The first stages lead the table.
-    use roughwall::stochastic::escape_table::{FIRST_STAGES, X_IN_BINS, X_OUT_BINS};
+    use roughwall::calibrated::constants::X_OUT_BINS;
+    use roughwall::calibrated::grid::{FIRST_STAGES, X_IN_BINS};
     let first_cells = FIRST_STAGES * X_IN_BINS * X_OUT_BINS;
     let first: u64 = counts.collisions[..first_cells].iter().sum();
     let first_escaped: u64 = counts.escaped[..first_cells].iter().sum();
@@ -107,7 +99,7 @@ fn the_stochastic_model_takes_the_table_by_key_or_the_built_in_one() {
     let tmp = tempfile::tempdir().unwrap();
     let table = calibrate(tmp.path(), "2").join("escape_table.csv");
     let builtin = tmp.path().join("builtin.csv");
-    std::fs::write(&builtin, roughwall::stochastic::escape_table::BUILTIN).unwrap();
+    std::fs::write(&builtin, roughwall::calibrated::BUILTIN).unwrap();
     let run = |name: &str, extra: &str| {
         let case = common::write_case(
             tmp.path(),
@@ -133,7 +125,7 @@ fn the_stochastic_model_takes_the_table_by_key_or_the_built_in_one() {
 #[test]
 fn bad_tables_are_refused_in_one_line() {
     let tmp = tempfile::tempdir().unwrap();
-    let good = roughwall::stochastic::escape_table::BUILTIN;
+    let good = roughwall::calibrated::BUILTIN;
     let write = |name: &str, text: &str| {
         let p = tmp.path().join(name);
         std::fs::write(&p, text).unwrap();
@@ -230,9 +222,9 @@ fn calibrated_transverse_slope_follows_eq30_in_slopes() {
     use nalgebra::Vector3;
     use rand::SeedableRng;
     use roughwall::angles::velocity_from_angles;
+    use roughwall::calibrated::slope_space::{slope_deviations, slopes_from_normal};
     use roughwall::collision::CollisionLaw;
-    use roughwall::stochastic::rebound_model::rebound_variant;
-    use roughwall::stochastic::slope_space::{slope_deviations, slopes_from_normal};
+    use roughwall::stochastic::rebound_variant;
     use roughwall::stochastic::Variant;
     use roughwall::wall::{conditional_gamma_star, rotated_moments, Deviations};
     let wall = Deviations {

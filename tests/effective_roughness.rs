@@ -24,10 +24,7 @@ fn spheres_see_a_smoother_wall_as_the_issue_measured() {
     let case = write_case(tmp.path(), "c.toml", CASE);
     let out = run_case("surface", &case, &tmp.path().join("out"), &[]);
     let c = Csv::read(&out.join("effective_roughness.csv"));
-    assert_eq!(
-        c.header.join(","),
-        roughwall::writers::surface::EFFECTIVE_HEADER.join(",")
-    );
+    assert_eq!(c.header.join(","), headers::EFFECTIVE);
     assert!(out.join("effective_roughness.svg").is_file());
     let row = |d: f64| {
         c.rows

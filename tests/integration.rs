@@ -1,45 +1,39 @@
-//! The integration tests as one binary (ripgrep's `tests/tests.rs` is the model): cargo
-//! compiles and links one test executable instead of one per file. Each file of `tests/` is
-//! a module here, so its tests keep their names under the file's (`cargo test
-//! zero_threads_is_rejected`, `cargo test --test integration cli::`). `Cargo.toml` sets
-//! `autotests = false` and lists this target. Two files stay binaries of their own:
-//! `no_allocation.rs` installs a counting global allocator, and `fuzz_cases.rs` runs thousands
-//! of cases on every core under wall-time caps, so it must not share the machine with the
-//! other tests. A new test file is added below (the test at the end fails until it is).
+//! The application's integration tests as one binary (ripgrep's `tests/tests.rs` is the
+//! model): the `rebound` binary end to end, and the library's public API where a test sets
+//! the command line beside it. Cargo compiles and links one test executable instead of one
+//! per file. Each file of `tests/` is a module here, so its tests keep their names under the
+//! file's (`cargo test zero_threads_is_rejected`, `cargo test --test integration cli::`).
+//! `Cargo.toml` sets `autotests = false` and lists this target. `fuzz_cases.rs` stays a
+//! binary of its own: it runs thousands of cases on every core under wall-time caps, so it
+//! must not share the machine with the other tests; `real_systems/` is the target of the
+//! tests against real systems (feature `real-systems`). The library's own tests are in
+//! `crates/roughwall/tests/`. A new test file is added below (the test at the end fails
+//! until it is).
 
 mod common;
 
-mod c_header;
 mod c_library;
 mod calibrated_model;
 mod cli;
-mod code_saturne;
 mod compare_cli;
 mod deterministic_cli;
-mod deterministic_hard;
-mod deterministic_paper;
-mod deterministic_physics;
 mod effective_roughness;
 mod erosion_cli;
-mod erosion_references;
-mod force_models;
 mod force_sweep_cli;
+mod layering;
 mod out_dir_safety;
 mod scripts;
 mod shards_cli;
-mod slurm;
 mod sphere_contact;
 mod spin;
 mod stochastic_cli;
 mod stochastic_model;
-mod stochastic_sampler;
 mod stochastic_variants;
 mod surface_cli;
-mod surface_table1;
 mod wall_messages;
 
 /// The test binaries `Cargo.toml` declares besides this one.
-const OWN_BINARIES: [&str; 2] = ["fuzz_cases", "no_allocation"];
+const OWN_BINARIES: [&str; 1] = ["fuzz_cases"];
 
 /// With `autotests = false`, a file in `tests/` that is neither a module here nor its own
 /// `[[test]]` would silently never run.

@@ -2,7 +2,7 @@
 //! header, so a script cannot rot silently. Runs `scripts/reproduce-all.sh` with
 //! `REBOUND_QUICK=1` into a temporary directory, using the binary under test.
 
-use crate::common::{rebound_bin, repo_root};
+use crate::common::{headers, rebound_bin, repo_root};
 use std::path::Path;
 use std::process::Command;
 
@@ -24,10 +24,10 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         .unwrap();
     assert!(status.success(), "reproduce-all.sh failed");
     let o = out.path();
-    let summary = roughwall::tally::schema::SUMMARY_HEADER.join(",");
-    let pdfs = roughwall::tally::schema::PDFS_HEADER.join(",");
-    let moments = roughwall::tally::schema::MOMENTS_HEADER.join(",");
-    let comparison = roughwall::compare::COMPARISON_HEADER.join(",");
+    let summary = headers::SUMMARY.to_string();
+    let pdfs = headers::PDFS.to_string();
+    let moments = headers::MOMENTS.to_string();
+    let comparison = headers::COMPARISON.to_string();
     let mut expect: Vec<(String, String)> = vec![
         ("radenkovic2021/table1/surface_summary.csv".into(), "nodes,length_um,spacing_um,rms_height_um,target_rms_height_um,rms_slope_x,target_rms_slope_x,rms_slope_z,target_rms_slope_z,delta_xi_deg,target_delta_xi_deg,delta_zeta_deg,target_delta_zeta_deg,max_height_um".into()),
         ("radenkovic2021/table1/normal_angles.csv".into(), "beta_star_deg,delta_xi_star_deg,delta_zeta_star_deg,rho_xi_zeta,rho_xi_eta,rho_eta_zeta,model_delta_xi_star_deg,model_delta_zeta_star_deg,model_rho_xi_zeta".into()),
@@ -66,10 +66,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
     for fig in ["fig4", "fig6", "fig8", "fig9", "fig10", "fig11", "fig12"] {
         expect.push((format!("hu2021/{fig}/force_sweep.csv"), force.into()));
     }
-    let eroding = format!(
-        "{summary},{}",
-        roughwall::tally::schema::SUMMARY_EROSION_HEADER.join(",")
-    );
+    let eroding = format!("{summary},{}", headers::SUMMARY_EROSION);
     for wall in ["smooth", "iso", "2d", "aniso", "aniso-rev"] {
         for model in ["deterministic", "stochastic"] {
             expect.push((
@@ -82,7 +79,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
     expect.push(("wall-models/wall_models.csv".into(), "scene,model,max_ks_alpha_out,max_ks_dbeta,max_abs_bias_mean_alpha_out_deg,max_abs_z_alpha_out,max_abs_bias_mean_dbeta_deg,max_abs_z_dbeta,max_ks_alpha_out_steep,max_abs_bias_mean_alpha_out_steep_deg".into()));
     expect.push((
         "finite-size/law/effective_roughness.csv".into(),
-        roughwall::writers::surface::EFFECTIVE_HEADER.join(","),
+        headers::EFFECTIVE.to_string(),
     ));
     expect.push(("spin/spin.csv".into(), "axis,omega_rad_s,model,mean_alpha_out_deg,se_mean_alpha_out_deg,mean_dbeta_deg,se_mean_dbeta_deg".into()));
     expect.push(("finite-size/finite_size.csv".into(), "diameter_um,surface_delta_xi_deg,surface_delta_zeta_deg,effective_delta_xi_deg,effective_delta_zeta_deg,contact_fraction,max_ks_alpha_out_effective,max_ks_dbeta_effective,max_abs_bias_alpha_out_effective_deg,max_ks_alpha_out_nominal,max_ks_dbeta_nominal,max_abs_bias_alpha_out_nominal_deg".into()));
@@ -133,49 +130,4 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         !report.contains("*Not run"),
         "a stage did not run:\n{report}"
     );
-}
-
-/// `scripts/paths.sh` (the names of the results directories, for the scripts) is what
-/// `roughwall::report::paths` generates, so the scripts and `rebound report` cannot drift.
-/// After changing `src/report/paths.rs`, regenerate it with
-/// `ROUGHWALL_BLESS=1 cargo test --test integration paths_sh`.
-#[test]
-fn paths_sh_is_generated_from_the_rust_constants() {
-    let path = repo_root().join("scripts/paths.sh");
-    let generated = roughwall::report::paths::shell_script();
-    if std::env::var_os("ROUGHWALL_BLESS").is_some() {
-        std::fs::write(&path, &generated).unwrap();
-    }
-    let committed = std::fs::read_to_string(&path).unwrap_or_default();
-    assert!(
-        committed == generated,
-        "scripts/paths.sh differs from src/report/paths.rs; regenerate: ROUGHWALL_BLESS=1 cargo test --test integration paths_sh"
-    );
-    // Every script that writes under results/ takes its directory names from it.
-    let common = std::fs::read_to_string(repo_root().join("scripts/common.sh")).unwrap();
-    assert!(common.contains("source \"$ROOT/scripts/paths.sh\""));
-    // A variable the scripts use is one paths.sh defines (a misspelt `$P_…` would be empty).
-    let defined: std::collections::BTreeSet<String> = generated
-        .lines()
-        .filter_map(|l| l.split_once('=').map(|(n, _)| n.to_string()))
-        .collect();
-    for e in std::fs::read_dir(repo_root().join("scripts")).unwrap() {
-        let p = e.unwrap().path();
-        if p.extension().is_none_or(|x| x != "sh") {
-            continue;
-        }
-        let text = std::fs::read_to_string(&p).unwrap();
-        for (i, _) in text.match_indices("$P_").chain(text.match_indices("${P_")) {
-            let start = i + if text[i..].starts_with("${") { 2 } else { 1 };
-            let name: String = text[start..]
-                .chars()
-                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
-                .collect();
-            assert!(
-                defined.contains(&name),
-                "{}: ${name} is not in scripts/paths.sh",
-                p.display()
-            );
-        }
-    }
 }

@@ -67,10 +67,7 @@ fn default_run_has_the_shared_schema_model_curve_and_figures() {
     ])
     .ok();
     let summary = Csv::read(&out.join("summary.csv"));
-    assert_eq!(
-        summary.header,
-        roughwall::tally::schema::SUMMARY_HEADER.to_vec()
-    );
+    assert_eq!(summary.header.join(","), headers::SUMMARY);
     // Built-in default: Sec. 4 scene, α⁻ ∈ {−5, −15, −25}, β⁻ ∈ {0, 60}.
     assert_eq!(summary.rows.len(), 6);
     for r in summary.records() {

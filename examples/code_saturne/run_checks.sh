@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The code_saturne checks of the roughwall C library (run by `cargo test`, tests/code_saturne.rs):
+# The code_saturne checks of the roughwall C library (run by tests/real_systems/code_saturne.rs):
 #  (a) a smooth elastic roughwall wall gives the trajectories of code_saturne's built-in
 #      CS_LAGR_REBOUND bit for bit (compare_traj.py: same particles, steps and cells; every
 #      position, velocity and restart point identical as printed with %.17g). roughwall
@@ -8,13 +8,19 @@
 #      max |a - b| <= TOL instead, for experiments only;
 #  (b) the Sec. 4 glass-steel wall: the run's wall hits, for the comparison with
 #      `rebound stochastic` that the Rust test makes.
-# Installs code_saturne (Debian's 6.0.2), gcc and gfortran when missing (install.sh).
+# Needs code_saturne 6.0.x (Debian's 6.0.2), gcc and gfortran: scripts/install-deps.sh installs them.
 # Usage: run_checks.sh WORKDIR   Prints "CHECK (a): PASS" and "HITS (b): <dir>" on success.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 work=${1:?usage: run_checks.sh WORKDIR}
 mkdir -p "$work"
-"$here/install.sh" >&2
+for c in code_saturne gcc gfortran python3; do
+  command -v "$c" >/dev/null 2>&1 || { echo "run_checks.sh: $c not found: run scripts/install-deps.sh" >&2; exit 1; }
+done
+case "$(dpkg-query -W -f='${Version}' code-saturne 2>/dev/null)" in
+  6.0.*) ;;
+  *) echo "run_checks.sh: code_saturne 6.0.x needed (the wall hook is written for 6.0): run scripts/install-deps.sh" >&2; exit 1 ;;
+esac
 export USER=${USER:-root}
 t0=$(date +%s.%N)
 declare -A resu

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # OpenFOAM v1912 (Debian package `openfoam`) reference for Finnie erosion on a
 # smooth wall.  Usage: scripts/openfoam-erosion/run.sh OUT.csv
-# Installs OpenFOAM if missing, runs case/ twice (erosionParameters A: K=2,
+# Needs Debian's openfoam (scripts/install-deps.sh). Runs case/ twice (erosionParameters A: K=2,
 # and B: K=1.5) in a temporary directory, writes one CSV row per wall impact.
 set -euo pipefail
 
@@ -16,23 +16,9 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 [ -d "$here/case/system" ] || die "case directory $here/case not found"
 command -v python3 >/dev/null || die "python3 not found"
 
-# ---- install Debian's OpenFOAM when missing -------------------------------
+# ---- Debian's OpenFOAM (scripts/install-deps.sh installs it) ----------------
 status=$(dpkg-query -W -f='${Status}' openfoam 2>/dev/null || true)
-if [ "$status" != "install ok installed" ]; then
-    echo "openfoam-erosion: installing Debian package openfoam" >&2
-    sudo=""
-    if [ "$(id -u)" -ne 0 ]; then
-        command -v sudo >/dev/null || die "openfoam not installed and not root (no sudo)"
-        sudo=sudo
-    fi
-    aptlog=$(mktemp "${TMPDIR:-/tmp}/openfoam-erosion-apt.XXXXXX")
-    if ! { $sudo apt-get update && DEBIAN_FRONTEND=noninteractive $sudo apt-get install \
-            -y --no-install-recommends openfoam; } > "$aptlog" 2>&1; then
-        msg=$(tail -n1 "$aptlog"); rm -f "$aptlog"
-        die "apt-get install openfoam failed: $msg"
-    fi
-    rm -f "$aptlog"
-fi
+[ "$status" = "install ok installed" ] || die "Debian's openfoam is not installed: run scripts/install-deps.sh"
 version=$(dpkg-query -W -f='${Version}' openfoam)
 case "$version" in
     1912.*) ;;

@@ -4,7 +4,7 @@
 #
 # Usage as a library (bash):
 #     source /path/to/local-slurm.sh
-#     slurm_install                  # apt-get only if something is missing
+#     slurm_check                    # the commands are there (scripts/install-deps.sh)
 #     dir=$(mktemp -d)
 #     trap 'slurm_down; rm -rf "$dir"' EXIT
 #     slurm_up "$dir"                # exports SLURM_CONF=$dir/slurm.conf
@@ -13,15 +13,14 @@
 #     slurm_down                     # or slurm_down "$dir"; safe to call twice
 #
 # Usage as a command (e.g. from a Rust test via std::process::Command):
-#     local-slurm.sh install
+#     local-slurm.sh check
 #     local-slurm.sh up   DIR        # daemons keep running after it returns
 #     local-slurm.sh wait DIR JOBID...
 #     local-slurm.sh down DIR
 #   Then run sbatch/squeue/scontrol with SLURM_CONF=DIR/slurm.conf.
 #
 # Everything the cluster writes lives under DIR (config, munge key/socket,
-# state, spool, logs, pid files). Nothing is written to /etc or /var except by
-# the package installation itself.
+# state, spool, logs, pid files). Nothing is written to /etc or /var.
 #
 # Tunables (environment):
 #   LOCAL_SLURM_START_TIMEOUT  seconds to wait for the node to become idle (30)
@@ -40,57 +39,21 @@ _ls_err() { printf 'local-slurm: ERROR: %s\n' "$*" >&2; }
 LOCAL_SLURM_DIR=${LOCAL_SLURM_DIR:-}
 
 # ---------------------------------------------------------------------------
-# slurm_install: install the packages only when a command is missing.
+# slurm_check: every command the cluster needs is there (scripts/install-deps.sh
+# installs the packages; this script installs nothing).
 # ---------------------------------------------------------------------------
-slurm_install() {
-    local -; set +e # immune to the caller's errexit; options restored on return
-    local missing=() pkgs=() c
-    # command -> package
-    local -A pkg_of=(
-        [slurmctld]=slurmctld [slurmd]=slurmd [sbatch]=slurm-client
-        [squeue]=slurm-client [scontrol]=slurm-client [sinfo]=slurm-client
-        [munged]=munge [ss]=iproute2 [unshare]=util-linux
-    )
+slurm_check() {
+    local missing=() c
     for c in slurmctld slurmd sbatch squeue scontrol sinfo munged ss unshare; do
         # /usr/sbin may be missing from PATH for non-login shells
         if ! command -v "$c" >/dev/null 2>&1 && [[ ! -x /usr/sbin/$c ]]; then
             missing+=("$c")
-            [[ " ${pkgs[*]} " == *" ${pkg_of[$c]} "* ]] || pkgs+=("${pkg_of[$c]}")
         fi
     done
-    if ((${#missing[@]} == 0)); then
-        _ls_log "packages already installed"
-        return 0
-    fi
-    if ((EUID != 0)); then
-        _ls_err "need root to install: ${pkgs[*]} (missing: ${missing[*]})"
+    if ((${#missing[@]} > 0)); then
+        _ls_err "missing ${missing[*]}: run scripts/install-deps.sh"
         return 1
     fi
-    _ls_log "installing ${pkgs[*]}"
-
-    # Keep maintainer scripts from starting munge/slurm services.
-    local prc=/usr/sbin/policy-rc.d backup="" rc=0
-    if [[ -e $prc || -L $prc ]]; then
-        backup=$(mktemp /usr/sbin/.policy-rc.d.local-slurm.XXXXXX) || return 1
-        cp -a "$prc" "$backup" || { rm -f "$backup"; return 1; }
-    fi
-    printf '#!/bin/sh\nexit 101\n' >"$prc" && chmod 755 "$prc" || rc=1
-    if ((rc == 0)); then
-        DEBIAN_FRONTEND=noninteractive apt-get update -qq >&2 || rc=1
-        if ((rc == 0)); then
-            DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-                -o Dpkg::Options::=--force-confdef -o Dpkg::Options::=--force-confold \
-                "${pkgs[@]}" >&2 || rc=1
-        fi
-    fi
-    # restore (or remove) policy-rc.d
-    if [[ -n $backup ]]; then
-        mv -f "$backup" "$prc"
-    else
-        rm -f "$prc"
-    fi
-    ((rc == 0)) || { _ls_err "apt-get install ${pkgs[*]} failed"; return 1; }
-    _ls_log "installed ${pkgs[*]}"
 }
 
 # ---------------------------------------------------------------------------
@@ -228,7 +191,7 @@ _ls_up_once() {
     local c
     for c in munged slurmctld slurmd sinfo scontrol ss unshare; do
         command -v "$c" >/dev/null 2>&1 || {
-            _ls_err "$c not found in PATH (run slurm_install; is /usr/sbin in PATH?)"
+            _ls_err "$c not found in PATH (run scripts/install-deps.sh; is /usr/sbin in PATH?)"
             return 1
         }
     done
@@ -567,7 +530,7 @@ slurm_wait_jobs() {
 # ---------------------------------------------------------------------------
 if [[ ${BASH_SOURCE[0]} == "$0" ]]; then
     case ${1:-} in
-        install) slurm_install ;;
+        check) slurm_check ;;
         up) shift; slurm_up "$@" ;;
         down) shift; slurm_down "$@" ;;
         wait)
@@ -576,7 +539,7 @@ if [[ ${BASH_SOURCE[0]} == "$0" ]]; then
             export SLURM_CONF="$1/slurm.conf"; shift
             slurm_wait_jobs "$@" ;;
         *)
-            echo "usage: $0 install | up DIR | wait DIR JOBID... | down DIR" >&2
+            echo "usage: $0 check | up DIR | wait DIR JOBID... | down DIR" >&2
             exit 1 ;;
     esac
 fi

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Runs rebound on a real single-node Slurm cluster (Debian's slurm-wlm and munge, installed
-# when missing, daemons on 127.0.0.1 only and started directly, without systemd): a
+# Runs rebound on a real single-node Slurm cluster (Debian's slurm-wlm and munge, which
+# scripts/install-deps.sh installs; daemons on 127.0.0.1 only, started directly, without systemd): a
 # deterministic and a stochastic case as 4 shards each through submit.sh (job array plus
 # afterok merge job), then checks that every CSV the merge wrote is byte-identical to a
 # one-process run, and that a failing shard cancels the merge instead of leaving it
@@ -16,7 +16,7 @@ export PATH=$PATH:/usr/sbin
 # shellcheck source=local-slurm.sh
 source "$here/local-slurm.sh"
 LOCAL_SLURM_QUIET=1
-slurm_install
+slurm_check
 work=$(mktemp -d /tmp/rbslurm.XXXXXX)   # short: the munge socket path must stay < 108 bytes
 cleanup() { slurm_down "$work/c" || true; rm -rf "$work"; }
 trap cleanup EXIT

@@ -2,15 +2,15 @@
 //! options, the scene, the surface plan and what to tally
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
-use super::check::{check_int_range, check_range, check_value, Warning};
 use super::{Case, Scene, WallSource};
-use crate::deterministic::scene::{SceneOptions, SurfacePlan};
-use crate::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
-use crate::erosion::ErosionSetup;
-use crate::error::{Error, Result};
 use crate::runner::TallyOverrides;
-use crate::surface::Triangulation;
-use crate::tally::TallySpec;
+use roughwall::check::{check_int_range, check_range, check_value, Warning};
+use roughwall::deterministic::scene::{SceneOptions, SurfacePlan};
+use roughwall::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
+use roughwall::erosion::ErosionSetup;
+use roughwall::error::{Error, Result};
+use roughwall::surface::Triangulation;
+use roughwall::tally::TallySpec;
 use std::path::Path;
 
 /// Flattest incident angle the tracker is asked to follow (degrees): a descent from the top
@@ -243,4 +243,44 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
         notes,
         warnings,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use roughwall::collision::CollisionLaw;
+
+    /// The shipped case `configs/cases/<name>.toml`.
+    fn shipped(name: &str) -> Case {
+        let path = std::path::PathBuf::from(format!("cases/{name}.toml"));
+        let (text, origin) = super::super::load_text(Some(&path), "").unwrap();
+        super::super::parse(&text, &origin).unwrap()
+    }
+
+    #[test]
+    fn shipped_cases_resolve() {
+        use roughwall::deterministic::scene::SurfacePlan;
+        for name in [
+            "aniso",
+            "aniso-rev",
+            "glass-steel",
+            "glass-steel-2d",
+            "glass-steel-iso",
+            "glass-steel-fig16",
+            "glass-steel-fig16-2d",
+            "glass-steel-fig17",
+            "glass-steel-fig17-2d",
+        ] {
+            let case = shipped(name);
+            assert_eq!(case.name, name);
+            let scene = case.scene(&mut Vec::new()).unwrap();
+            let opt = deterministic_options(&case).unwrap();
+            let plan = surface_plan(&scene, &opt.scene).unwrap();
+            assert!(matches!(plan, SurfacePlan::Auto(_)));
+            if name.starts_with("glass") {
+                assert!(matches!(scene.law, CollisionLaw::SommerfeldHuber(_)));
+                assert_eq!(scene.speed.mean_m_s, 5.91);
+            }
+        }
+    }
 }

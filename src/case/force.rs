@@ -2,9 +2,9 @@
 //! `[sweep]`).
 
 use super::{Case, ParticleSection, SweepSection};
-use crate::error::{Error, Result};
-use crate::force::sweep::Sweep;
-use crate::force::{material, Model, Particle};
+use roughwall::error::{Error, Result};
+use roughwall::force::sweep::Sweep;
+use roughwall::force::{material, Model, Particle};
 
 /// Fig. 6 values used for any `[particle]` property a case leaves out (no preset).
 const FIG6: Particle = Particle {
@@ -103,4 +103,30 @@ pub fn resolve(case: &Case) -> Result<(Particle, Sweep)> {
         Particle { diameter: d, ..p }.validate()?;
     }
     Ok((p, sweep))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_shipped_hu_case_resolves() {
+        for name in [
+            "hu-fig4",
+            "hu-fig6",
+            "hu-fig8",
+            "hu-fig9",
+            "hu-fig10",
+            "hu-fig10b",
+            "hu-fig11",
+            "hu-fig11b",
+            "hu-fig12",
+        ] {
+            let path = std::path::PathBuf::from(format!("cases/{name}.toml"));
+            let (text, origin) = super::super::load_text(Some(&path), "").unwrap();
+            let case = super::super::parse(&text, &origin).unwrap();
+            let (p, s) = resolve(&case).unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert!(p.validate().is_ok() && !s.is_empty(), "{name}");
+        }
+    }
 }

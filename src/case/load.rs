@@ -1,7 +1,7 @@
 //! Finding, reading and parsing a case file, with one-line errors that name the key.
 
 use super::schema::Case;
-use crate::error::{Error, Result};
+use roughwall::error::{Error, Result};
 use std::path::{Path, PathBuf};
 
 /// Largest case file read (bytes): far above any real case, far below what would strain the
@@ -32,12 +32,6 @@ pub fn resolve_path(path: &Path) -> Result<PathBuf> {
         "case file `{}` not found (looked as given and under configs/)",
         path.display()
     )))
-}
-
-/// Loads the case at `path`, or parses `default_toml` (the command's built-in case) when absent.
-pub fn load(path: Option<&Path>, default_toml: &str) -> Result<Case> {
-    let (text, origin) = load_text(path, default_toml)?;
-    parse(&text, &origin)
 }
 
 /// The text of the case at `path` (or `default_toml`) and where it came from.
@@ -88,15 +82,6 @@ pub fn parse(text: &str, origin: &str) -> Result<Case> {
 /// by key path.
 pub fn check_finite(tree: &toml::Value) -> Result<()> {
     reject_non_finite(tree, "").map_err(|(key, v)| Error::invalid(&key, v, "a finite number"))
-}
-
-impl Case {
-    /// [`check_finite`] on this case as a TOML tree (its keys as in a case file).
-    pub fn check_finite(&self) -> Result<()> {
-        let tree = toml::Value::try_from(self)
-            .map_err(|e| Error::Internal(format!("a case as a TOML tree: {e}")))?;
-        check_finite(&tree)
-    }
 }
 
 fn reject_non_finite(v: &toml::Value, path: &str) -> std::result::Result<(), (String, f64)> {
@@ -170,7 +155,8 @@ mod tests {
     }
 
     #[test]
-    fn a_non_finite_number_is_the_same_message_from_a_file_and_from_a_built_case() {
+    fn a_non_finite_number_is_the_same_message_from_a_file_and_from_the_wall_model() {
+        use roughwall::wall_model::{WallModel, WallParams};
         for (text, value) in [
             ("nan", f64::NAN),
             ("inf", f64::INFINITY),
@@ -181,22 +167,18 @@ mod tests {
                 "name='a'\n[wall]\ndelta_xi_deg = 1.0\ndelta_zeta_deg = {text}\n"
             ));
             assert_eq!(from_file, want);
-            let built = Case {
-                name: "a".into(),
-                wall: Some(crate::case::WallSpec {
-                    delta_xi_deg: Some(1.0),
-                    delta_zeta_deg: Some(value),
-                    ..Default::default()
-                }),
+            let built = WallModel::new(&WallParams {
+                delta_xi_deg: 1.0,
+                delta_zeta_deg: value,
                 ..Default::default()
-            };
-            assert_eq!(built.check_finite().unwrap_err().to_string(), want);
+            });
+            assert_eq!(built.unwrap_err().to_string(), want);
         }
         let fine = parse(
             "name='a'\n[wall]\ndelta_xi_deg = 1.0\ndelta_zeta_deg = 2.0\n",
             "t.toml",
         );
-        assert_eq!(fine.unwrap().check_finite(), Ok(()));
+        assert!(fine.is_ok());
     }
 
     #[test]

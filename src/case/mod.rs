@@ -7,7 +7,6 @@
 //! holds each command's built-in case.
 
 pub mod builtin;
-pub mod check;
 pub mod collision;
 pub mod deterministic;
 pub mod erosion;
@@ -20,8 +19,8 @@ pub mod stochastic;
 pub mod values;
 pub mod wall;
 
-pub use crate::warning::Warning;
-pub use load::{load, load_text, parse, resolve_path, DEFAULT_SEED};
-pub use scene::{IncidentCondition, Scene, SpeedLaw};
+pub use load::{load_text, parse, DEFAULT_SEED};
+pub use roughwall::warning::Warning;
+pub use scene::Scene;
 pub use schema::*;
-pub use wall::{SurfaceSpec, WallSource};
+pub use wall::WallSource;

@@ -1,12 +1,12 @@
 //! `[incidence]`, `[particles]` and `[output]`: the scene `deterministic` and `stochastic`
 //! share (incident conditions, speeds, spin, particle counts, PDF bins).
 
-use super::check::{check_int_range, check_length, check_range, check_value, within, Warning};
 use super::schema::*;
-use super::wall::{WallSource, MAX_DEVIATION_DEG};
-use crate::collision::CollisionLaw;
-use crate::error::{Error, Result};
-pub use crate::incidence::{IncidentCondition, SpeedLaw, SpeedReference};
+use super::wall::{WallSource, DIAMETER_RANGE_UM, MAX_DEVIATION_DEG};
+use roughwall::check::{check_int_range, check_length, check_range, check_value, within, Warning};
+use roughwall::collision::CollisionLaw;
+use roughwall::error::{Error, Result};
+pub use roughwall::incidence::{IncidentCondition, SpeedLaw, SpeedReference};
 
 /// Everything `deterministic` and `stochastic` share: one scene, two models.
 #[derive(Clone, Debug, PartialEq)]
@@ -23,13 +23,13 @@ pub struct Scene {
     pub bin_width_deg: f64,
     pub psi: f64,
     /// The erosion law of `[erosion]` (none: nothing is computed).
-    pub erosion: Option<crate::erosion::ErosionModel>,
+    pub erosion: Option<roughwall::erosion::ErosionModel>,
     /// Particle density (kg/m³): with the diameter, the particle mass.
     pub density_kg_m3: f64,
     /// The stochastic model's rough-wall variant (`[stochastic] model`).
-    pub variant: crate::stochastic::Variant,
+    pub variant: roughwall::stochastic::Variant,
     /// Incident spin (`[incidence] spin_rad_s`, `spin_std_rad_s`).
-    pub spin: crate::incidence::SpinLaw,
+    pub spin: roughwall::incidence::SpinLaw,
 }
 
 impl Scene {
@@ -68,11 +68,6 @@ impl Scene {
 /// above 10 km/s impacts are hypervelocity (the wall melts). Both bounds keep every derived
 /// quantity (squares of velocity components) far from underflow and overflow.
 pub const SPEED_RANGE_M_S: (f64, f64) = (1e-6, 1e4);
-/// Particle diameters (µm): a nanometre to a metre.
-pub const DIAMETER_RANGE_UM: (f64, f64) = (1e-3, 1e6);
-/// ψ of Eq. (34): the paper uses 2 (Konan et al. 1.5); below 0.01 almost every candidate
-/// rebound is rejected (hundreds of redraws per rebound), above 100 none is.
-pub const PSI_RANGE: (f64, f64) = (0.01, 100.0);
 /// Longest list of incident angles (each of `alpha_deg`, `beta_deg`), and most conditions.
 pub const MAX_ANGLES: usize = 1000;
 pub const MAX_CONDITIONS: usize = 10_000;
@@ -242,7 +237,7 @@ impl Case {
         let per_tally = (12.0 * 360.0 / bin * 8.0 + 2.0 * 180.0 / bin * 32.0) as u64;
         let threads = std::thread::available_parallelism().map_or(1, |n| n.get()) as u64;
         let tallies = conditions.len() as u64 + 4 * 8 * threads;
-        crate::memory::require(
+        roughwall::memory::require(
             "output.bin_width_deg",
             bin,
             per_tally.saturating_mul(tallies),
@@ -283,7 +278,7 @@ pub const MAX_SPIN_RAD_S: f64 = 1e7;
 
 /// `[incidence] spin_rad_s`, `spin_std_rad_s`: three components each, finite, within
 /// `±MAX_SPIN_RAD_S` (standard deviations `≥ 0`).
-fn spin_law(inc: &IncidenceSection) -> Result<crate::incidence::SpinLaw> {
+fn spin_law(inc: &IncidenceSection) -> Result<roughwall::incidence::SpinLaw> {
     let three = |key: &str, v: &Option<Vec<f64>>, std: bool| -> Result<[f64; 3]> {
         let Some(v) = v else {
             return Ok([0.0; 3]);
@@ -302,7 +297,7 @@ fn spin_law(inc: &IncidenceSection) -> Result<crate::incidence::SpinLaw> {
         }
         Ok(out)
     };
-    Ok(crate::incidence::SpinLaw {
+    Ok(roughwall::incidence::SpinLaw {
         mean_rad_s: three("incidence.spin_rad_s", &inc.spin_rad_s, false)?,
         std_rad_s: three("incidence.spin_std_rad_s", &inc.spin_std_rad_s, true)?,
     })

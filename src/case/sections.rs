@@ -7,15 +7,6 @@
 
 use super::{Case, Warning};
 
-/// The simulation commands that read a case file.
-pub const CASE_COMMANDS: [&str; 5] = [
-    "surface",
-    "deterministic",
-    "stochastic",
-    "calibrate",
-    "force-sweep",
-];
-
 /// One case file drives both Monte Carlo models on the same scene (and `calibrate` runs the
 /// deterministic one): each reads, or at least checks, every scene section.
 const MONTE_CARLO: &[&str] = &["deterministic", "stochastic", "calibrate"];

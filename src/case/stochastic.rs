@@ -3,16 +3,15 @@
 //! built, except for `[stochastic] effective_for_diameter`; a case with surface parameters
 //! is converted to deviations (Eq. 15).
 
-use super::check::within;
-use super::scene::PSI_RANGE;
-use super::wall::MAX_DEVIATION_DEG;
 use super::{Case, Scene, WallSource, Warning};
-use crate::erosion::ErosionSetup;
-use crate::error::{Error, Result};
 use crate::runner::TallyOverrides;
-use crate::stochastic::simulate::{tally_spec, ModelSetup};
-use crate::tally::TallySpec;
-use crate::wall::Deviations;
+use roughwall::erosion::ErosionSetup;
+use roughwall::error::{Error, Result};
+use roughwall::stochastic::simulate::{tally_spec, ModelSetup};
+use roughwall::stochastic::variants::checked_psi;
+use roughwall::stochastic::Variant;
+use roughwall::tally::TallySpec;
+use roughwall::wall::Deviations;
 
 /// What a stochastic run resolves from its case before any rebound is drawn.
 pub struct Prepared {
@@ -144,15 +143,18 @@ fn effective_wall(
     };
     // Over the realisations `deterministic` bounces on (`[deterministic] surfaces`), one
     // at a time.
-    use crate::deterministic::scene::{generate_surface, realisation_seed};
-    use crate::surface::stats::AngleSums;
+    use roughwall::deterministic::scene::{generate_surface, realisation_seed};
+    use roughwall::surface::stats::AngleSums;
     let n = det.options.surfaces;
     let (mut nominal, mut eff, mut contact) = (AngleSums::default(), AngleSums::default(), 0.0);
     for r in 0..n {
         let field = generate_surface(plan, realisation_seed(seed, r), det.options.triangulation)?;
         nominal.add(&field);
-        let dil =
-            crate::surface::dilation::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
+        let dil = roughwall::surface::dilation::sphere_centre_surface(
+            &field,
+            diameter,
+            &format!("`{key}`"),
+        )?;
         eff.add(&dil.field);
         contact += dil.contact_fraction;
     }
@@ -190,72 +192,21 @@ fn effective_wall(
 impl Case {
     /// ψ of the single-collision probability, Eq. (34): `[stochastic] psi`, default 2 (the paper's).
     pub fn psi(&self) -> Result<f64> {
-        let psi = self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0);
-        let (lo, hi) = PSI_RANGE;
-        within(
-            "stochastic.psi",
-            psi,
-            lo,
-            hi,
-            "",
-            "below, almost every candidate rebound is redrawn; above, none is; the paper uses 2",
-        )
+        checked_psi(self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0))
     }
 
     /// The rough-wall model of `[stochastic] model` and `delta_gamma_deg` (default: the
     /// paper's).
-    pub fn variant(&self) -> Result<crate::stochastic::Variant> {
-        use crate::stochastic::{Variant, VariantKind};
+    pub fn variant(&self) -> Result<Variant> {
         let st = self.stochastic.clone().unwrap_or_default();
-        let kind = match st.model.as_deref() {
-            None => VariantKind::RadenkovicSimonin2021,
-            Some(name) => VariantKind::from_name(name).ok_or_else(|| {
-                let names: Vec<String> = VariantKind::ALL
-                    .iter()
-                    .map(|v| format!("\"{}\"", v.name()))
-                    .collect();
-                Error::invalid(
-                    "stochastic.model",
-                    format!("\"{name}\""),
-                    &format!("one of {}", names.join(", ")),
-                )
-            })?,
-        };
-        let delta_gamma = match st.delta_gamma_deg {
-            None => None,
-            Some(_) if kind.anisotropic() => {
-                return Err(Error::Input(format!(
-                    "`stochastic.delta_gamma_deg` applies to the isotropic variants only; model = \"{}\" takes its Δγ from the wall (Eq. 26)",
-                    kind.name()
-                )))
+        let variant = Variant::checked(st.model.as_deref(), st.delta_gamma_deg)?;
+        match &st.escape_table {
+            None => Ok(variant),
+            Some(path) => {
+                variant.check_takes_escape_table()?;
+                variant.with_escape_table(read_escape_table(path)?)
             }
-            Some(d) => Some(
-                within(
-                    "stochastic.delta_gamma_deg",
-                    d,
-                    0.0,
-                    MAX_DEVIATION_DEG,
-                    " degrees",
-                    "a roughness angle within the wall models' range",
-                )?
-                .to_radians(),
-            ),
-        };
-        let escape = match (&st.escape_table, kind) {
-            (None, _) => None,
-            (Some(path), VariantKind::Calibrated) => Some(read_escape_table(path)?),
-            (Some(_), _) => {
-                return Err(Error::Input(format!(
-                "`stochastic.escape_table` applies to model = \"calibrated\" only (model = \"{}\")",
-                kind.name()
-            )))
-            }
-        };
-        Ok(Variant {
-            kind,
-            delta_gamma,
-            escape,
-        })
+        }
     }
 }
 
@@ -265,7 +216,7 @@ const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 23;
 
 /// Reads the escape table at `path` (`[stochastic] escape_table`): as given, else under
 /// `configs/`; one-line errors that name the key and the file.
-fn read_escape_table(path: &str) -> Result<&'static crate::stochastic::escape_table::EscapeTable> {
+fn read_escape_table(path: &str) -> Result<&'static roughwall::calibrated::EscapeTable> {
     let key = "stochastic.escape_table";
     let file = super::load::resolve_path(std::path::Path::new(path)).map_err(|_| {
         Error::Input(format!(
@@ -281,5 +232,5 @@ fn read_escape_table(path: &str) -> Result<&'static crate::stochastic::escape_ta
     }
     let text = std::fs::read_to_string(&file)
         .map_err(|e| Error::Input(format!("{what}: cannot read it: {e}")))?;
-    Ok(crate::stochastic::escape_table::EscapeTable::parse(&text, &what)?.intern())
+    Ok(roughwall::calibrated::EscapeTable::parse(&text, &what)?.intern())
 }

@@ -1,8 +1,8 @@
 //! A list of values, a linear range or a logarithmic range (`[sweep]`), expanded and checked.
 
-use super::check::check_length;
 use super::schema::*;
-use crate::error::{Error, Result};
+use roughwall::check::check_length;
+use roughwall::error::{Error, Result};
 
 impl Values {
     /// The values, checked finite; `key` names them in errors. Ranges hold at most 1e6 points.

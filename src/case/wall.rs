@@ -1,18 +1,13 @@
 //! `[surface]`, `[wall]` and `[stats]`: the wall as deviations or a full surface to generate,
 //! and the statistics `rebound surface` measures on it (Radenkovic & Simonin 2021, Sec. 2).
 
-use super::check::{check_int_range, check_length, positive, within, Warning};
-use super::scene::DIAMETER_RANGE_UM;
 use super::schema::*;
-use crate::error::{Error, Result};
-pub use crate::surface::SurfaceSpec;
-use crate::wall::{self, Deviations};
+use roughwall::check::{check_int_range, check_length, positive, within, Warning};
+use roughwall::error::{Error, Result};
+pub use roughwall::surface::SurfaceSpec;
+use roughwall::wall::{self, Deviations};
 
-/// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
-/// stretched: run, but warn (the paper validates Eq. 14 up to about 7.5°).
-pub const LOW_ROUGHNESS_LIMIT_DEG: f64 = 7.5;
-/// Beyond this deviation the wall models are not meant to be used at all.
-pub const MAX_DEVIATION_DEG: f64 = 20.0;
+pub use roughwall::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 /// Steepest rms slope (degrees) a generated surface may have.
 pub const MAX_SURFACE_SLOPE_DEG: f64 = 45.0;
 
@@ -34,28 +29,14 @@ impl WallSource {
     }
 }
 
+/// Particle diameters (µm): a nanometre to a metre (`[particles]`, `[stats]`).
+pub const DIAMETER_RANGE_UM: (f64, f64) = (1e-3, 1e6);
 /// Lengths of a generated surface (µm): a picometre to a kilometre.
 pub const LENGTH_RANGE_UM: (f64, f64) = (1e-6, 1e9);
 /// Longest `[stats] diameter_um` list.
 pub const MAX_DIAMETERS: usize = 64;
 /// Longest `[stats] beta_star_deg` list.
 pub const MAX_BETA_STAR: usize = 1000;
-
-fn deviation(key: &str, v: f64, warnings: &mut Vec<Warning>) -> Result<f64> {
-    if !(0.0..=MAX_DEVIATION_DEG).contains(&v) {
-        return Err(Error::invalid(
-            key,
-            v,
-            &format!("0 to {MAX_DEVIATION_DEG} degrees"),
-        ));
-    }
-    if v > LOW_ROUGHNESS_LIMIT_DEG {
-        warnings.push(Warning(format!(
-            "`{key}` = {v}° is beyond the low-roughness approximation (Eq. 6, up to ~{LOW_ROUGHNESS_LIMIT_DEG}°); results are extrapolated"
-        )));
-    }
-    Ok(v.to_radians())
-}
 
 impl Case {
     /// The `[surface]` or `[wall]` section and its name.
@@ -85,7 +66,7 @@ impl Case {
                 (Some(_), Some(_)) => Err(Error::Input(format!(
                     "[{sec}] gives both `{cname}` and `{dname}`: give one of them"
                 ))),
-                (None, Some(d)) => deviation(&format!("{sec}.{dname}"), d, warnings),
+                (None, Some(d)) => wall::checked_deviation(&format!("{sec}.{dname}"), d, warnings),
                 (Some(c), None) => {
                     let c = positive(&format!("{sec}.{cname}"), c)?;
                     let h = w.rms_height_um.ok_or_else(|| {
@@ -94,7 +75,7 @@ impl Case {
                         ))
                     })?;
                     let h = positive(&format!("{sec}.rms_height_um"), h)?;
-                    deviation(
+                    wall::checked_deviation(
                         &format!("{sec}.{cname} (as a deviation)"),
                         wall::deviation_from_surface(h, c).to_degrees(),
                         warnings,
@@ -192,7 +173,7 @@ impl Case {
                     Some(c)
                 }
                 (None, Some(d)) => {
-                    let dr = deviation(&format!("{sec}.{dname}"), d, warnings)?;
+                    let dr = wall::checked_deviation(&format!("{sec}.{dname}"), d, warnings)?;
                     let c = wall::corr_length_from_deviation(h_um, dr);
                     if let Some(c) = c.filter(|_| h_um > 0.0) {
                         within(
@@ -261,10 +242,10 @@ impl Case {
                 }
             }
         }
-        crate::memory::require(
+        roughwall::memory::require(
             &format!("{sec}.nodes"),
             nodes,
-            crate::surface::generate::generation_bytes(&spec),
+            roughwall::surface::generate::generation_bytes(&spec),
             &format!("a {nodes} × {nodes} surface"),
         )?;
         Ok(spec)

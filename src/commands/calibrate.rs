@@ -1,16 +1,16 @@
 //! `rebound calibrate`: the escape table of the `calibrated` stochastic model, measured
-//! on the deterministic simulation of a case (`roughwall::deterministic::calibrate`).
+//! on the deterministic simulation of a case (`roughwall::calibrated::calibrate`).
 
+use crate::case::{builtin, deterministic::prepare};
 use crate::cli::CalibrateArgs;
 use crate::commands::{begin_out, context, counted, grouped, warn, Summary, Wrote};
-use roughwall::case::{builtin, deterministic::prepare};
-use roughwall::deterministic::calibrate::escape_counts;
+use crate::output::out_dir::check_out;
+use crate::output::write_atomic;
+use crate::runner::TallyOverrides;
+use roughwall::calibrated::escape_counts;
+use roughwall::calibrated::EscapeTable;
 use roughwall::deterministic::scene::{build_surfaces, realisations};
 use roughwall::error::{Error, Result};
-use roughwall::output::out_dir::check_out;
-use roughwall::output::write_atomic;
-use roughwall::runner::TallyOverrides;
-use roughwall::stochastic::escape_table::EscapeTable;
 use roughwall::surface::stats::pooled_deviations;
 use roughwall::surface::HeightField;
 
@@ -118,4 +118,51 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
         rate: Some((histories, "histories")),
         wrote: Wrote::Dir(dir),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::case::deterministic::prepare;
+    use roughwall::calibrated::escape_counts;
+    use roughwall::calibrated::EscapeTable;
+    use roughwall::deterministic::scene::generate_surface;
+    use roughwall::deterministic::Tracker;
+
+    const CASE: &str =
+        "name = \"cal\"\nseed = 7\n[wall]\ndelta_xi_deg = 3.0\ndelta_zeta_deg = 6.0\n\
+                        [incidence]\nalpha_deg = [-3.0, -12.5]\nbeta_deg = [0.0, 90.0]\n\
+                        [particles]\ncount = 3000\n[collision]\nmodel = \"elastic\"\n";
+
+    /// `rebound calibrate` writes the counts the library counts on the case's surface.
+    #[test]
+    fn the_table_counts_the_histories_the_library_counts() {
+        use clap::Parser;
+        let tmp = tempfile::tempdir().unwrap();
+        let case_file = tmp.path().join("cal.toml");
+        std::fs::write(&case_file, CASE).unwrap();
+        let out = tmp.path().join("out");
+        let cli = crate::cli::Cli::try_parse_from([
+            "rebound".as_ref(),
+            "calibrate".as_ref(),
+            "--quiet".as_ref(),
+            "--case".as_ref(),
+            case_file.as_os_str(),
+            "--out".as_ref(),
+            out.as_os_str(),
+        ])
+        .unwrap();
+        crate::commands::run(cli).unwrap();
+        let text = std::fs::read_to_string(out.join("escape_table.csv")).unwrap();
+        let table = EscapeTable::parse(&text, "t").unwrap();
+
+        let case = crate::case::parse(CASE, "cal").unwrap();
+        let p = prepare(&case, &Default::default(), None).unwrap();
+        let field =
+            generate_surface(p.surface.as_ref().unwrap(), 7, p.options.triangulation).unwrap();
+        let tracker = Tracker::new(&field, p.options.max_collisions).unwrap();
+        let mut setup = p.setup;
+        setup.wall = roughwall::surface::stats::measured_deviations(&field);
+        let counts = escape_counts(&tracker.into(), &setup, &p.scene.conditions, 3000, 7);
+        assert_eq!(table.counts(), &counts);
+    }
 }

@@ -1,11 +1,11 @@
 //! `rebound compare --a DIR --b DIR --out DIR`: KS and L1 distances, means and stds of
-//! the PDFs of two runs (see `roughwall::compare`, which reads and computes; this writes).
+//! the PDFs of two runs (see `crate::compare`, which reads and computes; this writes).
 
 use crate::cli::CompareArgs;
 use crate::commands::{begin_out, Summary, Wrote};
-use roughwall::compare::{compare_runs, comparison_table, read_run, unmatched_table};
+use crate::compare::{compare_runs, comparison_table, read_run, unmatched_table};
+use crate::output::{out_dir, write_atomic};
 use roughwall::error::{Error, Result};
-use roughwall::output::{out_dir, write_atomic};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -24,7 +24,7 @@ pub fn run(args: &CompareArgs) -> Result<Summary> {
 }
 
 /// Writes `comparison.csv`, `unmatched.csv`, the overlays and a small `run.toml` into
-/// `out`, as a whole (staging directory, lock, swap: [`roughwall::output::out_dir`]). `out` must
+/// `out`, as a whole (staging directory, lock, swap: [`crate::output::out_dir`]). `out` must
 /// be a new directory or a previous rebound output other than `a_dir` and `b_dir`; both
 /// inputs are read and checked before anything is written.
 fn run_compare(
@@ -71,10 +71,10 @@ fn run_compare(
     let dir = staged.path();
     comparison_table(&rows).write(&dir.join("comparison.csv"))?;
     unmatched_table(&unmatched).write(&dir.join("unmatched.csv"))?;
-    let figs = roughwall::figures::compare::write(dir, &a, &b, label_a, label_b)?;
+    let figs = crate::figures::compare::write(dir, &a, &b, label_a, label_b)?;
     let mut run = toml::Table::new();
     run.insert("command".into(), "compare".into());
-    run.insert("version".into(), roughwall::BUILD_VERSION.into());
+    run.insert("version".into(), crate::BUILD_VERSION.into());
     run.insert("a".into(), a_dir.display().to_string().into());
     run.insert("b".into(), b_dir.display().to_string().into());
     run.insert("label_a".into(), label_a.into());

@@ -2,18 +2,18 @@
 //! rough surface for every incident condition of the case
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
+use crate::case::{builtin, deterministic::prepare};
 use crate::cli::DeterministicArgs;
 use crate::commands::{begin_out, context, warn, Summary};
-use roughwall::case::{builtin, deterministic::prepare};
+use crate::output::out_dir::{check_distinct, check_out};
+use crate::runner;
+use crate::writers::deterministic::{finish, sphere_table, surface_table};
 use roughwall::deterministic::fill_block;
 use roughwall::deterministic::scene::{build_surfaces, realisations, BuiltSurface, SphereDilation};
 use roughwall::error::Result;
-use roughwall::output::out_dir::{check_distinct, check_out};
-use roughwall::runner;
 use roughwall::surface::HeightField;
 use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
-use roughwall::writers::deterministic::{finish, sphere_table, surface_table};
 
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<Summary> {

@@ -2,7 +2,7 @@
 //! models × D × λ × β × U_N (Hu et al. 2021; physics notes §7).
 //!
 //! Outputs in `--out`:
-//! - `force_sweep.csv` — one row per point, columns `roughwall::force::tables::HEADER`;
+//! - `force_sweep.csv` — one row per point, columns `crate::writers::force_sweep::HEADER`;
 //! - `accuracy.csv` — whenever `hu2021` and another model are both in the sweep: mean and max
 //!   relative deviation of every other model from `hu2021` over the sweep's β values, per (D, λ, U_N);
 //! - `dynamic_convergence.csv` — whenever `hertz-dynamic` is in the sweep: relative error of the
@@ -13,16 +13,16 @@
 //!   `fmax_vs_un.svg` (Figs. 8, 10–12; one panel per (λ, β), at most 12) when U_N varies, and always `sphere_check.svg` (Fig. 4);
 //! - `run.toml`.
 //!
-//! `--out` is written as a whole (staging directory, lock, swap: `roughwall::output::out_dir`).
+//! `--out` is written as a whole (staging directory, lock, swap: `crate::output::out_dir`).
+use crate::case::{builtin, force::resolve};
 use crate::cli::ForceSweepArgs;
 use crate::commands::{begin_out, context, grouped, Summary, Wrote};
-use roughwall::case::{builtin, force::resolve};
-use roughwall::error::Result;
-use roughwall::figures;
-use roughwall::force::report;
-use roughwall::force::tables::{
+use crate::figures;
+use crate::writers::force_sweep::{
     accuracy_table, convergence_outputs, convergence_runs, manifest_table, rows_table,
 };
+use roughwall::error::Result;
+use roughwall::force::report;
 use roughwall::force::Model;
 
 /// Runs the subcommand.

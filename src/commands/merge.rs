@@ -1,15 +1,15 @@
 //! `rebound merge --out DIR SHARD_DIR...`: the partial tallies of `--shard K/N` runs
 //! become the outputs of one run, byte for byte (see `crate::runner::merge`).
 
+use crate::case::{deterministic, stochastic};
 use crate::cli::MergeArgs;
 use crate::commands::{begin_out, warn, Summary};
-use roughwall::case::{deterministic, stochastic};
+use crate::output::out_dir::{check_distinct, check_out};
+use crate::partial::RunIdentity;
+use crate::run_context::Context;
+use crate::runner::{self, overrides_of};
+use crate::writers;
 use roughwall::error::{Error, Result};
-use roughwall::output::out_dir::{check_distinct, check_out};
-use roughwall::run_context::Context;
-use roughwall::runner::{self, overrides_of};
-use roughwall::tally::partial::RunIdentity;
-use roughwall::writers;
 use std::path::PathBuf;
 
 /// The context of the run the shards came from.

@@ -1,4 +1,6 @@
-//! One module per subcommand: context → resolve → run → write, each step a library call.
+//! The dispatcher ([`run`]: a parsed command line in a thread pool of its size, warnings
+//! printed after success) and one module per subcommand: context → resolve → run → write,
+//! each step a library call.
 
 pub mod calibrate;
 pub mod compare;
@@ -9,11 +11,11 @@ pub mod report;
 pub mod stochastic;
 pub mod surface;
 
-use crate::cli::CommonArgs;
-use roughwall::case::Warning;
-use roughwall::error::Result;
-use roughwall::output::OutputDir;
-use roughwall::run_context::Context;
+use crate::case::Warning;
+use crate::cli::{Cli, Command, CommonArgs};
+use crate::output::OutputDir;
+use crate::run_context::Context;
+use roughwall::error::{Error, Result};
 use roughwall::tally::{ConditionTally, Shard};
 use std::path::{Path, PathBuf};
 
@@ -142,7 +144,7 @@ pub fn context(common: &CommonArgs, command: &str, default_toml: &str) -> Result
         command,
         default_toml,
     )?;
-    warn(roughwall::case::sections::unread(&ctx.case, command));
+    warn(crate::case::sections::unread(&ctx.case, command));
     Ok(ctx)
 }
 
@@ -158,7 +160,7 @@ thread_local! {
     static WARNINGS: std::cell::RefCell<Vec<Warning>> = const { std::cell::RefCell::new(Vec::new()) };
 }
 
-/// Keeps the warnings the library returned: `cli::run` prints them, in order, once the
+/// Keeps the warnings the library returned: [`run`] prints them, in order, once the
 /// command has succeeded (an error is always the one line a failed run prints).
 pub fn warn(warnings: impl IntoIterator<Item = Warning>) {
     WARNINGS.with(|list| list.borrow_mut().extend(warnings));
@@ -167,4 +169,67 @@ pub fn warn(warnings: impl IntoIterator<Item = Warning>) {
 /// The warnings kept on this thread so far (emptied).
 pub fn take_warnings() -> Vec<Warning> {
     WARNINGS.with(|list| std::mem::take(&mut *list.borrow_mut()))
+}
+
+/// Runs a parsed command inside a rayon pool of the requested size.
+pub fn run(cli: Cli) -> Result<()> {
+    let threads = match &cli.command {
+        Command::Surface(a) => a.common.threads,
+        Command::Deterministic(a) => a.common.threads,
+        Command::Stochastic(a) => a.common.threads,
+        Command::ForceSweep(a) => a.common.threads,
+        Command::Merge(a) => a.threads,
+        Command::Calibrate(a) => a.common.threads,
+        Command::Compare(_) | Command::Report(_) => None,
+    };
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    // More threads than a few per core only cost memory (a stack each) and scheduling.
+    let max_threads = (8 * cores).max(8);
+    let threads = match threads {
+        Some(n) if n == 0 || n > max_threads => {
+            return Err(Error::invalid(
+                "--threads",
+                n,
+                &format!("1 to {max_threads} (8 per core, {cores} cores here)"),
+            ))
+        }
+        Some(n) => n,
+        None => cores,
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| Error::Io(format!("thread pool: {e}")))?;
+    if cli.quiet {
+        crate::progress::hide();
+    }
+    let t0 = std::time::Instant::now();
+    // Warnings are printed once the command has succeeded, so that an error is always the
+    // one line a failed run prints. `install` runs the command on a pool thread: its
+    // warnings are kept there.
+    let (result, warnings) = pool.install(|| (dispatch(&cli), take_warnings()));
+    let summary = result?;
+    for w in warnings {
+        eprintln!("warning: {w}");
+    }
+    if !cli.quiet {
+        eprintln!(
+            "{}",
+            summary.line(cli.command.name(), t0.elapsed().as_secs_f64())
+        );
+    }
+    Ok(())
+}
+
+fn dispatch(cli: &Cli) -> Result<Summary> {
+    match &cli.command {
+        Command::Surface(a) => surface::run(a),
+        Command::Deterministic(a) => deterministic::run(a),
+        Command::Stochastic(a) => stochastic::run(a),
+        Command::ForceSweep(a) => force_sweep::run(a),
+        Command::Compare(a) => compare::run(a),
+        Command::Report(a) => report::run(a),
+        Command::Merge(a) => merge::run(a),
+        Command::Calibrate(a) => calibrate::run(a),
+    }
 }

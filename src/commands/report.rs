@@ -18,7 +18,7 @@ pub fn run(args: &ReportArgs) -> Result<Summary> {
             "an existing directory written by scripts/reproduce-all.sh",
         ));
     }
-    roughwall::report::write_report(&args.results)?;
+    crate::report::write_report(&args.results)?;
     Ok(Summary {
         work: format!("read {}", args.results.display()),
         rate: None,

@@ -1,15 +1,15 @@
 //! `rebound stochastic`: the stochastic rebound model of Radenkovic & Simonin 2021
 //! (Sec. 3.6, Fig. 13; notes §3) for every incident condition of the case.
 
+use crate::case::{builtin, stochastic::prepare};
 use crate::cli::StochasticArgs;
 use crate::commands::{begin_out, context, warn, Summary};
-use roughwall::case::{builtin, stochastic::prepare};
+use crate::runner;
+use crate::writers::stochastic::finish;
 use roughwall::error::Result;
-use roughwall::runner;
 use roughwall::stochastic::simulate::fill_block;
 use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
-use roughwall::writers::stochastic::finish;
 
 /// Runs the subcommand.
 pub fn run(args: &StochasticArgs) -> Result<Summary> {

@@ -1,26 +1,26 @@
 //! `rebound surface`: generate the Garcia–Stoll surface of the case and measure the
 //! statistics of Radenkovic & Simonin 2021, Table 1 (Eqs. 7–9, 14–15).
 //!
-//! Outputs in `--out` (`roughwall::writers::surface::OUTPUT_FILES`): `surface_summary.csv`, `normal_angles.csv`,
+//! Outputs in `--out` (`crate::writers::surface::OUTPUT_FILES`): `surface_summary.csv`, `normal_angles.csv`,
 //! `height_map.svg`, `normal_angle_pdfs.svg`, `run.toml` (timings only there), and with
 //! `--heights FILE` the height field in the format of `roughwall::surface::heights_io`.
-//! `--out` is written as a whole (`roughwall::output::out_dir`); a `--heights` file inside it
+//! `--out` is written as a whole (`crate::output::out_dir`); a `--heights` file inside it
 //! moves with the swap, one outside it is written on its own (atomically).
 
+use crate::case::builtin;
 use crate::cli::SurfaceArgs;
 use crate::commands::{begin_out, context, counted, warn, Summary, Wrote};
-use roughwall::case::builtin;
+use crate::figures;
+use crate::output::out_dir::place_file;
+use crate::writers::surface::{
+    angles_table, effective_table, grid_table, model_row, round_ms, summary_table, HIST_BINS,
+    OUTPUT_FILES,
+};
 use roughwall::error::Result;
-use roughwall::figures;
-use roughwall::output::out_dir::place_file;
 use roughwall::surface::dilation::effective_roughness;
 use roughwall::surface::generate;
 use roughwall::surface::heights_io::write_heights;
 use roughwall::surface::stats::{surface_stats, HistogramSpec};
-use roughwall::writers::surface::{
-    angles_table, effective_table, grid_table, model_row, round_ms, summary_table, HIST_BINS,
-    OUTPUT_FILES,
-};
 use std::time::Instant;
 
 /// Runs the subcommand: validate everything first (nothing is written on bad input),
@@ -31,7 +31,7 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
     let spec = ctx.case.surface_spec(&mut warnings)?;
     warn(warnings);
     let betas = ctx.case.beta_star()?;
-    let triangulation = roughwall::case::deterministic::triangulation(&ctx.case)?;
+    let triangulation = crate::case::deterministic::triangulation(&ctx.case)?;
     let diameters = ctx.case.effective_diameters(spec.length_m)?;
     if !diameters.is_empty() {
         let nodes = (spec.nodes as u64).saturating_mul(spec.nodes as u64);
@@ -100,7 +100,7 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
         );
     }
     if let (Some(path), Some(place)) = (&args.heights, &heights) {
-        write_heights(&place.path_in(&out), &field)?;
+        crate::output::write_atomic_with(&place.path_in(&out), |w| write_heights(w, &field))?;
         ctx.manifest
             .set_run("heights_file", path.display().to_string().into());
     }

@@ -7,10 +7,10 @@
 //! * always `sphere_check.svg` (Fig. 4): the ODE of Eq. (1) against Eq. (3) for a sphere.
 
 use super::{plot_grid_svg, plot_svg, Kind, Plot, Series};
-use crate::error::Result;
-use crate::force::sweep::{Row, Sweep};
-use crate::force::{hertz_dynamic, hertz_sphere, Impact, Model, Particle};
 use crate::output::fmt_num;
+use roughwall::error::Result;
+use roughwall::force::sweep::{Row, Sweep};
+use roughwall::force::{hertz_dynamic, hertz_sphere, Impact, Model, Particle};
 use std::path::Path;
 
 /// A force unit for axis labels so that `max` reads between 1 and 1000: (factor from N, name).

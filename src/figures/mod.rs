@@ -27,8 +27,8 @@ pub mod sweeps;
 pub use plot::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 pub use sweeps::{dbeta_sweeps, sweep_plots, sweep_series, SweepPoint};
 
-use crate::incidence::{fmt_key, IncidentCondition};
-use crate::tally::Bin;
+use roughwall::incidence::{fmt_key, IncidentCondition};
+use roughwall::tally::Bin;
 use std::fmt::Display;
 
 /// The panel title of an incident condition given by its angles as written (degrees).

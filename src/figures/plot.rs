@@ -1,9 +1,9 @@
 //! The line-plot renderer: [`Plot`]s of [`Series`] drawn with `plotters` into an SVG string
 //! and written atomically like every other output.
 
-use crate::error::{Error, Result};
 use crate::output::write_atomic;
 use plotters::prelude::*;
+use roughwall::error::{Error, Result};
 use std::path::Path;
 
 /// How a series is drawn.

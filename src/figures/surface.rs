@@ -13,12 +13,12 @@
 use super::plot::draw_err;
 use super::png::{base64, png_indexed};
 use super::{plot_grid_svg, Kind, Plot, Series};
-use crate::error::{Error, Result};
 use crate::output::{fmt_num, write_atomic};
-use crate::surface::dilation::EffectiveRoughness;
-use crate::surface::stats::{Histogram, RotatedStats, SurfaceStats};
-use crate::surface::HeightField;
 use plotters::prelude::*;
+use roughwall::error::{Error, Result};
+use roughwall::surface::dilation::EffectiveRoughness;
+use roughwall::surface::stats::{Histogram, RotatedStats, SurfaceStats};
+use roughwall::surface::HeightField;
 use std::path::Path;
 
 /// Largest window side (nodes).

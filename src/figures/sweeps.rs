@@ -2,7 +2,7 @@
 //! Figs. 16–17), shared by the figures of `deterministic`, `stochastic` and `compare`.
 
 use super::{plot_grid_svg, Kind, Plot, Series};
-use crate::error::Result;
+use roughwall::error::Result;
 use std::path::Path;
 
 /// One point of a sweep curve: the swept angle, the mean and std of `β⁺ − β⁻` there, and the
@@ -73,7 +73,7 @@ pub fn sweep_plots(mean: Vec<Series>, std: Vec<Series>, x_label: &str) -> [Plot;
 /// Returns the file names written.
 pub fn dbeta_sweeps(
     dir: &Path,
-    results: &[crate::tally::ConditionResult],
+    results: &[roughwall::tally::ConditionResult],
     label: &str,
     min_points: usize,
     names: [&str; 2],
@@ -109,7 +109,7 @@ pub fn dbeta_sweeps(
                 })
                 .filter_map(|r| {
                     let c = r.condition();
-                    let e = r.estimate(crate::tally::Quantity::Dbeta)?;
+                    let e = r.estimate(roughwall::tally::Quantity::Dbeta)?;
                     Some(SweepPoint {
                         x: if along_beta {
                             c.beta_in_deg()

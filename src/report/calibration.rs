@@ -9,9 +9,9 @@ use super::paths::{
     CALIBRATION_RESEED, CALIBRATION_RESEEDED, CALIBRATION_SCENES, CALIBRATION_SURFACES,
     CALIBRATION_TABLE, COMPARE, STOCHASTIC,
 };
-use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
+use roughwall::error::Result;
 use std::fmt::Write;
 use std::path::Path;
 

@@ -4,10 +4,10 @@
 //! `erosion/erosion_ratios.svg`; every number is read from the runs' `summary.csv`.
 
 use super::paths::{erosion_wall_name, DETERMINISTIC, EROSION, EROSION_WALLS, STOCHASTIC};
-use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, fmt_sci, CsvTable};
+use roughwall::error::Result;
 use std::fmt::Write;
 use std::path::Path;
 

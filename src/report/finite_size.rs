@@ -9,9 +9,9 @@ use super::paths::{
     FINITE_SIZE_DIAMETERS_UM, FINITE_SIZE_GRID, FINITE_SIZE_LAW, RADENKOVIC2021, SEC4_GLASS_STEEL,
     STOCHASTIC_EFFECTIVE,
 };
-use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
+use roughwall::error::Result;
 use std::fmt::Write;
 use std::path::Path;
 

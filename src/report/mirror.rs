@@ -6,10 +6,10 @@
 
 use super::common::{f, missing, subdirs, summary};
 use super::paths::{MIRROR, MIRROR_SEED, MIRROR_TRIANGULATIONS};
-use crate::error::Result;
 use crate::output::csv::num;
 use crate::output::{fmt_num, CsvTable};
-use crate::tally::moments::ShiftedSums;
+use roughwall::error::Result;
+use roughwall::tally::moments::ShiftedSums;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::Path;

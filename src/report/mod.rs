@@ -16,8 +16,8 @@ pub mod speed_vs_error;
 pub mod spin;
 pub mod wall_models;
 
-use crate::error::Result;
 use crate::output::write_atomic;
+use roughwall::error::Result;
 use std::path::Path;
 
 /// Writes `REPORT.md` and the aggregated tables and figures under `results`.

@@ -7,10 +7,10 @@ use super::paths::{
     COMPARE, DETERMINISTIC, FIG4, FIG4_RUN, RADENKOVIC2021, SEC3, SEC4, SEC4_FIGS_16_17,
     STOCHASTIC, TABLE1,
 };
-use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
+use roughwall::error::Result;
 use std::fmt::Write;
 use std::path::Path;
 
@@ -352,8 +352,8 @@ pub fn sec3(results: &Path, md: &mut String) -> Result<()> {
             .join(DETERMINISTIC);
         let Some(s) = summary(&dir)? else { continue };
         for b in [0.0f64, 60.0] {
-            let m = crate::wall::rotated_moments(
-                &crate::wall::Deviations {
+            let m = roughwall::wall::rotated_moments(
+                &roughwall::wall::Deviations {
                     delta_xi: dx.to_radians(),
                     delta_zeta: dz.to_radians(),
                 },

@@ -5,10 +5,10 @@
 
 use super::common::missing;
 use super::paths::SPIN;
-use crate::error::Result;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, Rows};
 use crate::output::{fmt_num, CsvTable};
+use roughwall::error::Result;
 use std::fmt::Write;
 use std::path::Path;
 

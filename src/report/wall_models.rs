@@ -6,10 +6,10 @@
 
 use super::common::missing;
 use super::paths::{scene_name, COMPARE, STOCHASTIC, WALL_MODELS, WALL_MODELS_SCENES};
-use crate::error::Result;
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
-use crate::stochastic::VariantKind;
+use roughwall::error::Result;
+use roughwall::stochastic::VariantKind;
 use std::fmt::Write;
 use std::path::Path;
 

@@ -3,18 +3,18 @@
 
 use crate::case::deterministic::Prepared;
 use crate::case::Warning;
-use crate::deterministic::scene::SceneOptions;
-use crate::deterministic::scene::{SphereDilation, SurfacePlan};
-use crate::deterministic::LostCounts;
-use crate::error::{Error, Result};
 use crate::figures;
-use crate::incidence::IncidentCondition;
 use crate::output::{prepare_out_dir, Manifest};
-use crate::surface::stats::pooled_deviations;
-use crate::surface::HeightField;
-use crate::tally::engine::ConditionStats;
-use crate::tally::schema::write_tables;
-use crate::tally::{ConditionResult, ConditionTally};
+use crate::schema::write_tables;
+use roughwall::deterministic::scene::SceneOptions;
+use roughwall::deterministic::scene::{SphereDilation, SurfacePlan};
+use roughwall::deterministic::LostCounts;
+use roughwall::error::{Error, Result};
+use roughwall::incidence::IncidentCondition;
+use roughwall::surface::stats::pooled_deviations;
+use roughwall::surface::HeightField;
+use roughwall::tally::engine::ConditionStats;
+use roughwall::tally::{ConditionResult, ConditionTally};
 use std::path::Path;
 
 use super::{f, round};

@@ -7,13 +7,14 @@
 //! * [`surface`]: the tables of `rebound surface`.
 
 pub mod deterministic;
+pub mod force_sweep;
 pub mod stochastic;
 pub mod surface;
 
 use crate::case::Scene;
-use crate::erosion::ErosionSetup;
 use crate::output::Manifest;
-use crate::tally::BLOCK_SIZE;
+use roughwall::erosion::{dnv, ErosionModel, ErosionSetup};
+use roughwall::tally::BLOCK_SIZE;
 
 fn f(x: f64) -> toml::Value {
     toml::Value::Float(x)
@@ -36,12 +37,54 @@ fn scene_entries(manifest: &mut Manifest, scene: &Scene, erosion: Option<&Erosio
     }
     manifest.set_run("block_size", toml::Value::Integer(BLOCK_SIZE as i64));
     if let Some(e) = erosion {
-        manifest.set("erosion", e.manifest());
+        manifest.set("erosion", erosion_manifest(e));
     }
-    if scene.speed.reference != crate::incidence::SpeedReference::Horizontal {
+    if scene.speed.reference != roughwall::incidence::SpeedReference::Horizontal {
         manifest.set_run(
             "speed_reference",
             toml::Value::String(scene.speed.reference.name().into()),
         );
     }
+}
+
+/// The resolved law for `run.toml`: the model, every parameter (defaults filled in, SI
+/// units) and the particle mass.
+pub fn erosion_manifest(e: &ErosionSetup) -> toml::Value {
+    let mut t = toml::Table::new();
+    let mut put = |k: &str, v: f64| {
+        t.insert(k.into(), toml::Value::Float(v));
+    };
+    match &e.model {
+        ErosionModel::Finnie(f) => {
+            put("flow_stress_pa", f.flow_stress_pa);
+            put("psi", f.psi);
+            put("k", f.k);
+        }
+        ErosionModel::Dnv(d) => {
+            put("k", d.k);
+            put("n", d.n);
+            put("target_density_kg_m3", d.target_density_kg_m3);
+        }
+        ErosionModel::Oka(o) => {
+            put("hardness_gpa", o.hardness_gpa);
+            put("k", o.k);
+            put("k1", o.k1);
+            put("k2", o.k2);
+            put("k3", o.k3);
+            put("n1", o.n1);
+            put("n2", o.n2);
+            put("reference_speed_m_s", o.reference_speed_m_s);
+            put("reference_diameter_m", o.reference_diameter_m);
+        }
+    }
+    put("particle_mass_kg", e.particle_mass_kg);
+    if let ErosionModel::Dnv(d) = &e.model {
+        let a = match d.angle_dependency {
+            dnv::AngleDependency::Ductile => "ductile",
+            dnv::AngleDependency::Brittle => "brittle",
+        };
+        t.insert("angle_dependency".into(), toml::Value::String(a.into()));
+    }
+    t.insert("model".into(), toml::Value::String(e.model.name().into()));
+    toml::Value::Table(t)
 }

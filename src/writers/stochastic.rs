@@ -3,13 +3,13 @@
 
 use crate::case::stochastic::Prepared;
 use crate::case::Warning;
-use crate::error::Result;
 use crate::figures;
 use crate::output::{prepare_out_dir, Manifest};
-use crate::stochastic::simulate::gamma_model_curve;
-use crate::tally::engine::ConditionStats;
-use crate::tally::schema::write_tables;
-use crate::tally::ConditionTally;
+use crate::schema::write_tables;
+use roughwall::error::Result;
+use roughwall::stochastic::simulate::gamma_model_curve;
+use roughwall::tally::engine::ConditionStats;
+use roughwall::tally::ConditionTally;
 use std::path::Path;
 
 use super::{f, round};
@@ -40,7 +40,7 @@ pub fn finish(
                 cond.beta_in_deg(),
                 c.capped,
                 c.particles,
-                crate::stochastic::MAX_TRIES
+                roughwall::stochastic::MAX_TRIES
             )));
         }
         let mut r = t.result();

@@ -1,12 +1,9 @@
 //! The integration tests' harness (ripgrep's `tests/util.rs` is the model): run the binary
 //! ([`rebound`], [`rebound_in`], [`TestCommand`]) and check how it ended ([`Run`]), write
 //! cases into a temporary directory ([`Dir`], [`write_case`]), find the shipped cases under
-//! `configs/` ([`shipped_case`]), read output CSVs by column name ([`Csv`], [`Row`]), build
-//! C programs against the C library, and the deterministic tests' own surfaces and angle
-//! helpers ([`deterministic`]).
+//! `configs/` ([`shipped_case`]), read output CSVs by column name ([`Csv`], [`Row`]) and
+//! check their columns ([`headers`]), and build C programs against the C library.
 #![allow(dead_code)]
-
-pub mod deterministic;
 
 use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
@@ -341,43 +338,6 @@ pub fn csv_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     v
 }
 
-/// Makes sure each `(command, Debian package)` is on the machine, installing the missing
-/// packages with `apt-get install --no-install-recommends` (after `apt-get update`).
-/// Panics with the reason if that is impossible: a test that needs a tool never skips.
-pub fn ensure_tools(tools: &[(&str, &str)]) {
-    let have = |c: &str| {
-        Command::new("sh")
-            .args(["-c", &format!("command -v {c}")])
-            .output()
-            .is_ok_and(|o| o.status.success())
-    };
-    let missing: Vec<&str> = tools
-        .iter()
-        .filter(|(c, _)| !have(c))
-        .map(|(_, p)| *p)
-        .collect();
-    if missing.is_empty() {
-        return;
-    }
-    let script = format!(
-        "export DEBIAN_FRONTEND=noninteractive; apt-get update -qq && apt-get install -y -qq --no-install-recommends {}",
-        missing.join(" ")
-    );
-    // One apt-get at a time, whichever test asks.
-    let out = Command::new("flock")
-        .args(["/tmp/roughwall-apt.lock", "sh", "-c", &script])
-        .output()
-        .expect("run apt-get");
-    assert!(
-        out.status.success(),
-        "installing {missing:?} failed (root and Debian's package archive are needed): {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    for (c, p) in tools {
-        assert!(have(c), "{c} still missing after installing {p}");
-    }
-}
-
 /// The directory holding the C library `libroughwall.so` built with this test binary.
 /// `cargo test` writes it to `deps/` and leaves the copy next to the binary (made by an
 /// earlier `cargo build`) as it was, possibly from older sources: the newer of the two.
@@ -427,14 +387,6 @@ pub fn build_with_roughwall(compiler: &str, sources: &[&Path], out: &Path, extra
     );
 }
 
-/// Wall deviations `(Δξ, Δζ)` given in degrees.
-pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> roughwall::wall::Deviations {
-    roughwall::wall::Deviations {
-        delta_xi: dxi_deg.to_radians(),
-        delta_zeta: dzeta_deg.to_radians(),
-    }
-}
-
 /// `x` as a TOML number, non-finite values included (TOML has `nan`, `inf` and `-inf`).
 pub fn toml_number(x: f64) -> String {
     if x.is_nan() {
@@ -443,5 +395,54 @@ pub fn toml_number(x: f64) -> String {
         if x > 0.0 { "inf" } else { "-inf" }.into()
     } else {
         format!("{x:?}")
+    }
+}
+
+/// The columns of the outputs, as `docs/outputs.md` documents them: a test that reads an
+/// output checks its header against these, so a changed column is a failing test until the
+/// docs and this list say the same.
+pub mod headers {
+    /// `summary.csv` of `deterministic` and `stochastic`.
+    pub const SUMMARY: &str = "alpha_in_deg,beta_in_deg,delta_xi_deg,delta_zeta_deg,particles,mean_alpha_out_deg,std_alpha_out_deg,mean_dbeta_deg,std_dbeta_deg,mean_dbeta_first_deg,std_dbeta_first_deg,mean_gamma_deg,std_gamma_deg,mean_gamma_star_deg,std_gamma_star_deg,p_single,mean_collisions,max_collisions,mean_speed_ratio,lost,se_mean_alpha_out_deg,se_mean_dbeta_deg,se_mean_dbeta_first_deg,se_mean_gamma_deg,se_mean_gamma_star_deg,se_p_single,se_mean_collisions,se_mean_speed_ratio";
+    /// The columns `summary.csv` adds with `[erosion]`.
+    pub const SUMMARY_EROSION: &str = "erosion_per_mass,se_erosion_per_mass,mean_impacts,se_mean_impacts,erosion_per_mass_rejected,se_erosion_per_mass_rejected,erosion_per_particle_m3,se_erosion_per_particle_m3";
+    /// `pdfs.csv`.
+    pub const PDFS: &str = "alpha_in_deg,beta_in_deg,quantity,bin_lo,bin_hi,value,se";
+    /// `moments.csv`.
+    pub const MOMENTS: &str = "alpha_in_deg,beta_in_deg,quantity,n,mean,std,se";
+    /// `comparison.csv` of `compare`.
+    pub const COMPARISON: &str =
+        "alpha_in_deg,beta_in_deg,quantity,ks,l1,mean_a,mean_b,std_a,std_b,se_mean_a,se_mean_b,z";
+    /// `effective_roughness.csv` of `surface`.
+    pub const EFFECTIVE: &str = "diameter_um,d_over_cl_x,d_over_cl_z,delta_xi_eff_deg,delta_zeta_eff_deg,delta_xi_ratio,delta_zeta_ratio,contact_fraction,sqrt_h_over_d_deg,delta_xi_eff_over_sqrt_h_over_d,delta_zeta_eff_over_sqrt_h_over_d";
+    /// `force_sweep.csv` of `force-sweep`.
+    pub const FORCE_SWEEP: &str = "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s";
+}
+
+/// The bins `(lo, hi, value)` of `quantity` in the `pdfs.csv` of the run in `dir`, for its
+/// first condition.
+pub fn pdf_bins(dir: &Path, quantity: &str) -> Vec<(f64, f64, f64)> {
+    let c = Csv::read(&dir.join("pdfs.csv"));
+    let first = c.rows.first().expect("pdfs.csv has rows");
+    let key = (
+        c.cell(first, "alpha_in_deg").to_string(),
+        c.cell(first, "beta_in_deg").to_string(),
+    );
+    c.rows
+        .iter()
+        .filter(|r| {
+            c.cell(r, "alpha_in_deg") == key.0
+                && c.cell(r, "beta_in_deg") == key.1
+                && c.cell(r, "quantity") == quantity
+        })
+        .map(|r| (c.num(r, "bin_lo"), c.num(r, "bin_hi"), c.num(r, "value")))
+        .collect()
+}
+
+/// Wall deviations `(Δξ, Δζ)` given in degrees.
+pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> roughwall::wall::Deviations {
+    roughwall::wall::Deviations {
+        delta_xi: dxi_deg.to_radians(),
+        delta_zeta: dzeta_deg.to_radians(),
     }
 }

@@ -1,0 +1,20 @@
+//! `roughwall`: particles bouncing off anisotropic rough walls.
+pub mod angles;
+pub mod calibrated;
+pub mod check;
+pub mod collision;
+pub mod deterministic;
+pub mod erosion;
+pub mod error;
+pub mod ffi;
+pub mod force;
+pub mod format;
+pub mod incidence;
+pub mod memory;
+pub mod rng;
+pub mod stochastic;
+pub mod surface;
+pub mod tally;
+pub mod wall;
+pub mod wall_model;
+pub mod warning;

@@ -1,0 +1,650 @@
+//! The stochastic wall model as a CFD code calls it, once per particle–wall hit
+//! (Radenkovic & Simonin 2021, Sec. 5: the model "can be used in Euler–Lagrange
+//! simulations"): in the host's global axes and SI units, with a face normal of either
+//! orientation, the wall's lay direction, a moving wall, and a random stream keyed by
+//! `(seed, particle id, collision index)`, so that the same hit gives the same rebound on
+//! any number of MPI ranks, threads or domain decompositions.
+//!
+//! The physics is [`crate::stochastic::rebound`] (the procedure of Fig. 13, physics notes
+//! §3) in the wall's own frame: `y` along the normal into the flow, `x` along the lay
+//! direction (the principal roughness direction of `Δξ`), `z = x × y`. The C library
+//! (`crate::ffi`) is a thin layer over [`WallModel::rebound`].
+
+use crate::collision::{CollisionLaw, CollisionParams};
+use crate::error::{Error, Result};
+use crate::rng;
+use crate::stochastic::variants::checked_psi;
+use crate::stochastic::{rebound_variant, Variant};
+use crate::wall::{checked_deviation, Deviations};
+use nalgebra::Vector3;
+
+/// What a wall handle is built from; the collision law uses the keys (and ranges) of a
+/// case file's `[collision]` section.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct WallParams {
+    /// `Δξ`, `Δζ` (degrees): deviations of the wall normal's angles along the lay
+    /// direction and across it (0 … 20; beyond 7.5 a warning).
+    pub delta_xi_deg: f64,
+    pub delta_zeta_deg: f64,
+    /// `[collision]`: `model` (`"elastic"`, `"sommerfeld-huber"`), `preset`, parameters.
+    pub collision: CollisionParams,
+    /// ψ of Eq. (34) (> 0; the paper's 2 when `None`).
+    pub psi: Option<f64>,
+    /// Seed of every hit's random stream.
+    pub seed: u64,
+    /// The rough-wall model (`[stochastic] model`; the paper's when `None`) and the isotropic
+    /// variants' roughness angle (degrees; `(Δξ + Δζ)/2` when `None`).
+    pub model: Option<String>,
+    pub delta_gamma_deg: Option<f64>,
+    /// The escape table of `model = "calibrated"`, as the text `rebound calibrate` writes
+    /// (`None`: the built-in table). The handle keeps its own copy: no file is read at run
+    /// time.
+    pub escape_table: Option<String>,
+}
+
+/// A wall: immutable once built, so one handle serves every thread.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WallModel {
+    pub wall: Deviations,
+    pub law: CollisionLaw,
+    pub psi: f64,
+    pub seed: u64,
+    /// The rough-wall model drawing the virtual walls.
+    pub variant: Variant,
+}
+
+/// `variant` with the escape table given as text (only `calibrated` takes one).
+fn with_escape_table(variant: Variant, table: Option<&str>) -> Result<Variant> {
+    let Some(text) = table else {
+        return Ok(variant);
+    };
+    variant.check_takes_escape_table()?;
+    let table = crate::calibrated::EscapeTable::parse(text, "`stochastic.escape_table`")?;
+    variant.with_escape_table(table.intern())
+}
+
+impl WallModel {
+    /// Validates the parameters with the case-file rules and one-line messages (keys named
+    /// as in a case file: `wall.delta_xi_deg`, `collision.e_h`, `stochastic.psi`, …), through
+    /// the same checks `rebound` applies to a case file, so the same bad value gives the same
+    /// message: first every number must be finite (in the order of the keys' names, as a
+    /// case file's are checked), then [`checked_deviation`], [`CollisionParams::law`],
+    /// [`checked_psi`] and [`Variant::checked`]. Returns the handle and the warnings (e.g. a
+    /// deviation beyond the low-roughness range).
+    pub fn new(p: &WallParams) -> Result<(WallModel, Vec<String>)> {
+        let c = &p.collision;
+        let numbers = [
+            ("collision.alpha_e_deg", c.alpha_e_deg),
+            ("collision.alpha_mu_deg", c.alpha_mu_deg),
+            ("collision.e_h", c.e_h),
+            ("collision.mu_0", c.mu_0),
+            ("collision.mu_h", c.mu_h),
+            ("stochastic.delta_gamma_deg", p.delta_gamma_deg),
+            ("stochastic.psi", p.psi),
+            ("wall.delta_xi_deg", Some(p.delta_xi_deg)),
+            ("wall.delta_zeta_deg", Some(p.delta_zeta_deg)),
+        ];
+        for (key, v) in numbers {
+            if let Some(v) = v.filter(|v| !v.is_finite()) {
+                return Err(Error::invalid(key, v, "a finite number"));
+            }
+        }
+        let mut warnings = Vec::new();
+        let wall = Deviations {
+            delta_xi: checked_deviation("wall.delta_xi_deg", p.delta_xi_deg, &mut warnings)?,
+            delta_zeta: checked_deviation("wall.delta_zeta_deg", p.delta_zeta_deg, &mut warnings)?,
+        };
+        let law = c.law()?;
+        let psi = checked_psi(p.psi.unwrap_or(2.0))?;
+        let variant = Variant::checked(p.model.as_deref(), p.delta_gamma_deg)?;
+        let built = WallModel {
+            wall,
+            law,
+            psi,
+            seed: p.seed,
+            variant: with_escape_table(variant, p.escape_table.as_deref())?,
+        };
+        Ok((built, warnings.into_iter().map(|w| w.0).collect()))
+    }
+
+    /// The rebound of one hit (see [`Hit`]); never NaN: an input it cannot use is returned
+    /// unchanged with [`HitStatus::InvalidInput`] (non-finite components as 0), a particle that
+    /// does not move across the wall with [`HitStatus::NotApproaching`].
+    pub fn rebound(&self, hit: &Hit) -> HitOutcome {
+        let unchanged = |status| HitOutcome::unchanged(hit, status);
+        let finite = [
+            hit.velocity,
+            hit.spin,
+            hit.normal,
+            hit.lay,
+            hit.wall_velocity,
+        ]
+        .iter()
+        .flatten()
+        .chain(std::iter::once(&hit.diameter_m))
+        .all(|x| x.is_finite());
+        if !finite || hit.diameter_m < 0.0 {
+            return unchanged(HitStatus::InvalidInput);
+        }
+        let Some(frame) = Frame::new(hit) else {
+            return unchanged(HitStatus::InvalidInput);
+        };
+        let u_rel = Vector3::from(hit.velocity) - Vector3::from(hit.wall_velocity);
+        let u = frame.to_local(&u_rel);
+        if u.y == 0.0 {
+            return unchanged(HitStatus::NotApproaching);
+        }
+        if self.wall.delta_xi == 0.0 && self.wall.delta_zeta == 0.0 {
+            // A smooth wall: the collision with the mean wall, as `stochastic::rebound` gives
+            // it (no random draw, one candidate wall), but computed in the host's axes rather
+            // than through the wall's frame and back. For the elastic law that is
+            // `u − (2 (u·n)) n` with the dot product summed x, y, z: the operations, in the
+            // same order, of a CFD code's own specular rebound (code_saturne's
+            // CS_LAGR_REBOUND), so a smooth elastic roughwall wall gives its host's
+            // trajectories bit for bit (examples/code_saturne, check (a)).
+            let (v, w) = self
+                .law
+                .collide(u_rel, Vector3::from(hit.spin), frame.ey, hit.diameter_m);
+            return Self::outcome(hit, v, w, 0.0, 0.0, 1);
+        }
+        let w = frame.to_local(&Vector3::from(hit.spin));
+        let mut r = rng::stream(
+            self.seed,
+            &[rng::domain::WALL_HITS, hit.particle_id, hit.collision_index],
+        );
+        let out = rebound_variant(
+            u,
+            w,
+            &self.wall,
+            &self.law,
+            self.psi,
+            hit.diameter_m,
+            self.variant,
+            &mut r,
+        );
+        Self::outcome(
+            hit,
+            frame.to_global(&out.velocity),
+            frame.to_global(&out.spin),
+            out.gamma,
+            out.gamma_star,
+            out.tries,
+        )
+    }
+
+    /// The outcome of a rebound computed relative to the wall (global axes): the wall's
+    /// velocity added back, and no NaN or infinity to the host.
+    fn outcome(
+        hit: &Hit,
+        velocity_rel: Vector3<f64>,
+        spin: Vector3<f64>,
+        gamma: f64,
+        gamma_star: f64,
+        candidate_walls: u32,
+    ) -> HitOutcome {
+        let velocity = velocity_rel + Vector3::from(hit.wall_velocity);
+        if !velocity.iter().chain(spin.iter()).all(|x| x.is_finite()) {
+            // Overflow of extreme inputs (e.g. |u| near f64::MAX): no NaN reaches the host.
+            return HitOutcome::unchanged(hit, HitStatus::InvalidInput);
+        }
+        HitOutcome {
+            velocity: velocity.into(),
+            spin: spin.into(),
+            status: HitStatus::Rebound,
+            gamma,
+            gamma_star,
+            candidate_walls,
+        }
+    }
+}
+
+/// One particle–wall hit in the host's global axes, SI units.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Hit {
+    /// Particle velocity (m/s) and angular velocity (rad/s).
+    pub velocity: [f64; 3],
+    pub spin: [f64; 3],
+    /// Face normal, either orientation, any non-zero length: it is oriented against the
+    /// particle's velocity relative to the wall.
+    pub normal: [f64; 3],
+    /// The wall's lay direction, its principal roughness direction `x` (that of `Δξ`):
+    /// projected onto the wall plane; parallel to the normal is an invalid input.
+    pub lay: [f64; 3],
+    /// Velocity of the wall (m/s): the bounce is computed in the wall's frame.
+    pub wall_velocity: [f64; 3],
+    /// Particle diameter (m, ≥ 0; enters the Sommerfeld–Huber spin terms).
+    pub diameter_m: f64,
+    /// The key of the hit's random stream: the same key, the same rebound.
+    pub particle_id: u64,
+    pub collision_index: u64,
+}
+
+/// What became of a hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(i32)]
+pub enum HitStatus {
+    /// A rebound was computed.
+    Rebound = 0,
+    /// The particle does not move across the wall (velocity relative to the wall parallel
+    /// to it, or zero): returned unchanged.
+    NotApproaching = 1,
+    /// A non-finite number, a zero normal, a lay direction parallel to the normal or a
+    /// negative diameter: returned unchanged.
+    InvalidInput = 2,
+}
+
+/// The rebound of a hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HitOutcome {
+    /// Rebound velocity (m/s, global axes, wall velocity added back) and spin (rad/s).
+    pub velocity: [f64; 3],
+    pub spin: [f64; 3],
+    pub status: HitStatus,
+    /// Inclinations `γ`, `γ*` (rad) of the virtual wall element that produced the rebound
+    /// (Eqs. 20–21; 0 for a smooth wall or an unchanged particle).
+    pub gamma: f64,
+    pub gamma_star: f64,
+    /// Candidate walls drawn (≥ 1 for a rebound; `stochastic::MAX_TRIES` when the guard
+    /// was hit and the mean wall used).
+    pub candidate_walls: u32,
+}
+
+impl HitOutcome {
+    /// A particle not rebounded: it leaves as it came, a non-finite component as 0, so that
+    /// no NaN or infinity reaches the host.
+    fn unchanged(hit: &Hit, status: HitStatus) -> HitOutcome {
+        let clean = |v: [f64; 3]| v.map(|x| if x.is_finite() { x } else { 0.0 });
+        HitOutcome {
+            velocity: clean(hit.velocity),
+            spin: clean(hit.spin),
+            status,
+            gamma: 0.0,
+            gamma_star: 0.0,
+            candidate_walls: 0,
+        }
+    }
+}
+
+/// The wall's frame at a hit: `e_y` the normal into the flow, `e_x` the lay direction in the
+/// wall plane, `e_z = e_x × e_y` (right-handed, as the paper's `x, y, z`).
+struct Frame {
+    ex: Vector3<f64>,
+    ey: Vector3<f64>,
+    ez: Vector3<f64>,
+}
+
+impl Frame {
+    /// `None` for a zero normal or a lay direction (nearly) parallel to it.
+    fn new(hit: &Hit) -> Option<Frame> {
+        let n = Vector3::from(hit.normal);
+        let n_len = n.norm();
+        if n_len == 0.0 || !n_len.is_finite() {
+            return None;
+        }
+        // A normal the host made unit (to round-off) is used as given: dividing it by its
+        // computed length could change its last bits, and the host's own rebound uses it
+        // as it is.
+        let mut ey = if (n_len - 1.0).abs() <= 4.0 * f64::EPSILON {
+            n
+        } else {
+            n / n_len
+        };
+        let u_rel = Vector3::from(hit.velocity) - Vector3::from(hit.wall_velocity);
+        if u_rel.dot(&ey) > 0.0 {
+            ey = -ey; // into the flow: the particle arrives against it
+        }
+        let lay = Vector3::from(hit.lay);
+        let lay_len = lay.norm();
+        let t = lay - lay.dot(&ey) * ey;
+        let t_len = t.norm();
+        if !(lay_len > 0.0 && t_len > 1e-9 * lay_len) {
+            return None;
+        }
+        let ex = t / t_len;
+        Some(Frame {
+            ez: ex.cross(&ey),
+            ex,
+            ey,
+        })
+    }
+
+    fn to_local(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        Vector3::new(v.dot(&self.ex), v.dot(&self.ey), v.dot(&self.ez))
+    }
+
+    fn to_global(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        self.ex * v.x + self.ey * v.y + self.ez * v.z
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::collision::ShParams;
+    use crate::stochastic::rebound;
+
+    fn glass_steel() -> WallModel {
+        WallModel::new(&WallParams {
+            delta_xi_deg: 3.8,
+            delta_zeta_deg: 7.5,
+            collision: CollisionParams {
+                model: Some("sommerfeld-huber".into()),
+                preset: Some("glass-steel".into()),
+                ..Default::default()
+            },
+            psi: None,
+            seed: 5,
+            ..Default::default()
+        })
+        .unwrap()
+        .0
+    }
+
+    fn hit() -> Hit {
+        Hit {
+            velocity: [5.0, -1.3, -2.1],
+            spin: [0.0, 0.0, 0.0],
+            normal: [0.0, 1.0, 0.0],
+            lay: [1.0, 0.0, 0.0],
+            wall_velocity: [0.0; 3],
+            diameter_m: 500e-6,
+            particle_id: 12,
+            collision_index: 3,
+        }
+    }
+
+    #[test]
+    fn in_the_papers_frame_it_is_the_stochastic_rebound_with_the_hits_stream() {
+        let m = glass_steel();
+        assert_eq!(
+            m.law,
+            crate::collision::CollisionLaw::SommerfeldHuber(ShParams::glass_steel())
+        );
+        let h = hit();
+        let out = m.rebound(&h);
+        let mut r = rng::stream(5, &[rng::domain::WALL_HITS, 12, 3]);
+        let direct = rebound(
+            Vector3::from(h.velocity),
+            Vector3::zeros(),
+            &m.wall,
+            &m.law,
+            2.0,
+            500e-6,
+            &mut r,
+        );
+        assert_eq!(out.status, HitStatus::Rebound);
+        assert_eq!(out.velocity, <[f64; 3]>::from(direct.velocity));
+        assert_eq!(out.candidate_walls, direct.tries);
+        // Same key, same rebound; another collision index, another one.
+        assert_eq!(m.rebound(&h), out);
+        let other = m.rebound(&Hit {
+            collision_index: 4,
+            ..h
+        });
+        assert_ne!(other.velocity, out.velocity);
+    }
+
+    #[test]
+    fn a_flipped_normal_a_tilted_lay_and_a_moving_wall_change_nothing_physical() {
+        let m = glass_steel();
+        let h = hit();
+        let base = m.rebound(&h);
+        // Normal given the other way round and not unit length; lay with a normal component.
+        let flipped = m.rebound(&Hit {
+            normal: [0.0, -3.0, 0.0],
+            lay: [2.0, 0.7, 0.0],
+            ..h
+        });
+        for i in 0..3 {
+            assert!((flipped.velocity[i] - base.velocity[i]).abs() < 1e-12);
+        }
+        // A wall moving along itself: the rebound is computed relative to it.
+        let v = [0.4, 0.0, -0.3];
+        let moving = m.rebound(&Hit {
+            velocity: [h.velocity[0] + v[0], h.velocity[1], h.velocity[2] + v[2]],
+            wall_velocity: v,
+            ..h
+        });
+        for ((m, v), b) in moving.velocity.iter().zip(v).zip(base.velocity) {
+            assert!((m - v - b).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn a_rotated_scene_gives_the_rotated_rebounds_to_round_off() {
+        use nalgebra::{Rotation3, Unit};
+        let m = glass_steel();
+        let base_hit = Hit {
+            spin: [120.0, -40.0, 300.0],
+            ..hit()
+        };
+        let base = m.rebound(&base_hit);
+        let mut r = rng::stream(9, &[1]);
+        use rand::Rng;
+        for k in 0..50 {
+            let axis = Unit::new_normalize(Vector3::new(
+                r.gen::<f64>() - 0.5,
+                r.gen::<f64>() - 0.5,
+                r.gen::<f64>() - 0.5,
+            ));
+            let rot = Rotation3::from_axis_angle(&axis, r.gen::<f64>() * std::f64::consts::TAU);
+            let g = |v: [f64; 3]| <[f64; 3]>::from(rot * Vector3::from(v));
+            let rotated = m.rebound(&Hit {
+                velocity: g(base_hit.velocity),
+                spin: g(base_hit.spin),
+                normal: g([0.0, if k % 2 == 0 { 1.0 } else { -2.0 }, 0.0]),
+                lay: g([1.0, 0.3, 0.0]),
+                ..base_hit
+            });
+            assert_eq!(rotated.status, HitStatus::Rebound);
+            assert_eq!(rotated.candidate_walls, base.candidate_walls);
+            let (want_u, want_w) = (g(base.velocity), g(base.spin));
+            for i in 0..3 {
+                assert!(
+                    (rotated.velocity[i] - want_u[i]).abs() < 1e-12,
+                    "{k}: {rotated:?}"
+                );
+                assert!(
+                    (rotated.spin[i] - want_w[i]).abs() < 1e-9 * 300.0,
+                    "{k}: {rotated:?}"
+                );
+            }
+            assert!((rotated.gamma - base.gamma).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn a_smooth_elastic_wall_is_the_hosts_specular_rebound_bit_for_bit() {
+        let m = WallModel::new(&WallParams::default()).unwrap().0;
+        assert_eq!(m.law, CollisionLaw::Elastic);
+        // code_saturne's CS_LAGR_REBOUND (cs_lagr_tracking.c): tmp = 2 (u·n), u_k -= tmp n_k.
+        let host = |u: [f64; 3], n: [f64; 3]| {
+            let tmp = 2. * (u[0] * n[0] + u[1] * n[1] + u[2] * n[2]);
+            [u[0] - tmp * n[0], u[1] - tmp * n[1], u[2] - tmp * n[2]]
+        };
+        let mut r = rng::stream(17, &[2]);
+        use rand::Rng;
+        let mut v = || 2.0 * r.gen::<f64>() - 1.0;
+        let mut rounded_lengths = 0;
+        for k in 0..2000 {
+            // A unit normal as a host computes it (n / |n|), either orientation; the
+            // velocity towards the wall.
+            let raw = [v(), v(), v()];
+            let len = (raw[0] * raw[0] + raw[1] * raw[1] + raw[2] * raw[2]).sqrt();
+            let n = raw.map(|x| x / len);
+            if (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt() != 1.0 {
+                rounded_lengths += 1;
+            }
+            let mut u = [5.0 * v(), 5.0 * v(), 5.0 * v()];
+            let un: f64 = (0..3).map(|i| u[i] * n[i]).sum();
+            if un > 0.0 {
+                u = u.map(|x| -x);
+            }
+            let normal = if k % 2 == 0 { n } else { n.map(|x| -x) };
+            let spin = [v() * 100.0, v() * 100.0, v() * 100.0];
+            let out = m.rebound(&Hit {
+                velocity: u,
+                spin,
+                normal,
+                lay: [v(), v(), v()],
+                ..hit()
+            });
+            assert_eq!(out.status, HitStatus::Rebound);
+            assert_eq!(
+                out.velocity.map(f64::to_bits),
+                host(u, n).map(f64::to_bits),
+                "{k}"
+            );
+            assert_eq!(out.spin, spin);
+            assert_eq!(
+                (out.gamma, out.gamma_star, out.candidate_walls),
+                (0.0, 0.0, 1)
+            );
+        }
+        // Some of those normals are 1 ulp off unit length: the case that must not be
+        // normalised again.
+        assert!(rounded_lengths > 100, "{rounded_lengths}");
+        // In the paper's frame it is `stochastic::rebound` on the smooth wall, bit for bit.
+        let h = hit();
+        let mut r = rng::stream(0, &[rng::domain::WALL_HITS, 12, 3]);
+        let direct = rebound(
+            Vector3::from(h.velocity),
+            Vector3::zeros(),
+            &m.wall,
+            &m.law,
+            m.psi,
+            h.diameter_m,
+            &mut r,
+        );
+        let out = m.rebound(&h);
+        assert_eq!(out.velocity, <[f64; 3]>::from(direct.velocity));
+        assert_eq!(out.candidate_walls, direct.tries);
+        // A moving smooth wall: the specular rebound relative to it.
+        let w = [0.3, 0.0, -0.2];
+        let moving = m.rebound(&Hit {
+            velocity: [h.velocity[0] + w[0], h.velocity[1], h.velocity[2] + w[2]],
+            wall_velocity: w,
+            ..h
+        });
+        for ((m, w), o) in moving.velocity.iter().zip(w).zip(out.velocity) {
+            assert!((m - w - o).abs() < 1e-14, "{moving:?}");
+        }
+    }
+
+    #[test]
+    fn bad_inputs_are_statuses_never_nan() {
+        let m = glass_steel();
+        let h = hit();
+        for bad in [
+            Hit {
+                velocity: [f64::NAN, -1.0, 0.0],
+                ..h
+            },
+            Hit {
+                spin: [0.0, f64::INFINITY, 0.0],
+                ..h
+            },
+            Hit {
+                normal: [0.0, 0.0, 0.0],
+                ..h
+            },
+            Hit {
+                lay: [0.0, 2.0, 0.0],
+                ..h
+            },
+            Hit { lay: [0.0; 3], ..h },
+            Hit {
+                diameter_m: -1e-6,
+                ..h
+            },
+            Hit {
+                wall_velocity: [f64::NEG_INFINITY, 0.0, 0.0],
+                ..h
+            },
+            Hit {
+                velocity: [f64::INFINITY, -1.0, 0.0],
+                ..h
+            },
+            Hit {
+                normal: [0.0, f64::INFINITY, 0.0],
+                ..h
+            },
+            Hit {
+                normal: [f64::NAN, 1.0, 0.0],
+                ..h
+            },
+            Hit {
+                lay: [1.0, 0.0, f64::NAN],
+                ..h
+            },
+            Hit {
+                diameter_m: f64::INFINITY,
+                ..h
+            },
+            Hit {
+                diameter_m: f64::NAN,
+                ..h
+            },
+        ] {
+            let out = m.rebound(&bad);
+            assert_eq!(out.status, HitStatus::InvalidInput, "{bad:?}");
+            assert!(out.velocity.iter().chain(&out.spin).all(|x| x.is_finite()));
+            if bad.velocity.iter().all(|x| x.is_finite()) {
+                assert_eq!(out.velocity, bad.velocity, "unchanged");
+            }
+        }
+        let along = m.rebound(&Hit {
+            velocity: [3.0, 0.0, 1.0],
+            ..h
+        });
+        assert_eq!(along.status, HitStatus::NotApproaching);
+        let huge = m.rebound(&Hit {
+            velocity: [1e308, -1e308, 1e308],
+            ..h
+        });
+        assert!(huge.velocity.iter().all(|x| x.is_finite()));
+    }
+
+    #[test]
+    fn parameters_are_checked_like_a_case_file() {
+        let good = WallParams {
+            delta_xi_deg: 3.8,
+            delta_zeta_deg: 7.5,
+            ..Default::default()
+        };
+        assert!(WallModel::new(&good).is_ok());
+        let msg = |p: WallParams| WallModel::new(&p).unwrap_err().to_string();
+        assert!(msg(WallParams {
+            delta_xi_deg: -1.0,
+            ..good.clone()
+        })
+        .contains("wall.delta_xi_deg"));
+        assert!(msg(WallParams {
+            delta_zeta_deg: f64::NAN,
+            ..good.clone()
+        })
+        .contains("wall.delta_zeta_deg"));
+        assert!(msg(WallParams {
+            psi: Some(0.0),
+            ..good.clone()
+        })
+        .contains("stochastic.psi"));
+        let sh = |e_h| WallParams {
+            collision: CollisionParams {
+                model: Some("sommerfeld-huber".into()),
+                preset: Some("glass-steel".into()),
+                e_h: Some(e_h),
+                ..Default::default()
+            },
+            ..good.clone()
+        };
+        assert!(msg(sh(1.5)).contains("collision.e_h"));
+        let (_, warnings) = WallModel::new(&WallParams {
+            delta_zeta_deg: 12.0,
+            ..good
+        })
+        .unwrap();
+        assert_eq!(warnings.len(), 1);
+        assert!(warnings[0].contains("wall.delta_zeta_deg"));
+    }
+}

@@ -1,0 +1,409 @@
+//! The layering CONTRIBUTING.md describes, checked on the sources:
+//! * the library crate `roughwall` depends on none of the application's crates (no command
+//!   line, figures, progress bars, case-file schema or CSV writers), so a CFD host and the
+//!   Python package link the physics alone;
+//! * in each crate, files import each other without cycles: the file-level import graph
+//!   (`use` statements and inline `crate::…`, `super::…` paths; re-exports followed to the
+//!   file that defines the item; unit tests left out) has no strongly connected component
+//!   of more than one file.
+
+use crate::common::repo_root;
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// Crates the application uses and the library must not.
+const APPLICATION_ONLY: [&str; 8] = [
+    "clap",
+    "plotters",
+    "indicatif",
+    "toml",
+    "serde",
+    "csv",
+    "sha2",
+    "libc",
+];
+
+#[test]
+fn the_library_depends_on_no_application_crate() {
+    let manifest =
+        std::fs::read_to_string(repo_root().join("crates/roughwall/Cargo.toml")).unwrap();
+    let deps = section(&manifest, "[dependencies]");
+    assert!(
+        !deps.is_empty(),
+        "no [dependencies] in crates/roughwall/Cargo.toml"
+    );
+    for line in deps {
+        let name = line.split(['=', '.', ' ']).next().unwrap_or("").trim();
+        assert!(
+            !APPLICATION_ONLY.contains(&name),
+            "the library depends on `{name}`, an application crate"
+        );
+    }
+    // The library's code names no application module either.
+    for file in rust_files(&repo_root().join("crates/roughwall/src")) {
+        let text = std::fs::read_to_string(&file).unwrap();
+        for name in APPLICATION_ONLY {
+            assert!(
+                !code(&text).contains(&format!("{name}::")),
+                "{} uses `{name}::`",
+                file.display()
+            );
+        }
+    }
+}
+
+#[test]
+fn files_import_each_other_without_cycles() {
+    for (krate, dir) in [("roughwall", "crates/roughwall/src"), ("rebound", "src")] {
+        let graph = import_graph(&repo_root().join(dir));
+        let cycles: Vec<Vec<String>> = strongly_connected(&graph)
+            .into_iter()
+            .filter(|c| c.len() > 1)
+            .collect();
+        assert!(
+            cycles.is_empty(),
+            "{krate}: files importing each other in a loop: {cycles:?}"
+        );
+        // The graph is not empty by accident: the library's stochastic model imports the
+        // collision law, the application's commands the case files.
+        let edge = |a: &str, b: &str| graph.get(a).is_some_and(|t| t.contains(b));
+        match krate {
+            "roughwall" => assert!(edge("stochastic/simulate.rs", "collision.rs")),
+            _ => assert!(edge("commands/stochastic.rs", "case/stochastic.rs")),
+        }
+    }
+}
+
+#[test]
+fn a_loop_is_found() {
+    let tmp = tempfile::tempdir().unwrap();
+    let src = tmp.path();
+    std::fs::create_dir_all(src.join("a")).unwrap();
+    std::fs::write(src.join("lib.rs"), "mod a;\nmod b;\n").unwrap();
+    std::fs::write(src.join("a/mod.rs"), "mod c;\npub use c::Thing;\n").unwrap();
+    std::fs::write(
+        src.join("a/c.rs"),
+        "use crate::b::other;\npub struct Thing;\n",
+    )
+    .unwrap();
+    std::fs::write(
+        src.join("b.rs"),
+        "use crate::a::Thing;\npub fn other() {}\n",
+    )
+    .unwrap();
+    let cycles: Vec<_> = strongly_connected(&import_graph(src))
+        .into_iter()
+        .filter(|c| c.len() > 1)
+        .collect();
+    assert_eq!(cycles, [vec!["a/c.rs".to_string(), "b.rs".to_string()]]);
+}
+
+/// The lines of a TOML section, up to the next section.
+fn section<'a>(text: &'a str, name: &str) -> Vec<&'a str> {
+    text.lines()
+        .skip_while(|l| l.trim() != name)
+        .skip(1)
+        .take_while(|l| !l.trim_start().starts_with('['))
+        .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'))
+        .collect()
+}
+
+fn rust_files(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            out.extend(rust_files(&p));
+        } else if p.extension().is_some_and(|x| x == "rs") {
+            out.push(p);
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The code of a file: comments dropped, unit tests (from `#[cfg(test)]` on) left out.
+fn code(text: &str) -> String {
+    let text = text.split("#[cfg(test)]").next().unwrap_or("");
+    text.lines()
+        .map(|l| match l.find("//") {
+            Some(i) => &l[..i],
+            None => l,
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The module path of a file relative to the crate's `src/` (`lib.rs`, `main.rs` → root).
+fn module_of(rel: &str) -> Vec<String> {
+    let rel = rel.trim_end_matches(".rs");
+    let mut parts: Vec<String> = rel.split('/').map(String::from).collect();
+    if matches!(
+        parts.last().map(String::as_str),
+        Some("mod" | "lib" | "main")
+    ) {
+        parts.pop();
+    }
+    parts
+}
+
+/// The paths a `use` tree names, braces expanded (`a::{b, c::d}` → `a::b`, `a::c::d`).
+fn expand(tree: &str) -> Vec<String> {
+    let tree = tree.trim();
+    let Some(open) = tree.find('{') else {
+        let path = tree.split(" as ").next().unwrap_or("").trim();
+        return vec![path.to_string()];
+    };
+    let prefix = &tree[..open];
+    let inner = &tree[open + 1..tree.rfind('}').unwrap_or(tree.len())];
+    let (mut depth, mut start, mut parts) = (0, 0, Vec::new());
+    for (i, ch) in inner.char_indices() {
+        match ch {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                parts.push(&inner[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&inner[start..]);
+    parts
+        .into_iter()
+        .filter(|p| !p.trim().is_empty())
+        .flat_map(|p| expand(p))
+        .map(|p| match p.as_str() {
+            "self" => prefix.trim_end_matches("::").to_string(),
+            _ => format!("{prefix}{p}"),
+        })
+        .collect()
+}
+
+/// Every path a file's code names through `crate::`, `super::`, `self::` or a child module,
+/// absolute (as segments from the crate root), with whether it is a `pub use` (a re-export).
+/// `is_module` tells the modules that exist (a path starting with a child's name is relative).
+fn paths_of(
+    code: &str,
+    module: &[String],
+    is_module: &dyn Fn(&[String]) -> bool,
+) -> Vec<(Vec<String>, bool)> {
+    let mut out = Vec::new();
+    let absolute = |path: &str| -> Option<Vec<String>> {
+        let segs: Vec<&str> = path.split("::").map(str::trim).collect();
+        let mut at: Vec<String> = module.to_vec();
+        let mut rest = &segs[..];
+        match segs.first().copied() {
+            Some("crate") => {
+                at.clear();
+                rest = &segs[1..];
+            }
+            Some("self") => rest = &segs[1..],
+            Some("super") => {
+                while rest.first() == Some(&"super") {
+                    at.pop();
+                    rest = &rest[1..];
+                }
+            }
+            Some(first) => {
+                let mut child = module.to_vec();
+                child.push(first.to_string());
+                if !is_module(&child) {
+                    return None; // another crate, or a name in scope
+                }
+            }
+            None => return None,
+        }
+        at.extend(rest.iter().map(|s| s.to_string()));
+        Some(at)
+    };
+    // `use` statements, possibly over several lines; the other lines are scanned for
+    // inline paths below.
+    let mut statement: Option<(String, bool)> = None;
+    let mut rest = String::new();
+    for line in code.lines() {
+        let t = line.trim();
+        if statement.is_none() {
+            let public = t.starts_with("pub");
+            let body = t
+                .strip_prefix("use ")
+                .or_else(|| t.strip_prefix("pub use "))
+                .or_else(|| t.strip_prefix("pub(crate) use "))
+                .or_else(|| t.strip_prefix("pub(super) use "));
+            match body {
+                Some(b) => statement = Some((b.to_string(), public)),
+                None => {
+                    rest.push_str(line);
+                    rest.push('\n');
+                    continue;
+                }
+            }
+        } else if let Some((s, _)) = statement.as_mut() {
+            s.push(' ');
+            s.push_str(t);
+        }
+        if let Some((s, public)) = statement.take() {
+            match s.find(';') {
+                Some(end) => {
+                    for p in expand(&s[..end]) {
+                        if let Some(a) = absolute(&p) {
+                            out.push((a, public));
+                        }
+                    }
+                }
+                None => statement = Some((s, public)),
+            }
+        }
+    }
+    // Inline paths: `crate::a::b`, `super::a::b`, `self::a` anywhere.
+    let code = rest.as_str();
+    let starts = ["crate::", "super::", "self::"]
+        .into_iter()
+        .flat_map(|p| code.match_indices(p));
+    for (i, _) in starts {
+        if code[..i].ends_with(|c: char| c.is_alphanumeric() || c == '_') {
+            continue;
+        }
+        let path: String = code[i..]
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+            .collect();
+        if let Some(a) = absolute(path.trim_end_matches(':')) {
+            out.push((a, false));
+        }
+    }
+    out
+}
+
+/// File → files it imports, by paths relative to `src` (`stochastic/simulate.rs`).
+fn import_graph(src: &Path) -> BTreeMap<String, BTreeSet<String>> {
+    let files: BTreeMap<Vec<String>, String> = rust_files(src)
+        .iter()
+        .map(|p| {
+            let rel = p
+                .strip_prefix(src)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
+            (module_of(&rel), rel)
+        })
+        .collect();
+    let codes: BTreeMap<String, String> = files
+        .values()
+        .map(|rel| {
+            (
+                rel.clone(),
+                code(&std::fs::read_to_string(src.join(rel)).unwrap()),
+            )
+        })
+        .collect();
+    let is_module = |m: &[String]| files.contains_key(m);
+    // Re-exports: (module, name) → the path it re-exports.
+    let mut reexports: BTreeMap<(Vec<String>, String), Vec<String>> = BTreeMap::new();
+    for (module, rel) in &files {
+        for (path, public) in paths_of(&codes[rel], module, &is_module) {
+            if public {
+                if let Some(name) = path.last() {
+                    reexports.insert((module.clone(), name.clone()), path.clone());
+                }
+            }
+        }
+    }
+    // The file of the longest module prefix of `path`, through re-exports.
+    let file_of = |path: &[String]| -> Option<String> {
+        let mut path = path.to_vec();
+        for _ in 0..8 {
+            let k = (0..=path.len())
+                .rev()
+                .find(|&k| files.contains_key(&path[..k]))?;
+            let module = path[..k].to_vec();
+            match path
+                .get(k)
+                .and_then(|n| reexports.get(&(module.clone(), n.clone())))
+            {
+                Some(target) if *target != path => {
+                    let mut next = target.clone();
+                    next.extend(path[k + 1..].iter().cloned());
+                    path = next;
+                }
+                _ => return files.get(&module).cloned(),
+            }
+        }
+        None
+    };
+    let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for (module, rel) in &files {
+        let targets = graph.entry(rel.clone()).or_default();
+        for (path, public) in paths_of(&codes[rel], module, &is_module) {
+            if public {
+                continue; // a re-export is plumbing: a user of the item depends on its file
+            }
+            if let Some(t) = file_of(&path) {
+                if t != *rel {
+                    targets.insert(t);
+                }
+            }
+        }
+    }
+    graph
+}
+
+/// Tarjan's strongly connected components, each sorted, in a stable order.
+fn strongly_connected(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<Vec<String>> {
+    struct State<'a> {
+        graph: &'a BTreeMap<String, BTreeSet<String>>,
+        index: BTreeMap<&'a str, usize>,
+        low: BTreeMap<&'a str, usize>,
+        stack: Vec<&'a str>,
+        on_stack: BTreeSet<&'a str>,
+        out: Vec<Vec<String>>,
+    }
+    fn visit<'a>(s: &mut State<'a>, v: &'a str) {
+        let i = s.index.len();
+        s.index.insert(v, i);
+        s.low.insert(v, i);
+        s.stack.push(v);
+        s.on_stack.insert(v);
+        let graph = s.graph;
+        for w in graph.get(v).into_iter().flatten() {
+            let w = w.as_str();
+            if !s.index.contains_key(w) {
+                visit(s, w);
+                let lw = s.low[w];
+                let lv = s.low.get_mut(v).unwrap();
+                *lv = (*lv).min(lw);
+            } else if s.on_stack.contains(w) {
+                let iw = s.index[w];
+                let lv = s.low.get_mut(v).unwrap();
+                *lv = (*lv).min(iw);
+            }
+        }
+        if s.low[v] == s.index[v] {
+            let mut comp = Vec::new();
+            while let Some(w) = s.stack.pop() {
+                s.on_stack.remove(w);
+                comp.push(w.to_string());
+                if w == v {
+                    break;
+                }
+            }
+            comp.sort();
+            s.out.push(comp);
+        }
+    }
+    let mut s = State {
+        graph,
+        index: BTreeMap::new(),
+        low: BTreeMap::new(),
+        stack: Vec::new(),
+        on_stack: BTreeSet::new(),
+        out: Vec::new(),
+    };
+    for v in graph.keys() {
+        if !s.index.contains_key(v.as_str()) {
+            visit(&mut s, v);
+        }
+    }
+    s.out.sort();
+    s.out
+}

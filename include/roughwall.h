@@ -112,10 +112,15 @@ typedef struct rw_wall rw_wall;
  */
 typedef struct {
   /*
-   Standard deviations (degrees) of the wall normal's angles along the lay direction (Δξ)
-   and across it (Δζ): 0 … 20 (beyond 7.5 the message holds a warning).
+   Δξ: standard deviation (degrees) of the wall normal's angle along the lay direction
+   (Radenkovic & Simonin 2021, Eq. 15): 0 … 20 (beyond 7.5 the message holds a warning).
    */
   double delta_xi_deg;
+  /*
+   Δζ: standard deviation (degrees) of the wall normal's angle across the lay direction
+   (Radenkovic & Simonin 2021, Eq. 15): 0 … 20, 0 for 2-D roughness (beyond 7.5 the
+   message holds a warning).
+   */
   double delta_zeta_deg;
   /*
    `RW_LAW_ELASTIC` or `RW_LAW_SOMMERFELD_HUBER`.
@@ -126,17 +131,37 @@ typedef struct {
    */
   int32_t preset;
   /*
-   Sommerfeld–Huber (Eqs. 36–37): restitution beyond `alpha_e_deg`, (0, 1]; the angle
-   (0, 90]; friction at grazing and beyond `alpha_mu_deg`, [0, 2]; the angle (0, 90].
-   NaN: the preset's value.
+   Sommerfeld–Huber `e_h`: the restitution coefficient at impact angles beyond
+   `alpha_e_deg` (Radenkovic & Simonin 2021, Eq. 36), in (0, 1]. NaN: the preset's value;
+   must be NaN with `RW_LAW_ELASTIC`.
    */
   double e_h;
+  /*
+   Sommerfeld–Huber `α_e` (degrees): the impact angle up to which the restitution
+   coefficient falls linearly from 1 to `e_h` (Radenkovic & Simonin 2021, Eq. 36), in
+   (0, 90]. NaN: the preset's value; must be NaN with `RW_LAW_ELASTIC`.
+   */
   double alpha_e_deg;
+  /*
+   Sommerfeld–Huber `μ_0`: the friction coefficient at grazing incidence (impact angle 0;
+   Radenkovic & Simonin 2021, Eq. 37 as corrected), in [0, 2]. NaN: the preset's value;
+   must be NaN with `RW_LAW_ELASTIC`.
+   */
   double mu_0;
+  /*
+   Sommerfeld–Huber `μ_h`: the friction coefficient at impact angles beyond
+   `alpha_mu_deg` (Radenkovic & Simonin 2021, Eq. 37 as corrected), in [0, 2]. NaN: the
+   preset's value; must be NaN with `RW_LAW_ELASTIC`.
+   */
   double mu_h;
+  /*
+   Sommerfeld–Huber `α_μ` (degrees): the impact angle up to which the friction
+   coefficient goes linearly from `mu_0` to `mu_h` (Radenkovic & Simonin 2021, Eq. 37 as
+   corrected), in (0, 90]. NaN: the preset's value; must be NaN with `RW_LAW_ELASTIC`.
+   */
   double alpha_mu_deg;
   /*
-   ψ of the single-collision probability (Eq. 34), > 0; 2 in the paper.
+   ψ of the single-collision probability (Eq. 34), in [0.01, 100]; 2 in the paper.
    */
   double psi;
   /*
@@ -145,7 +170,7 @@ typedef struct {
   uint64_t seed;
   /*
    The rough-wall model: `RW_MODEL_RADENKOVIC_SIMONIN_2021` (default) …
-   `RW_MODEL_NORMAL_PERTURBATION`.
+   `RW_MODEL_CALIBRATED`.
    */
   int32_t model;
   /*
@@ -165,9 +190,12 @@ typedef struct {
  */
 typedef struct {
   /*
-   Particle velocity (m/s) and angular velocity (rad/s).
+   Particle velocity (m/s, global axes) before the hit, not relative to the wall.
    */
   double velocity[3];
+  /*
+   Particle angular velocity (rad/s, global axes) before the hit.
+   */
   double spin[3];
   /*
    Face normal, either orientation, any non-zero length (one of unit length to
@@ -187,9 +215,15 @@ typedef struct {
    */
   double diameter;
   /*
-   The key of the hit's random stream: the same key gives the same rebound on any rank.
+   The first part of the key of the hit's random stream (with the wall's `seed` and
+   `collision_index`): the particle's identifier. The same key gives the same rebound on
+   any rank, so use an identifier that is unique and does not change across ranks.
    */
   uint64_t particle_id;
+  /*
+   The second part of the stream's key: the index of this hit among the particle's wall
+   hits (e.g. a per-particle counter), so that successive hits draw different walls.
+   */
   uint64_t collision_index;
 } rw_hit;
 
@@ -198,14 +232,26 @@ typedef struct {
  */
 typedef struct {
   /*
-   Rebound velocity (m/s, wall velocity added back) and angular velocity (rad/s).
+   Rebound velocity (m/s, global axes, wall velocity added back). When the particle is
+   returned unchanged (`status` not `RW_OK`): its incident velocity, non-finite
+   components as 0.
    */
   double velocity[3];
+  /*
+   Rebound angular velocity (rad/s, global axes). When the particle is returned
+   unchanged: its incident angular velocity, non-finite components as 0.
+   */
   double spin[3];
   /*
-   Inclinations γ, γ* (rad) of the virtual wall element that produced the rebound.
+   Inclination γ (rad) of the virtual wall element that produced the rebound, in the
+   incident plane (Radenkovic & Simonin 2021, Eq. 20); 0 for a smooth wall or a particle
+   returned unchanged.
    */
   double gamma;
+  /*
+   Inclination γ* (rad) of that wall element normal to the incident plane (Radenkovic &
+   Simonin 2021, Eq. 21); 0 for a smooth wall or a particle returned unchanged.
+   */
   double gamma_star;
   /*
    Candidate walls drawn (≥ 1 for a rebound).
@@ -223,63 +269,135 @@ typedef struct {
  written.
  */
 typedef struct {
+  /*
+   Number of hits: every array that is not NULL holds `n` elements. With `n` = 0
+   nothing is read or written and the arrays may all be NULL.
+   */
   size_t n;
   /*
-   Velocities (m/s).
+   x components of the particle velocities (m/s, global axes, before the hit, not
+   relative to the wall), as `rw_hit.velocity[0]`; required.
    */
   const double *ux;
+  /*
+   y components of the particle velocities (m/s, global axes); required.
+   */
   const double *uy;
+  /*
+   z components of the particle velocities (m/s, global axes); required.
+   */
   const double *uz;
   /*
-   Angular velocities (rad/s); may be NULL.
+   x components of the particle angular velocities (rad/s, global axes), as
+   `rw_hit.spin[0]`; may be NULL (then 0).
    */
   const double *wx;
+  /*
+   y components of the particle angular velocities (rad/s, global axes); may be NULL
+   (then 0).
+   */
   const double *wy;
+  /*
+   z components of the particle angular velocities (rad/s, global axes); may be NULL
+   (then 0).
+   */
   const double *wz;
   /*
-   Face normals, either orientation.
+   x components of the face normals (either orientation, any non-zero length), as
+   `rw_hit.normal[0]`; required.
    */
   const double *nx;
+  /*
+   y components of the face normals (either orientation, any non-zero length);
+   required.
+   */
   const double *ny;
+  /*
+   z components of the face normals (either orientation, any non-zero length);
+   required.
+   */
   const double *nz;
   /*
-   Lay directions.
+   x components of the lay directions (that of Δξ, projected onto the wall plane), as
+   `rw_hit.lay[0]`; required.
    */
   const double *lx;
+  /*
+   y components of the lay directions (that of Δξ, projected onto the wall plane);
+   required.
+   */
   const double *ly;
+  /*
+   z components of the lay directions (that of Δξ, projected onto the wall plane);
+   required.
+   */
   const double *lz;
   /*
-   Wall velocities (m/s); may be NULL.
+   x components of the wall velocities (m/s, global axes), as `rw_hit.wall_velocity[0]`;
+   may be NULL (then 0).
    */
   const double *vx;
+  /*
+   y components of the wall velocities (m/s, global axes); may be NULL (then 0).
+   */
   const double *vy;
+  /*
+   z components of the wall velocities (m/s, global axes); may be NULL (then 0).
+   */
   const double *vz;
   /*
    Diameters (m).
    */
   const double *diameter;
   /*
-   Keys of the random streams.
+   First parts of the random streams' keys, the particle identifiers, as
+   `rw_hit.particle_id`; required.
    */
   const uint64_t *particle_id;
+  /*
+   Second parts of the random streams' keys, the hit indices, as
+   `rw_hit.collision_index`; required.
+   */
   const uint64_t *collision_index;
   /*
-   Rebound velocities.
+   x components of the rebound velocities (m/s, global axes), as `rw_result.velocity[0]`;
+   required (may be `ux`, for an in-place update).
    */
   double *out_ux;
+  /*
+   y components of the rebound velocities (m/s, global axes); required (may be `uy`).
+   */
   double *out_uy;
+  /*
+   z components of the rebound velocities (m/s, global axes); required (may be `uz`).
+   */
   double *out_uz;
   /*
-   Rebound angular velocities; may be NULL.
+   x components of the rebound angular velocities (rad/s, global axes), as
+   `rw_result.spin[0]`; may be NULL (not written).
    */
   double *out_wx;
+  /*
+   y components of the rebound angular velocities (rad/s, global axes); may be NULL
+   (not written).
+   */
   double *out_wy;
+  /*
+   z components of the rebound angular velocities (rad/s, global axes); may be NULL
+   (not written).
+   */
   double *out_wz;
   /*
-   γ, γ* and candidate walls; may be NULL.
+   γ (rad), as `rw_result.gamma`; may be NULL (not written).
    */
   double *out_gamma;
+  /*
+   γ* (rad), as `rw_result.gamma_star`; may be NULL (not written).
+   */
   double *out_gamma_star;
+  /*
+   Candidate walls drawn, as `rw_result.candidate_walls`; may be NULL (not written).
+   */
   uint32_t *out_candidate_walls;
   /*
    Status of each hit.

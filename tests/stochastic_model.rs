@@ -1,5 +1,5 @@
-//! The stochastic rebound model (Radenkovic & Simonin 2021, Sec. 3.4–3.6, 4; notes §3)
-//! against its analytic limits, the paper's findings and the hard cases of notes §9.
+//! The stochastic rebound model (Radenkovic & Simonin 2021, Sec. 3.4–3.6, 4; docs/physics.md §3)
+//! against its analytic limits, the paper's findings and the hard cases of docs/physics.md §9.
 use crate::common::dev;
 use nalgebra::Vector3;
 use rand::SeedableRng;

@@ -213,7 +213,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
     if scene.conditions.iter().any(|c| c.alpha_in_deg() == -90.0) {
         notes.insert(
             "notes".into(),
-            toml::Value::String("normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (physics notes §1)".into()),
+            toml::Value::String("normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (docs/physics.md §1)".into()),
         );
     }
     let setup = ModelSetup {

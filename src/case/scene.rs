@@ -152,7 +152,7 @@ impl Case {
                         "angles in [-180, 180] degrees",
                     ));
                 }
-                // Normal incidence has no incident plane: β⁻ is taken as 0 (notes §1).
+                // Normal incidence has no incident plane: β⁻ is taken as 0 (docs/physics.md §1).
                 let beta = if a == -90.0 { 0.0 } else { b };
                 let c = IncidentCondition::from_degrees(a, beta);
                 // −0 and 0 are one angle.

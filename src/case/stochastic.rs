@@ -1,5 +1,5 @@
 //! What `rebound stochastic` resolves from a case: the scene, the wall the model sees and
-//! what to tally (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; notes §3). No surface is
+//! what to tally (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; docs/physics.md §3). No surface is
 //! built, except for `[stochastic] effective_for_diameter`; a case with surface parameters
 //! is converted to deviations (Eq. 15).
 
@@ -53,7 +53,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
         notes.insert(
             "notes".into(),
             toml::Value::String(
-                "normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (physics notes §1)"
+                "normal incidence (α⁻ = −90°) has no incident plane: β⁻ is taken as 0° (docs/physics.md §1)"
                     .into(),
             ),
         );

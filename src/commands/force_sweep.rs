@@ -1,5 +1,5 @@
 //! `rebound force-sweep`: peak elastic force of spheres and prolate spheroids over a sweep of
-//! models × D × λ × β × U_N (Hu et al. 2021; physics notes §7).
+//! models × D × λ × β × U_N (Hu et al. 2021; docs/physics.md §7).
 //!
 //! Outputs in `--out`:
 //! - `force_sweep.csv` — one row per point, columns `crate::writers::force_sweep::HEADER`;

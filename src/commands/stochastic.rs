@@ -1,5 +1,5 @@
 //! `rebound stochastic`: the stochastic rebound model of Radenkovic & Simonin 2021
-//! (Sec. 3.6, Fig. 13; notes §3) for every incident condition of the case.
+//! (Sec. 3.6, Fig. 13; docs/physics.md §3) for every incident condition of the case.
 
 use crate::case::{builtin, stochastic::prepare};
 use crate::cli::StochasticArgs;

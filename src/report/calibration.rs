@@ -329,7 +329,7 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
              a model to be. `calibrated` is within that noise (all three columns no larger) on: {within}. \
              Max KS of α⁺ (|α⁻| ≥ 2.5°), paper → calibrated: {improved}. ns/rebound is the whole run's compute time \
              on 2 threads (it varies with the machine's load; `docs/models.md` has the cost against the \
-             paper model per rebound on one core).\n\n",
+             paper model measured in alternating whole-process pairs).\n\n",
             one.lines
         );
     }

@@ -108,7 +108,7 @@ pub fn table1(results: &Path, md: &mut String) -> Result<()> {
          4.33° and 6.61°, which is what our model columns show — a misprint in the table. The paper's *numerical* \
          columns come from one surface sampled along lines at 0.1 µm steps; ours average over every triangle of \
          the grid, so both carry sampling noise of one realisation and finite-difference slopes that are slightly \
-         below √2 h/c_L when δ/c_L is not small (notes §4).\n"
+         below √2 h/c_L when δ/c_L is not small (docs/physics.md §4).\n"
     );
     for svg in ["height_map.svg", "normal_angle_histograms.svg"] {
         if dir.join(svg).is_file() {

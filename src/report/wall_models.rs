@@ -129,7 +129,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
          α⁺ and of β⁺ − β⁻, the largest bias of the mean (SM − DS, degrees) with the largest |z| \
          (bias over the combined standard error), and the run's wall-clock time per rebound on 2 \
          threads. The isotropic variants use Δγ = (Δξ + Δζ)/2. Definitions and sources: \
-         `src/stochastic/variants.rs`, [models.md](../docs/models.md).\n\n\
+         `crates/roughwall/src/stochastic/variants.rs`, [models.md](../docs/models.md).\n\n\
          | scene | model | max KS α⁺ | max KS β⁺−β⁻ | max \\|bias\\| mean α⁺ (°) | max \\|z\\| | max \\|bias\\| mean β⁺−β⁻ (°) | max \\|z\\| | ns/rebound |\n\
          |---|---|---|---|---|---|---|---|---|\n",
     );

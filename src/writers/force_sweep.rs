@@ -1,4 +1,4 @@
-//! The tables of `rebound force-sweep` (Hu et al. 2021; physics notes §7):
+//! The tables of `rebound force-sweep` (Hu et al. 2021; docs/physics.md §7):
 //! `force_sweep.csv`, `accuracy.csv`, `dynamic_convergence.csv` and the `[force]` and
 //! `[[dynamic_convergence]]` tables of `run.toml`.
 

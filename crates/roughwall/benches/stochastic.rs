@@ -20,7 +20,9 @@ use roughwall::incidence::{draw_speed, incident_velocity};
 use roughwall::rng;
 use roughwall::stochastic::shadow_effect::ShadowSampler;
 use roughwall::stochastic::simulate::{fill_block, outcome, tally_spec, ModelSetup};
-use roughwall::stochastic::{rebound, rebound_from, Incidence, Variant, VariantKind};
+use roughwall::stochastic::{
+    rebound, rebound_from, Incidence, ModelIncidence, Variant, VariantKind,
+};
 use roughwall::tally::BlockTally;
 use roughwall::wall::{conditional_gamma_star, delta_gamma, rotated_moments, Deviations};
 use std::time::Instant;
@@ -262,7 +264,7 @@ fn tallied_block_with(
 fn breakdown(_: &mut Criterion) {
     let s = &scenes()[0];
     let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
-    let inc = Incidence::new(cond.alpha_in, cond.beta_in, &s.wall);
+    let inc = ModelIncidence::Paper(Incidence::new(cond.alpha_in, cond.beta_in, &s.wall));
     let m = rotated_moments(&s.wall, cond.beta_in);
     let per_unit = incident_velocity(cond.alpha_in, cond.beta_in, 1.0);
     let prefix = rng::StreamPrefix::new(1, &[rng::domain::STOCHASTIC, 0]);

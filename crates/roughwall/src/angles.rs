@@ -1,4 +1,4 @@
-//! Frames and angles (physics notes §1; Radenkovic & Simonin 2021, Sec. 3.1, Eqs. 17–24, 43).
+//! Frames and angles (docs/physics.md §1; Radenkovic & Simonin 2021, Sec. 3.1, Eqs. 17–24, 43).
 //!
 //! Mean wall plane `y = 0`, `j` into the flow; `x`, `z` the principal directions of
 //! the roughness. Everything is in radians; degrees are for people.
@@ -10,7 +10,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 ///
 /// `α = asin(v/|U|)`, `β = −sgn(w)·acos(u/(|U| cos α))`, written as `atan2(−w, u)`, which is
 /// the same angle and stays defined for `w = 0`. With no horizontal speed (`α = ±90°`) `β` is
-/// undefined and taken as 0 (notes §1). A zero velocity gives `(0, 0)`.
+/// undefined and taken as 0 (docs/physics.md §1). A zero velocity gives `(0, 0)`.
 pub fn incident_angles(u: &Vector3<f64>) -> (f64, f64) {
     let speed = u.norm();
     if speed == 0.0 {
@@ -34,7 +34,7 @@ pub fn velocity_from_angles(speed: f64, alpha: f64, beta: f64) -> Vector3<f64> {
     )
 }
 
-/// Wraps an angle into `(−π, π]` (notes §1: transverse deviation `β⁺ − β⁻`).
+/// Wraps an angle into `(−π, π]` (docs/physics.md §1: transverse deviation `β⁺ − β⁻`).
 pub fn wrap_pi(x: f64) -> f64 {
     let mut y = x.rem_euclid(2.0 * PI);
     if y > PI {
@@ -93,7 +93,7 @@ pub fn xi_zeta_rotated(gamma: f64, gamma_star: f64, (s, c): (f64, f64)) -> (f64,
     (c * gamma + s * gamma_star, -s * gamma + c * gamma_star)
 }
 
-/// Unit wall normal from the sampled angles (Radenkovic & Simonin 2021, Eqs. 3, 10, 23; notes §2).
+/// Unit wall normal from the sampled angles (Radenkovic & Simonin 2021, Eqs. 3, 10, 23; docs/physics.md §2).
 ///
 /// `ξ = π/2 + ξ'`, `ζ = π/2 + ζ'`, `n = (cos ξ, cos η, cos ζ)` with `cos η = sqrt(1 − cos²ξ − cos²ζ)`,
 /// an exact unit vector (Eq. 24 is only its small-angle value). If the angles are so large
@@ -119,7 +119,7 @@ pub fn normal_from_xi_zeta(xi_p: f64, zeta_p: f64) -> Vector3<f64> {
     Vector3::new(nx, (1.0 - t2).sqrt(), nz)
 }
 
-/// Fluctuations `(ξ', ζ') = (ξ − π/2, ζ − π/2)` of a unit normal's angles with `x` and `z` (notes §1).
+/// Fluctuations `(ξ', ζ') = (ξ − π/2, ζ − π/2)` of a unit normal's angles with `x` and `z` (docs/physics.md §1).
 pub fn xi_zeta_of_normal(n: &Vector3<f64>) -> (f64, f64) {
     (
         n.x.clamp(-1.0, 1.0).acos() - FRAC_PI_2,
@@ -128,7 +128,7 @@ pub fn xi_zeta_of_normal(n: &Vector3<f64>) -> (f64, f64) {
 }
 
 /// Wall inclination angles `(γ, γ*)` of a unit normal seen from incidence `β⁻`
-/// (Radenkovic & Simonin 2021, Eqs. 20–21 as corrected in notes §2).
+/// (Radenkovic & Simonin 2021, Eqs. 20–21 as corrected in docs/physics.md §2).
 pub fn gamma_from_normal(n: &Vector3<f64>, beta_in: f64) -> (f64, f64) {
     let (xi_p, zeta_p) = xi_zeta_of_normal(n);
     let (s, c) = beta_in.sin_cos();
@@ -153,7 +153,7 @@ mod tests {
 
     #[test]
     fn beta_sign_convention() {
-        // notes §1: β⁻ = +60° means w < 0
+        // docs/physics.md §1: β⁻ = +60° means w < 0
         let u = velocity_from_angles(1.0, -0.2, 60f64.to_radians());
         assert!(u.z < 0.0);
     }

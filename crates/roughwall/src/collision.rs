@@ -1,9 +1,9 @@
 //! Collision laws applied in the local frame of a wall normal `n`
-//! (Radenkovic & Simonin 2021, Sec. 3.1 and Eqs. 36–42; physics notes §2, §6).
+//! (Radenkovic & Simonin 2021, Sec. 3.1 and Eqs. 36–42; docs/physics.md §2, §6).
 //!
 //! One implementation serves both the deterministic tracker and the stochastic
 //! model. The laws are written in vector form, so they do not depend on which
-//! tangent basis of the local frame one would pick (notes §2).
+//! tangent basis of the local frame one would pick (docs/physics.md §2).
 
 use crate::check::{check_greater_than, check_less_than, check_range, check_value};
 use crate::error::{Error, Result};
@@ -27,7 +27,7 @@ pub struct ShParams {
 
 impl ShParams {
     /// Glass beads on stainless steel, the literature fit of Laín & Sommerfeld (2008) quoted in
-    /// physics notes §6 (not in the seed papers): `e_w = 1 − 0.0136 α` up to 20.6° then 0.72,
+    /// docs/physics.md §6 (not in the seed papers): `e_w = 1 − 0.0136 α` up to 20.6° then 0.72,
     /// `μ_w = 0.5 − 0.0175 α` up to 22° then 0.115 (α in degrees).
     pub fn glass_steel() -> ShParams {
         ShParams {
@@ -49,7 +49,7 @@ impl ShParams {
     }
 
     /// Friction coefficient at impact angle `|α|` (Radenkovic & Simonin 2021, Eq. 37 as corrected
-    /// in notes §2: `α_μ` and `μ_h`, not `α_e` and `e_h`).
+    /// in docs/physics.md §2: `α_μ` and `μ_h`, not `α_e` and `e_h`).
     pub fn friction(&self, abs_alpha: f64) -> f64 {
         if abs_alpha <= self.alpha_mu && self.alpha_mu > 0.0 {
             (self.mu_h - self.mu_0) / self.alpha_mu * abs_alpha + self.mu_0
@@ -198,12 +198,12 @@ impl CollisionLaw {
     }
 }
 
-/// Sommerfeld–Huber collision in vector form (Radenkovic & Simonin 2021, Eqs. 38–42; notes §2).
+/// Sommerfeld–Huber collision in vector form (Radenkovic & Simonin 2021, Eqs. 38–42; docs/physics.md §2).
 ///
 /// With `R = D/2`, the slip velocity of the contact point is `s = u_t − R (ω × n)` (Eq. 39 is `|s|`).
 /// Non-sliding when `|s| < (7/2) μ_w (1 + e_w) |u·n|` (Eq. 38): `u_t⁺ = u_t − (2/7) s` (Eq. 40,
 /// `u⁺ = 5/7 (u − D/5 ω_z)` in the wall frame) and the tangential spin rolls on the rebound velocity,
-/// `ω_t⁺ = (n × u_t⁺)/R` (notes §2: `ω_x⁺ = 2w⁺/D`, `ω_z⁺ = −2u⁺/D`).
+/// `ω_t⁺ = (n × u_t⁺)/R` (docs/physics.md §2: `ω_x⁺ = 2w⁺/D`, `ω_z⁺ = −2u⁺/D`).
 /// Sliding otherwise: `u_t⁺ = u_t + μ_w (1+e_w) (u·n) ŝ`, `ω⁺ = ω − (5/(2R)) μ_w (1+e_w) (u·n) (n × ŝ)` (Eqs. 41–42).
 /// In both branches `u_n⁺ = −e_w u_n` and the spin about `n` is unchanged.
 fn sommerfeld_huber(

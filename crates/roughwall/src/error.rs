@@ -11,6 +11,8 @@
 use std::fmt::{self, Display};
 use std::path::Path;
 
+/// An error of the library or the tool; its kind decides the process exit status
+/// ([`Error::exit_code`], table in the module documentation). It displays on one line.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Error {
     /// The user asked for something invalid: a wrong key, value or input file.
@@ -23,6 +25,7 @@ pub enum Error {
     Internal(String),
 }
 
+/// `Result` with this crate's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {

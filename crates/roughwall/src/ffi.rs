@@ -62,28 +62,43 @@ pub const RW_MODEL_CALIBRATED: i32 = 5;
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct rw_wall_params {
-    /// Standard deviations (degrees) of the wall normal's angles along the lay direction (Δξ)
-    /// and across it (Δζ): 0 … 20 (beyond 7.5 the message holds a warning).
+    /// Δξ: standard deviation (degrees) of the wall normal's angle along the lay direction
+    /// (Radenkovic & Simonin 2021, Eq. 15): 0 … 20 (beyond 7.5 the message holds a warning).
     pub delta_xi_deg: f64,
+    /// Δζ: standard deviation (degrees) of the wall normal's angle across the lay direction
+    /// (Radenkovic & Simonin 2021, Eq. 15): 0 … 20, 0 for 2-D roughness (beyond 7.5 the
+    /// message holds a warning).
     pub delta_zeta_deg: f64,
     /// `RW_LAW_ELASTIC` or `RW_LAW_SOMMERFELD_HUBER`.
     pub law: i32,
     /// `RW_PRESET_NONE` or `RW_PRESET_GLASS_STEEL` (Sommerfeld–Huber only).
     pub preset: i32,
-    /// Sommerfeld–Huber (Eqs. 36–37): restitution beyond `alpha_e_deg`, (0, 1]; the angle
-    /// (0, 90]; friction at grazing and beyond `alpha_mu_deg`, [0, 2]; the angle (0, 90].
-    /// NaN: the preset's value.
+    /// Sommerfeld–Huber `e_h`: the restitution coefficient at impact angles beyond
+    /// `alpha_e_deg` (Radenkovic & Simonin 2021, Eq. 36), in (0, 1]. NaN: the preset's value;
+    /// must be NaN with `RW_LAW_ELASTIC`.
     pub e_h: f64,
+    /// Sommerfeld–Huber `α_e` (degrees): the impact angle up to which the restitution
+    /// coefficient falls linearly from 1 to `e_h` (Radenkovic & Simonin 2021, Eq. 36), in
+    /// (0, 90]. NaN: the preset's value; must be NaN with `RW_LAW_ELASTIC`.
     pub alpha_e_deg: f64,
+    /// Sommerfeld–Huber `μ_0`: the friction coefficient at grazing incidence (impact angle 0;
+    /// Radenkovic & Simonin 2021, Eq. 37 as corrected), in [0, 2]. NaN: the preset's value;
+    /// must be NaN with `RW_LAW_ELASTIC`.
     pub mu_0: f64,
+    /// Sommerfeld–Huber `μ_h`: the friction coefficient at impact angles beyond
+    /// `alpha_mu_deg` (Radenkovic & Simonin 2021, Eq. 37 as corrected), in [0, 2]. NaN: the
+    /// preset's value; must be NaN with `RW_LAW_ELASTIC`.
     pub mu_h: f64,
+    /// Sommerfeld–Huber `α_μ` (degrees): the impact angle up to which the friction
+    /// coefficient goes linearly from `mu_0` to `mu_h` (Radenkovic & Simonin 2021, Eq. 37 as
+    /// corrected), in (0, 90]. NaN: the preset's value; must be NaN with `RW_LAW_ELASTIC`.
     pub alpha_mu_deg: f64,
-    /// ψ of the single-collision probability (Eq. 34), > 0; 2 in the paper.
+    /// ψ of the single-collision probability (Eq. 34), in [0.01, 100]; 2 in the paper.
     pub psi: f64,
     /// Seed of every hit's random stream, with (particle id, collision index).
     pub seed: u64,
     /// The rough-wall model: `RW_MODEL_RADENKOVIC_SIMONIN_2021` (default) …
-    /// `RW_MODEL_NORMAL_PERTURBATION`.
+    /// `RW_MODEL_CALIBRATED`.
     pub model: i32,
     /// The isotropic models' roughness angle Δγ (degrees, 0 … 20); NaN: `(Δξ + Δζ)/2`.
     pub delta_gamma_deg: f64,
@@ -97,8 +112,9 @@ pub struct rw_wall_params {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct rw_hit {
-    /// Particle velocity (m/s) and angular velocity (rad/s).
+    /// Particle velocity (m/s, global axes) before the hit, not relative to the wall.
     pub velocity: [f64; 3],
+    /// Particle angular velocity (rad/s, global axes) before the hit.
     pub spin: [f64; 3],
     /// Face normal, either orientation, any non-zero length (one of unit length to
     /// round-off is used as given, as the host's own rebound uses it).
@@ -109,8 +125,12 @@ pub struct rw_hit {
     pub wall_velocity: [f64; 3],
     /// Particle diameter (m), ≥ 0.
     pub diameter: f64,
-    /// The key of the hit's random stream: the same key gives the same rebound on any rank.
+    /// The first part of the key of the hit's random stream (with the wall's `seed` and
+    /// `collision_index`): the particle's identifier. The same key gives the same rebound on
+    /// any rank, so use an identifier that is unique and does not change across ranks.
     pub particle_id: u64,
+    /// The second part of the stream's key: the index of this hit among the particle's wall
+    /// hits (e.g. a per-particle counter), so that successive hits draw different walls.
     pub collision_index: u64,
 }
 
@@ -118,11 +138,19 @@ pub struct rw_hit {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct rw_result {
-    /// Rebound velocity (m/s, wall velocity added back) and angular velocity (rad/s).
+    /// Rebound velocity (m/s, global axes, wall velocity added back). When the particle is
+    /// returned unchanged (`status` not `RW_OK`): its incident velocity, non-finite
+    /// components as 0.
     pub velocity: [f64; 3],
+    /// Rebound angular velocity (rad/s, global axes). When the particle is returned
+    /// unchanged: its incident angular velocity, non-finite components as 0.
     pub spin: [f64; 3],
-    /// Inclinations γ, γ* (rad) of the virtual wall element that produced the rebound.
+    /// Inclination γ (rad) of the virtual wall element that produced the rebound, in the
+    /// incident plane (Radenkovic & Simonin 2021, Eq. 20); 0 for a smooth wall or a particle
+    /// returned unchanged.
     pub gamma: f64,
+    /// Inclination γ* (rad) of that wall element normal to the incident plane (Radenkovic &
+    /// Simonin 2021, Eq. 21); 0 for a smooth wall or a particle returned unchanged.
     pub gamma_star: f64,
     /// Candidate walls drawn (≥ 1 for a rebound).
     pub candidate_walls: u32,
@@ -136,43 +164,79 @@ pub struct rw_result {
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct rw_batch {
+    /// Number of hits: every array that is not NULL holds `n` elements. With `n` = 0
+    /// nothing is read or written and the arrays may all be NULL.
     pub n: usize,
-    /// Velocities (m/s).
+    /// x components of the particle velocities (m/s, global axes, before the hit, not
+    /// relative to the wall), as `rw_hit.velocity[0]`; required.
     pub ux: *const f64,
+    /// y components of the particle velocities (m/s, global axes); required.
     pub uy: *const f64,
+    /// z components of the particle velocities (m/s, global axes); required.
     pub uz: *const f64,
-    /// Angular velocities (rad/s); may be NULL.
+    /// x components of the particle angular velocities (rad/s, global axes), as
+    /// `rw_hit.spin[0]`; may be NULL (then 0).
     pub wx: *const f64,
+    /// y components of the particle angular velocities (rad/s, global axes); may be NULL
+    /// (then 0).
     pub wy: *const f64,
+    /// z components of the particle angular velocities (rad/s, global axes); may be NULL
+    /// (then 0).
     pub wz: *const f64,
-    /// Face normals, either orientation.
+    /// x components of the face normals (either orientation, any non-zero length), as
+    /// `rw_hit.normal[0]`; required.
     pub nx: *const f64,
+    /// y components of the face normals (either orientation, any non-zero length);
+    /// required.
     pub ny: *const f64,
+    /// z components of the face normals (either orientation, any non-zero length);
+    /// required.
     pub nz: *const f64,
-    /// Lay directions.
+    /// x components of the lay directions (that of Δξ, projected onto the wall plane), as
+    /// `rw_hit.lay[0]`; required.
     pub lx: *const f64,
+    /// y components of the lay directions (that of Δξ, projected onto the wall plane);
+    /// required.
     pub ly: *const f64,
+    /// z components of the lay directions (that of Δξ, projected onto the wall plane);
+    /// required.
     pub lz: *const f64,
-    /// Wall velocities (m/s); may be NULL.
+    /// x components of the wall velocities (m/s, global axes), as `rw_hit.wall_velocity[0]`;
+    /// may be NULL (then 0).
     pub vx: *const f64,
+    /// y components of the wall velocities (m/s, global axes); may be NULL (then 0).
     pub vy: *const f64,
+    /// z components of the wall velocities (m/s, global axes); may be NULL (then 0).
     pub vz: *const f64,
     /// Diameters (m).
     pub diameter: *const f64,
-    /// Keys of the random streams.
+    /// First parts of the random streams' keys, the particle identifiers, as
+    /// `rw_hit.particle_id`; required.
     pub particle_id: *const u64,
+    /// Second parts of the random streams' keys, the hit indices, as
+    /// `rw_hit.collision_index`; required.
     pub collision_index: *const u64,
-    /// Rebound velocities.
+    /// x components of the rebound velocities (m/s, global axes), as `rw_result.velocity[0]`;
+    /// required (may be `ux`, for an in-place update).
     pub out_ux: *mut f64,
+    /// y components of the rebound velocities (m/s, global axes); required (may be `uy`).
     pub out_uy: *mut f64,
+    /// z components of the rebound velocities (m/s, global axes); required (may be `uz`).
     pub out_uz: *mut f64,
-    /// Rebound angular velocities; may be NULL.
+    /// x components of the rebound angular velocities (rad/s, global axes), as
+    /// `rw_result.spin[0]`; may be NULL (not written).
     pub out_wx: *mut f64,
+    /// y components of the rebound angular velocities (rad/s, global axes); may be NULL
+    /// (not written).
     pub out_wy: *mut f64,
+    /// z components of the rebound angular velocities (rad/s, global axes); may be NULL
+    /// (not written).
     pub out_wz: *mut f64,
-    /// γ, γ* and candidate walls; may be NULL.
+    /// γ (rad), as `rw_result.gamma`; may be NULL (not written).
     pub out_gamma: *mut f64,
+    /// γ* (rad), as `rw_result.gamma_star`; may be NULL (not written).
     pub out_gamma_star: *mut f64,
+    /// Candidate walls drawn, as `rw_result.candidate_walls`; may be NULL (not written).
     pub out_candidate_walls: *mut u32,
     /// Status of each hit.
     pub out_status: *mut i32,

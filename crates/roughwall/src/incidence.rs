@@ -10,8 +10,13 @@ use rand_distr::{Distribution, Normal};
 /// study against the impact angle needs (a fixed impact energy at every angle).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpeedLaw {
+    /// Mean of the drawn speed (m/s): the horizontal speed `u_h` or `|U|`, as `reference` says.
     pub mean_m_s: f64,
+    /// Standard deviation of the drawn speed (m/s); 0 draws nothing and every particle gets
+    /// `mean_m_s`. Non-positive draws are redrawn ([`draw_speed`]).
     pub std_m_s: f64,
+    /// Whether the drawn speed is the horizontal speed `u_h` (the paper's convention, the
+    /// default) or the speed `|U|`.
     pub reference: SpeedReference,
 }
 
@@ -68,7 +73,9 @@ impl SpeedLaw {
 /// backspin, `ω_x` sidespin and `ω_y` spin about the wall normal.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SpinLaw {
+    /// Mean `(ω_x, ω_y, ω_z)` of the incident angular velocity (rad/s, wall frame).
     pub mean_rad_s: [f64; 3],
+    /// Standard deviations of `(ω_x, ω_y, ω_z)` (rad/s); a component with 0 is not drawn.
     pub std_rad_s: [f64; 3],
 }
 
@@ -97,7 +104,15 @@ impl SpinLaw {
 /// `-14.999999999999998`) and two conditions that differ in the case never merge.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct IncidentCondition {
+    /// `α⁻`, the incident angle to the mean wall (radians, `α⁻ = asin(v⁻/|U⁻|)` in
+    /// `[−π/2, 0)`, negative towards the wall; docs/physics.md §1). Must match the degrees of
+    /// [`alpha_in_deg`](Self::alpha_in_deg): build conditions with
+    /// [`from_degrees`](Self::from_degrees).
     pub alpha_in: f64,
+    /// `β⁻`, the incident angle in the wall plane from the principal roughness direction `x`
+    /// (radians; `β⁻ = atan2(−w⁻, u⁻)` in `[−π, π]`, docs/physics.md §1). Must match the
+    /// degrees of [`beta_in_deg`](Self::beta_in_deg): build conditions with
+    /// [`from_degrees`](Self::from_degrees).
     pub beta_in: f64,
     alpha_deg: f64,
     beta_deg: f64,
@@ -153,7 +168,7 @@ pub fn draw_speed<R: Rng + ?Sized>(law: &SpeedLaw, r: &mut R) -> f64 {
 }
 
 /// Incident velocity for angles `alpha < 0`, `beta` (rad) and horizontal speed
-/// `u_h` (physics notes §1: `U = |U| (cos α cos β, sin α, −cos α sin β)`,
+/// `u_h` (docs/physics.md §1: `U = |U| (cos α cos β, sin α, −cos α sin β)`,
 /// `|U| = u_h / cos α`). At normal incidence (`cos α ≤ 1e-9`) the drawn speed is
 /// taken as `|U|`.
 pub fn incident_velocity(alpha: f64, beta: f64, u_h: f64) -> Vector3<f64> {

@@ -55,6 +55,8 @@ pub fn stream(seed: u64, keys: &[u64]) -> Stream {
 pub struct StreamPrefix(u64);
 
 impl StreamPrefix {
+    /// Mixes `seed` and the key path `keys` once, as [`stream`] does: `StreamPrefix::new(seed,
+    /// &keys).stream(i)` is `stream(seed, &[keys…, i])`.
     pub fn new(seed: u64, keys: &[u64]) -> StreamPrefix {
         let mut h = splitmix64(seed);
         for &k in keys {

@@ -1,5 +1,5 @@
 //! The statistical wall: normal-angle deviations and their moments
-//! (Radenkovic & Simonin 2021, Eqs. 9, 15, 26, 30, 35; physics notes §2).
+//! (Radenkovic & Simonin 2021, Eqs. 9, 15, 26, 30, 35; docs/physics.md §2).
 
 use crate::error::{Error, Result};
 use crate::warning::Warning;
@@ -8,7 +8,13 @@ use crate::warning::Warning;
 /// roughness directions `x` and `z` (radians). `Δζ = 0` is 2-D roughness.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Deviations {
+    /// `Δξ`: standard deviation of `ξ' = ξ − π/2`, the fluctuation of the normal's angle `ξ` with
+    /// the principal roughness direction `x` (radians; Radenkovic & Simonin 2021, Eqs. 4, 15:
+    /// `Δξ = √2 h/c_Lx`).
     pub delta_xi: f64,
+    /// `Δζ`: standard deviation of `ζ' = ζ − π/2`, the fluctuation of the normal's angle `ζ` with
+    /// the principal roughness direction `z` (radians; Radenkovic & Simonin 2021, Eqs. 4, 15:
+    /// `Δζ = √2 h/c_Lz`). 0 is 2-D roughness.
     pub delta_zeta: f64,
 }
 
@@ -39,8 +45,14 @@ pub fn checked_deviation(key: &str, v: f64, warnings: &mut Vec<Warning>) -> Resu
 /// Second moments `(Var a, Var b, Cov(a, b))` of a pair of angles in a rotated frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Moments {
+    /// Variance of the first angle `a` (rad²): `Δξ*²` of Eq. (9) or `Δγ²` of Eq. (26),
+    /// `cos²β Δξ² + sin²β Δζ²` for the rotation by `β` about `y` (Radenkovic & Simonin 2021).
     pub var_a: f64,
+    /// Variance of the second angle `b` (rad²): `Δζ*²` of Eq. (9) or `Δγ*²` of Eq. (26),
+    /// `sin²β Δξ² + cos²β Δζ²` (Radenkovic & Simonin 2021).
     pub var_b: f64,
+    /// Covariance of `a` and `b` (rad²): `Cov(ξ*, ζ*)` of Eq. (9) or `Cov(γ, γ*)` of Eq. (26),
+    /// `sin β cos β (Δξ² − Δζ²)` (Radenkovic & Simonin 2021).
     pub cov: f64,
 }
 
@@ -84,7 +96,7 @@ pub fn rotated_moments(dev: &Deviations, beta: f64) -> Moments {
     }
 }
 
-/// Conditional mean and variance of `γ*` given `γ` (Radenkovic & Simonin 2021, Eq. 30; notes §2):
+/// Conditional mean and variance of `γ*` given `γ` (Radenkovic & Simonin 2021, Eq. 30; docs/physics.md §2):
 /// mean `Cov/Δγ² · γ`, variance `Δγ*² − Cov²/Δγ²`. With `Δγ = 0`, `γ` carries no
 /// information and the law of `γ*` is its marginal; the variance is clamped at 0 so that
 /// `ρ = ±1` gives an exactly deterministic `γ*`.
@@ -119,7 +131,7 @@ pub fn delta_gamma(dev: &Deviations, beta: f64) -> f64 {
 
 /// `Δγ(β)²` of Eq. (35) for the direction of a velocity with horizontal components
 /// `(u, w)`: `cos²β = u²/(u² + w²)` from the velocity, no trigonometry; a vertical velocity
-/// takes `β = 0` (physics notes §1).
+/// takes `β = 0` (docs/physics.md §1).
 #[inline]
 pub fn delta_gamma_sq_of_direction(u: f64, w: f64, dev: &Deviations) -> f64 {
     let h2 = u * u + w * w;

@@ -5,7 +5,7 @@
 //! `(seed, particle id, collision index)`, so that the same hit gives the same rebound on
 //! any number of MPI ranks, threads or domain decompositions.
 //!
-//! The physics is [`crate::stochastic::rebound`] (the procedure of Fig. 13, physics notes
+//! The physics is [`crate::stochastic::rebound`] (the procedure of Fig. 13, docs/physics.md
 //! §3) in the wall's own frame: `y` along the normal into the flow, `x` along the lay
 //! direction (the principal roughness direction of `Δξ`), `z = x × y`. The C library
 //! (`crate::ffi`) is a thin layer over [`WallModel::rebound`].
@@ -22,19 +22,23 @@ use nalgebra::Vector3;
 /// case file's `[collision]` section.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct WallParams {
-    /// `Δξ`, `Δζ` (degrees): deviations of the wall normal's angles along the lay
-    /// direction and across it (0 … 20; beyond 7.5 a warning).
+    /// `Δξ` (degrees): standard deviation of the wall normal's angle along the lay direction
+    /// (Radenkovic & Simonin 2021, Eq. 15; 0 … 20; beyond 7.5 a warning).
     pub delta_xi_deg: f64,
+    /// `Δζ` (degrees): standard deviation of the wall normal's angle across the lay direction
+    /// (Radenkovic & Simonin 2021, Eq. 15; 0 … 20, 0 for 2-D roughness; beyond 7.5 a warning).
     pub delta_zeta_deg: f64,
     /// `[collision]`: `model` (`"elastic"`, `"sommerfeld-huber"`), `preset`, parameters.
     pub collision: CollisionParams,
-    /// ψ of Eq. (34) (> 0; the paper's 2 when `None`).
+    /// ψ of Eq. (34) (in [0.01, 100],
+    /// [`PSI_RANGE`](crate::stochastic::variants::PSI_RANGE); the paper's 2 when `None`).
     pub psi: Option<f64>,
     /// Seed of every hit's random stream.
     pub seed: u64,
-    /// The rough-wall model (`[stochastic] model`; the paper's when `None`) and the isotropic
-    /// variants' roughness angle (degrees; `(Δξ + Δζ)/2` when `None`).
+    /// The rough-wall model by its case-file name (`[stochastic] model`; the paper's when
+    /// `None`).
     pub model: Option<String>,
+    /// The isotropic variants' roughness angle `Δγ` (degrees; `(Δξ + Δζ)/2` when `None`).
     pub delta_gamma_deg: Option<f64>,
     /// The escape table of `model = "calibrated"`, as the text `rebound calibrate` writes
     /// (`None`: the built-in table). The handle keeps its own copy: no file is read at run
@@ -45,9 +49,15 @@ pub struct WallParams {
 /// A wall: immutable once built, so one handle serves every thread.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WallModel {
+    /// Normal-angle deviations `(Δξ, Δζ)` of the wall (radians), checked.
     pub wall: Deviations,
+    /// The collision law applied in the frame of each virtual wall element.
     pub law: CollisionLaw,
+    /// `ψ` of the single-collision probability `tanh(ψ α⁺/Δγ(β⁺))` (Radenkovic & Simonin
+    /// 2021, Eq. 34), checked against [`PSI_RANGE`](crate::stochastic::variants::PSI_RANGE).
     pub psi: f64,
+    /// Seed of every hit's random stream, keyed further by the hit's particle id and
+    /// collision index.
     pub seed: u64,
     /// The rough-wall model drawing the virtual walls.
     pub variant: Variant,
@@ -201,8 +211,9 @@ impl WallModel {
 /// One particle–wall hit in the host's global axes, SI units.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Hit {
-    /// Particle velocity (m/s) and angular velocity (rad/s).
+    /// Particle velocity before the hit (m/s, global axes; not relative to the wall).
     pub velocity: [f64; 3],
+    /// Particle angular velocity before the hit (rad/s, global axes).
     pub spin: [f64; 3],
     /// Face normal, either orientation, any non-zero length: it is oriented against the
     /// particle's velocity relative to the wall.
@@ -214,8 +225,11 @@ pub struct Hit {
     pub wall_velocity: [f64; 3],
     /// Particle diameter (m, ≥ 0; enters the Sommerfeld–Huber spin terms).
     pub diameter_m: f64,
-    /// The key of the hit's random stream: the same key, the same rebound.
+    /// The key of the hit's random stream: the same key, the same rebound. This part is the
+    /// particle's identifier (unique, and the same on every rank).
     pub particle_id: u64,
+    /// The second part of the key: the index of this hit among the particle's wall hits, so
+    /// that two hits of one particle draw different walls.
     pub collision_index: u64,
 }
 
@@ -236,13 +250,20 @@ pub enum HitStatus {
 /// The rebound of a hit.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HitOutcome {
-    /// Rebound velocity (m/s, global axes, wall velocity added back) and spin (rad/s).
+    /// Rebound velocity (m/s, global axes, wall velocity added back); for an unchanged
+    /// particle its incident velocity, non-finite components as 0.
     pub velocity: [f64; 3],
+    /// Rebound angular velocity (rad/s, global axes); for an unchanged particle its incident
+    /// spin, non-finite components as 0.
     pub spin: [f64; 3],
+    /// Whether a rebound was computed, or why the particle was returned unchanged.
     pub status: HitStatus,
-    /// Inclinations `γ`, `γ*` (rad) of the virtual wall element that produced the rebound
-    /// (Eqs. 20–21; 0 for a smooth wall or an unchanged particle).
+    /// Inclination `γ` (rad) of the virtual wall element that produced the rebound, in the
+    /// incident plane (Radenkovic & Simonin 2021, Eq. 20; 0 for a smooth wall or an unchanged
+    /// particle).
     pub gamma: f64,
+    /// Inclination `γ*` (rad) of that element normal to the incident plane (Radenkovic &
+    /// Simonin 2021, Eq. 21; 0 for a smooth wall or an unchanged particle).
     pub gamma_star: f64,
     /// Candidate walls drawn (≥ 1 for a rebound; `stochastic::MAX_TRIES` when the guard
     /// was hit and the mean wall used).

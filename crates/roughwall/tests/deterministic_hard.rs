@@ -1,4 +1,4 @@
-//! Hard cases of physics notes §9 for the deterministic tracker, and thread-count
+//! Hard cases of docs/physics.md §9 for the deterministic tracker, and thread-count
 //! independence of its tallies.
 
 use crate::common::deterministic::*;

@@ -305,7 +305,7 @@ fn errors() {
     assert!(one_line(Model::HertzRigid.evaluate(&bad, &imp).unwrap_err()).contains("poisson"));
 }
 
-/// Extreme but valid speeds and sizes (physics notes §9): finite numbers out, never NaN; and
+/// Extreme but valid speeds and sizes (docs/physics.md §9): finite numbers out, never NaN; and
 /// speeds outside the physical range (0, or 1e-6 … 1e4 m/s) refused rather than computed.
 #[test]
 fn extreme_inputs_stay_finite() {

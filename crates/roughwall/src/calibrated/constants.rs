@@ -67,7 +67,7 @@ pub const Q_EDGES: [f64; 6] = [-2.75, -2.25, -1.75, -1.25, -0.5, 0.25];
 /// Half-width (in `s` cells, 0.08 each) of the window a sparse later-stage element cell may
 /// pool within its own stage. With [`SAME_STAGE_ROWS`]: between the
 /// windows measured at α⁻ = −32.5°, β⁻ = 90° on the Sec. 3 wall (±3 cells and ±3 rows: mean
-/// α⁺ −0.038° off; ±3 and ±6: +0.008°; ±5 and ±4: +0.014°; docs/models.md), not tuned
+/// α⁺ −0.038° off; ±3 and ±6: +0.008°; ±5 and ±4: +0.014°; docs/design-notes.md), not tuned
 /// further.
 pub const SAME_STAGE_S_CELLS: usize = 4;
 
@@ -98,8 +98,10 @@ pub const PROPOSAL_X_MAX: f64 = 5000.0;
 /// Nodes each side of 0 and step (in standard deviations) of the trapezoid rule behind
 /// [`super::slope_deviations`]. For an analytic integrand under a Gaussian weight the rule's error
 /// is of order `e^{−2π²/h²}` (1e−137 at `h` = 0.25), and ±7 standard deviations leave out
-/// `e^{−24.5}` of the weight: round-off is all that remains.
+/// `e^{−24.5}` of the weight: round-off is all that remains. This is the number of nodes each
+/// side of 0 (28 nodes of [`STEP`] reach ±7 standard deviations).
 pub const NODES: i32 = 28;
+/// The step `h` of that trapezoid rule, in standard deviations (see [`NODES`]).
 pub const STEP: f64 = 0.25;
 
 /// Fixed-point steps of [`super::slope_deviations`] at most: each shrinks the error by about

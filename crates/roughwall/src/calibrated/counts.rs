@@ -15,22 +15,46 @@ use nalgebra::Vector3;
 /// Sums are exact, so the counts do not depend on the order or the thread that added them.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EscapeCounts {
+    /// Collisions per cell `(stage, x_in bin, x_out bin)` of the escape table ([`CELLS`]
+    /// cells), `x_in` and `x_out` the reduced slopes of the incident and rebound velocities
+    /// ([`super::slope_space::reduced_slope`]). Counted for the histories that escaped (lost
+    /// ones are not), and only rebounds away from the mean wall (`α⁺ > 0`) with `x_out`
+    /// below [`X_OUT_MAX`].
     pub collisions: Vec<u64>,
+    /// Of the [`collisions`](Self::collisions) of each cell, those after which the particle
+    /// left the wall (the last collision of its history), same cells: `escaped / collisions`
+    /// is the cell's escape probability.
     pub escaped: Vec<u64>,
-    /// First wall elements by `(x_in, g)`: seen by the deterministic particles, and drawn
-    /// from the paper's shadow law (Eqs. 31–33) for the same incident directions.
+    /// First wall elements by `(x_in, g)`: seen by the deterministic particles, i.e. the
+    /// element each collision hits (the first one met along the particle's path), per cell
+    /// `(stage, x_in bin, s bin)` ([`ELEMENT_CELLS`] cells), with `g = γ/Δγ(β)` the element's
+    /// reduced inclination (`β` of the velocity before the collision) and `s = g − x_in`; an
+    /// `s` off the axis is not counted.
     pub element_deterministic: Vec<u64>,
+    /// First wall elements by `(x_in, g)`: drawn from the paper's shadow law (Radenkovic &
+    /// Simonin 2021, Eqs. 31–33, in slopes) for the same incident directions as
+    /// [`element_deterministic`](Self::element_deterministic), one draw per collision, in
+    /// the same cells; a draw with `s` off the axis is not counted.
     pub element_model: Vec<u64>,
-    /// Sums of `x_in` (clamped to the axis, in 10⁻⁶) per `(slice, x_in bin)` row: of the
-    /// collisions counted in the escape table, and of the shadow-law draws counted in the
-    /// element table. A row's mean `x_in` is where its values belong: the calibration's
-    /// directions fill a bin unevenly, and the laws change fast with `x_in` at grazing
-    /// incidence.
+    /// Sums of `x_in` (clamped to the axis, in [`X_SUM_UNIT`]s of 10⁻⁶) per
+    /// `(slice, x_in bin)` row ([`ROWS`] rows) of the collisions counted in the escape table
+    /// ([`collisions`](Self::collisions)). A row's mean `x_in` is where its values belong:
+    /// the calibration's directions fill a bin unevenly, and the laws change fast with
+    /// `x_in` at grazing incidence.
     pub escape_x_sum: Vec<i64>,
+    /// Sums of `x_in` (clamped to the axis, in 10⁻⁶) per `(slice, x_in bin)` row of the
+    /// shadow-law draws counted in the element table
+    /// ([`element_model`](Self::element_model)): where the element table's rows belong
+    /// along `x_in`, as for [`escape_x_sum`](Self::escape_x_sum).
     pub element_x_sum: Vec<i64>,
-    /// First collisions per first stage and the sum of their `Δγ(β)` (in
-    /// `DG_SUM_UNIT`s): where each first stage's values belong along `Δγ`.
+    /// First collisions per first stage ([`FIRST_STAGES`] stages, by `Δγ(β)` of the
+    /// incident plane); a plane without roughness (`Δγ = 0` or NaN) is not counted. With
+    /// [`first_dg_sum`](Self::first_dg_sum): where each first stage's values belong along
+    /// `Δγ`.
     pub first_count: Vec<u64>,
+    /// Sum of `Δγ(β)` of the first collisions counted in [`first_count`](Self::first_count),
+    /// per first stage, in [`DG_SUM_UNIT`]s of degrees (10⁻⁶°): the stage's mean `Δγ` is
+    /// `first_dg_sum · DG_SUM_UNIT / first_count` degrees.
     pub first_dg_sum: Vec<i64>,
     /// Successive elements' transverse residuals per later stage
     /// ([`super::transverse_memory`]).

@@ -78,7 +78,7 @@ pub(super) fn window_ratio_within(d: &[u64], m: &[u64], j: usize, max_k: usize) 
 /// `None` when none holds [`ELEMENT_MIN_COUNT`] draws. Pooling along `x_in` within the stage
 /// keeps the memory that pooling the stages loses: at α⁻ = −32.5°, β⁻ = 90° on the Sec. 3
 /// wall the deterministic next element has a mean `γ/Δγ` of 1.07, 1.50 and 2.00 after `q` in
-/// `[−3, −2.5)`, `[−2.5, −2)` and `[−2, −1.5)` (docs/models.md, "The valley's memory").
+/// `[−3, −2.5)`, `[−2.5, −2)` and `[−2, −1.5)`.
 pub(super) fn same_stage_ratio(deterministic: &[u64], model: &[u64], c: usize) -> Option<f64> {
     const K: usize = SAME_STAGE_S_CELLS;
     let plane = X_IN_BINS * G_BINS;
@@ -342,7 +342,7 @@ impl EscapeTable {
     /// weight between them; clamped at the ends). The particle's first collision then
     /// follows the mixture `(1 − t)·law(lo) + t·law(hi)` exactly, at the cost of one table
     /// read: on the deterministic surface the law at one reduced angle still depends on the
-    /// roughness angle itself (docs/models.md).
+    /// roughness angle itself (docs/design-notes.md).
     #[inline]
     pub fn first_stage(&self, delta_gamma: f64, u: f64) -> Stage {
         let d = delta_gamma.to_degrees();

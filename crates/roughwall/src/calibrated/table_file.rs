@@ -32,7 +32,8 @@ pub(super) const ROW_HEADER: &str =
 
 pub(super) const FIRST_HEADER: &str = "first_stage,collisions,delta_gamma_sum,delta_gamma_position";
 
-pub(super) const TRANSVERSE_HEADER: &str = "transverse_stage,pairs,z_prev_sq_sum,cross_sum,slope,fresh";
+pub(super) const TRANSVERSE_HEADER: &str =
+    "transverse_stage,pairs,z_prev_sq_sum,cross_sum,slope,fresh";
 
 impl EscapeTable {
     /// The table as a file: the magic line, `# source:`, then one row per cell.

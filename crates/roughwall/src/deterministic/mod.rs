@@ -1,5 +1,5 @@
 //! `rebound deterministic`: particle-centre bouncing on a generated anisotropic
-//! rough wall (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5 and 4; physics notes §5).
+//! rough wall (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5 and 4; docs/physics.md §5).
 pub mod scene;
 pub mod trace;
 
@@ -23,9 +23,12 @@ use rayon::prelude::*;
 /// Everything a deterministic run needs besides the surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModelSetup {
+    /// The collision law applied at every triangle hit, in that triangle's frame (ideal elastic or
+    /// Sommerfeld–Huber; Radenkovic & Simonin 2021, Eqs. 36–42, docs/physics.md §2).
     pub law: CollisionLaw,
     /// Sphere diameter (m), for the spin terms of Sommerfeld–Huber.
     pub diameter_m: f64,
+    /// The law of the incident speed (m/s): horizontal speed or `|U⁻|`, drawn per history.
     pub speed: SpeedLaw,
     /// The deviations the wall is meant to have: labels the outputs and gives `Δγ(β⁺)` of
     /// the Fig. 12 model curve.
@@ -141,7 +144,7 @@ pub(crate) fn history_observed(
 /// The tallied record of a followed history (`None` for a lost one).
 ///
 /// `xi_first`, `zeta_first` are `ξ − 90°`, `ζ − 90°` of the first normal seen,
-/// `γ`, `γ*` from Radenkovic & Simonin 2021, Eqs. (20)–(21) (notes §2) with the
+/// `γ`, `γ*` from Radenkovic & Simonin 2021, Eqs. (20)–(21) (docs/physics.md §2) with the
 /// incident `β⁻`; the deviations are wrapped into (−180°, 180°]. The first rebound's
 /// `α⁺` and the model `P(n = 1)` of Eq. (34) at its `(α⁺, β⁺)` feed Fig. 12.
 pub fn outcome(h: &History, beta_in: f64, wall: &Deviations, psi: f64) -> Option<Outcome> {
@@ -313,9 +316,16 @@ pub fn tally_spec(
 /// Counts of lost histories by reason.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LostCounts {
+    /// Histories that hit the cap on collisions per particle ([`LostReason::CollisionCap`]).
     pub collision_cap: u64,
+    /// Histories whose centre was found below the lowest node, a leak through the surface
+    /// ([`LostReason::BelowSurface`]).
     pub below_surface: u64,
+    /// Histories whose cell walk exceeded its step budget, a near-horizontal flight
+    /// ([`LostReason::StepBudget`]).
     pub step_budget: u64,
+    /// Histories for which the collision law returned a zero or non-finite velocity
+    /// ([`LostReason::Stopped`]).
     pub stopped: u64,
 }
 
@@ -330,6 +340,7 @@ impl LostCounts {
         }
     }
 
+    /// All lost histories, whatever the reason.
     pub fn total(&self) -> u64 {
         self.collision_cap + self.below_surface + self.step_budget + self.stopped
     }
@@ -363,12 +374,15 @@ impl LostCounts {
 /// at single histories. Runs of any size go through `tally::engine` instead.
 #[derive(Clone, Debug)]
 pub struct ConditionRun {
+    /// The incident condition `(α⁻, β⁻)` the histories were shot at.
     pub condition: IncidentCondition,
+    /// The run's parameters (collision law, diameter, speed law, wall, `ψ`, erosion, spin).
     pub setup: ModelSetup,
     /// Outcomes of the followed histories, in particle order.
     pub outcomes: Vec<Outcome>,
     /// The fate of every history, in particle order.
     fates: Vec<Fate>,
+    /// Lost histories by reason (they have no entry in [`outcomes`](Self::outcomes)).
     pub lost: LostCounts,
 }
 

@@ -315,9 +315,11 @@ pub struct BuiltSurface {
 
 /// A sphere's centre surface, made from the generated one (`surface::dilation`).
 pub struct SphereDilation {
+    /// Diameter `D` of the sphere (m) whose centre surface this is.
     pub diameter_m: f64,
     /// Fraction of nodes a resting sphere touches.
     pub contact_fraction: f64,
+    /// Wall-clock time to compute the dilation (s).
     pub dilation_s: f64,
 }
 

@@ -1,5 +1,5 @@
 //! Particle-centre tracking on the triangulated periodic height field
-//! (Radenkovic & Simonin 2021, Sec. 3.1; physics notes §5).
+//! (Radenkovic & Simonin 2021, Sec. 3.1; docs/physics.md §5).
 //!
 //! The centre flies in straight lines (no gravity, no drag). The ray is walked
 //! cell by cell under its horizontal projection (a 2-D DDA with periodic wrap);
@@ -52,6 +52,7 @@ pub enum Fate {
 /// The record of one particle history.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct History {
+    /// Whether the particle escaped above the highest asperity or was lost, and why.
     pub fate: Fate,
     /// Incident velocity.
     pub incident: Vector3<f64>,
@@ -74,11 +75,15 @@ pub struct HitInfo {
     pub point: Vector3<f64>,
     /// Unit normal of the triangle hit.
     pub normal: Vector3<f64>,
-    /// Velocity before and after the collision.
+    /// Velocity before the collision (m/s, surface frame).
     pub u_in: Vector3<f64>,
+    /// Velocity after the collision (m/s, surface frame), from the collision law in the frame
+    /// of [`normal`](Self::normal).
     pub u_out: Vector3<f64>,
-    /// Cell (wrapped) and triangle (0 or 1) hit.
+    /// Cell hit, `(ix, iz)` wrapped into the grid (`0..nx`, `0..nz`).
     pub cell: (usize, usize),
+    /// Triangle of the cell hit, 0 or 1, as numbered by
+    /// [`HeightField::cell_normals`](crate::surface::HeightField::cell_normals).
     pub triangle: u8,
 }
 
@@ -1128,7 +1133,7 @@ mod tests {
         }
     }
 
-    /// Mirror symmetry `β → −β` (physics notes §1): the mirror image `z → −z` of a
+    /// Mirror symmetry `β → −β` (docs/physics.md §1): the mirror image `z → −z` of a
     /// particle on the mirror image of a surface has the mirror image of its history. On a
     /// grid with even node counts the alternating triangulation is mapped onto itself; the
     /// uniform one is mapped onto the other diagonal, so there the histories differ.

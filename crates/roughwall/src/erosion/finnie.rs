@@ -1,6 +1,6 @@
 //! Finnie's ductile erosion (I. Finnie, *Erosion of surfaces by solid particles*, Wear 3 (1960)
 //! 87–103), in the form OpenFOAM's `particleErosion` cloud function implements (Qian et al.
-//! 2022 couple the same law; physics notes §8 give its angle function for K = 6):
+//! 2022 couple the same law; docs/physics.md §8 give its angle function for K = 6):
 //!
 //! `V = m|U|²/(p ψ K) · (sin 2α − (6/K) sin²α)` for `tan α < K/6`, and
 //! `V = m|U|²/(p ψ K) · K cos²α / 6` otherwise,

@@ -15,8 +15,11 @@ pub mod oka;
 /// An erosion law with its parameters (SI units).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ErosionModel {
+    /// Finnie (1960), ductile micro-cutting, in OpenFOAM's form ([`finnie`]).
     Finnie(finnie::Finnie),
+    /// DNV RP-O501 (2015), Sec. 3, as implemented in Equinor's `pysand` ([`dnv`]).
     Dnv(dnv::Dnv),
+    /// Oka, Okamura & Yoshida (2005), with the particle-size effect of Part 2 ([`oka`]).
     Oka(oka::Oka),
 }
 
@@ -64,7 +67,10 @@ impl ErosionModel {
 /// particle).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ErosionSetup {
+    /// The erosion law and its parameters.
     pub model: ErosionModel,
+    /// Mass of one particle (kg): the volume removed per particle is this times the volume
+    /// per unit particle mass the law gives.
     pub particle_mass_kg: f64,
     /// Particle diameter (m), for laws with a size effect (Oka).
     pub diameter_m: f64,
@@ -89,8 +95,12 @@ impl ErosionSetup {
 /// An impact angle `α` to the local wall plane, in `[0, π/2]`, with its sine and cosine.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImpactAngle {
+    /// The impact angle `α` between the velocity and the local wall plane (radians, in
+    /// `[0, π/2]`; 0 for no impact).
     pub alpha: f64,
+    /// `sin α`, in `[0, 1]`.
     pub sin: f64,
+    /// `cos α`, in `[0, 1]` (exactly 0 at normal incidence).
     pub cos: f64,
 }
 

@@ -18,10 +18,17 @@ pub struct Oka {
     pub hardness_gpa: f64,
     /// `K`: particle-property factor (mm³/kg; 65 for SiO2).
     pub k: f64,
+    /// `k1`: exponent of the hardness `Hv` in `E90` (Part 2, Eq. 1; −0.12 for SiO2).
     pub k1: f64,
+    /// `k2`: exponent of the speed ratio `U/U'` in `E90` (Part 2, Eq. 1; `2.3 Hv^0.038` for
+    /// SiO2).
     pub k2: f64,
+    /// `k3`: exponent of the diameter ratio `D/D'` in `E90` (Part 2, Eq. 1; 0.19 for SiO2).
     pub k3: f64,
+    /// `n1`: exponent of `sin α` in `g(α)` (Part 1, Eq. 2; `0.71 Hv^0.14` for SiO2).
     pub n1: f64,
+    /// `n2`: exponent of `1 + Hv (1 − sin α)` in `g(α)` (Part 1, Eq. 2; `2.4 Hv^−0.94` for
+    /// SiO2).
     pub n2: f64,
     /// Reference impact speed `U'` (m/s).
     pub reference_speed_m_s: f64,
@@ -32,14 +39,24 @@ pub struct Oka {
 /// Part 2's SiO2 defaults for the constants not given, from the hardness `Hv` (GPa).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct OkaInput {
+    /// Vickers hardness of the wall `Hv` (GPa); required: the SiO2 defaults of `k2`, `n1`
+    /// and `n2` follow from it.
     pub hardness_gpa: f64,
+    /// `K` (mm³/kg); `None`: 65.
     pub k: Option<f64>,
+    /// `k1`, exponent of `Hv` in `E90`; `None`: −0.12.
     pub k1: Option<f64>,
+    /// `k2`, exponent of `U/U'` in `E90`; `None`: `2.3 Hv^0.038`.
     pub k2: Option<f64>,
+    /// `k3`, exponent of `D/D'` in `E90`; `None`: 0.19.
     pub k3: Option<f64>,
+    /// `n1`, exponent of `sin α` in `g(α)`; `None`: `0.71 Hv^0.14`.
     pub n1: Option<f64>,
+    /// `n2`, exponent of `1 + Hv (1 − sin α)` in `g(α)`; `None`: `2.4 Hv^−0.94`.
     pub n2: Option<f64>,
+    /// Reference impact speed `U'` (m/s); `None`: 104 m/s.
     pub reference_speed_m_s: Option<f64>,
+    /// Reference particle diameter `D'` (m); `None`: 326 µm.
     pub reference_diameter_m: Option<f64>,
 }
 

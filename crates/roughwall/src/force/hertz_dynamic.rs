@@ -1,4 +1,4 @@
-//! `hertz-dynamic`: the contact of `hertz-rigid` integrated in time (physics notes §7).
+//! `hertz-dynamic`: the contact of `hertz-rigid` integrated in time (docs/physics.md §7).
 //!
 //! A rigid prolate spheroid, free to translate and to rotate in the β plane, meets the rigid wall
 //! with normal speed U_N and no spin. The contact is frictionless, so the horizontal velocity is
@@ -175,7 +175,7 @@ impl Body {
     }
 }
 
-/// Integrates one impact (Hu et al. 2021, Eq. 1 for spheres; notes §7 for spheroids).
+/// Integrates one impact (Hu et al. 2021, Eq. 1 for spheres; docs/physics.md §7 for spheroids).
 /// `p` and `imp` must be valid (see [`Particle::validate`], [`Impact::validate`]).
 pub fn simulate(p: &Particle, imp: &Impact, opts: &Options) -> Outcome {
     if imp.u_n <= 0.0 {
@@ -265,7 +265,7 @@ pub fn simulate(p: &Particle, imp: &Impact, opts: &Options) -> Outcome {
 }
 
 /// `hertz-dynamic` for one impact with the given step control: the elliptical Hertz contact of
-/// physics notes §7 integrated in time with the spheroid free to translate and rotate; for a
+/// docs/physics.md §7 integrated in time with the spheroid free to translate and rotate; for a
 /// sphere this is Hu et al. Eq. (1).
 pub fn evaluate(p: &Particle, imp: &Impact, opts: &Options) -> ForceResult {
     let out = simulate(p, imp, opts);

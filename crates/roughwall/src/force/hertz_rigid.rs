@@ -1,5 +1,5 @@
 //! `hertz-rigid`: a rigid prolate spheroid in elliptical Hertz contact with a rigid wall,
-//! effective mass from its lever arm, energy balance (physics notes §7). No fitted constants.
+//! effective mass from its lever arm, energy balance (docs/physics.md §7). No fitted constants.
 //!
 //! 1. Lowest point, lever arm `d`, principal radii `R'`, `R''` ([`Spheroid::lowest_point`]).
 //! 2. Effective mass at the contact, `1/m_eff = 1/m + d²/I` (frictionless contact: the normal
@@ -111,7 +111,7 @@ pub fn stiffness_exact(e_star: f64, r1: f64, r2: f64) -> f64 {
     2.0 * PI / 3.0 * e_star / (a_curv * m / (k - e)).sqrt() / (k * k.sqrt())
 }
 
-/// Effective mass ratio `m_eff/m = 1 / (1 + d²/(I/m))` at the lowest point (physics notes §7:
+/// Effective mass ratio `m_eff/m = 1 / (1 + d²/(I/m))` at the lowest point (docs/physics.md §7:
 /// `1/m_eff = 1/m + d²/I`, impulse at lever arm `d` on a body free to rotate).
 pub fn mass_ratio(s: &Spheroid, lever_arm: f64) -> f64 {
     1.0 / (1.0 + lever_arm * lever_arm / s.inertia_per_mass())
@@ -158,7 +158,7 @@ pub fn xi_and_mass_ratio(lambda: f64, beta: f64) -> (f64, f64) {
 }
 
 /// Stiffness `k` of `F = k δ^{3/2}` (Johnson 1985, §4.2, elliptical contact) and effective mass
-/// `m_eff` (physics notes §7) of the contact at inclination β (SI).
+/// `m_eff` (docs/physics.md §7) of the contact at inclination β (SI).
 pub fn contact_parameters(p: &Particle, lambda: f64, beta: f64) -> (f64, f64) {
     let s = Spheroid::from_volume_diameter(p.diameter, lambda);
     let lp = s.lowest_point(beta);

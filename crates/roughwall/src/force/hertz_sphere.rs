@@ -3,7 +3,7 @@ use super::{hertz_impact, ForceResult, Particle};
 use crate::error::{Error, Result};
 
 /// The coefficient of Hu et al. 2021, Eq. (3), in closed form:
-/// `(4/3)·2^(−1/5)·(15π/96)^(3/5) = 0.757381…`, printed as 0.7574 in the paper (physics notes §7).
+/// `(4/3)·2^(−1/5)·(15π/96)^(3/5) = 0.757381…`, printed as 0.7574 in the paper (docs/physics.md §7).
 /// The test `sphere_constant_follows_from_eqs_1_2` derives it from Eqs. (1)–(2).
 pub fn xi_sphere() -> f64 {
     // Written as a constant so the closed-form models stay cheap; checked against the formula in tests.
@@ -64,7 +64,7 @@ mod tests {
         let f = 4.0 * e_star * r.sqrt() / 3.0 * h.powf(1.5);
         assert_eq!(format!("{f:.4}"), "0.7574");
         assert!((f - XI_SPHERE).abs() < 1e-15, "{f}");
-        // The closed form of physics notes §7.
+        // The closed form of docs/physics.md §7.
         let closed = 4.0 / 3.0 * 2f64.powf(-0.2) * (15.0 * PI / 96.0).powf(0.6);
         assert!((closed - XI_SPHERE).abs() < 1e-15);
         // Eq. (2) is the energy balance ½ m U² = ∫ F dy = (2/5)(4/3) E* √R h^{5/2}.

@@ -19,7 +19,7 @@ pub struct Preset {
 
 /// Hu et al. 2021, Table 1. Note: Table 1 gives E = 63 GPa for glass (type I) while every figure
 /// caption (Figs. 3, 6–9, 11, 12) says 64 GPa; the `hu-fig*` cases override `youngs_pa = 64e9`
-/// (physics notes §7).
+/// (docs/physics.md §7).
 pub const PRESETS: [Preset; 4] = [
     Preset {
         name: "e-glass-sphere",

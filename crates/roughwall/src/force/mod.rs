@@ -1,5 +1,5 @@
 //! Peak elastic force of a sphere or prolate spheroid hitting a rigid plane wall
-//! (Hu et al. 2021, Eqs. 1–8; physics notes §7).
+//! (Hu et al. 2021, Eqs. 1–8; docs/physics.md §7).
 //!
 //! Four models share one interface, [`Model::evaluate`]:
 //! - [`Model::HertzSphere`]: Hu et al. 2021, Eq. (3) (λ = 1 only);
@@ -211,8 +211,11 @@ pub const DIAMETER_RANGE_M: (f64, f64) = (1e-9, 1.0);
 /// Aspect ratios λ: spheres to fibres of 1000:1.
 pub const MAX_LAMBDA: f64 = 1000.0;
 /// Normal impact speeds (m/s): 0, or elastic impacts from a micrometre per second (slower,
-/// adhesion decides) to far below hypervelocity.
+/// adhesion decides) to far below hypervelocity. This is the smallest positive `U_N` accepted
+/// (m/s); `U_N = 0` is accepted too.
 pub const MIN_U_N_M_S: f64 = 1e-6;
+/// The largest normal impact speed `U_N` accepted (m/s), 10 km/s: far below hypervelocity
+/// (see [`MIN_U_N_M_S`] for the range).
 pub const MAX_U_N_M_S: f64 = 1e4;
 
 /// What a model returns for one impact.
@@ -233,7 +236,7 @@ pub enum Model {
     HertzSphere,
     /// Hu et al. 2021, Eqs. (7)–(8).
     Hu2021,
-    /// Rigid spheroid, elliptical Hertz contact, effective mass, energy balance (notes §7).
+    /// Rigid spheroid, elliptical Hertz contact, effective mass, energy balance (docs/physics.md §7).
     HertzRigid,
     /// The same contact integrated in time, spheroid free to translate and rotate.
     HertzDynamic,

@@ -1,4 +1,4 @@
-//! Geometry of a prolate spheroid resting on a plane (physics notes §7).
+//! Geometry of a prolate spheroid resting on a plane (docs/physics.md §7).
 //!
 //! Hu et al. 2021 define λ = b/a (b semi-major, a semi-minor axis, Sec. 1) and use the
 //! *volume-equivalent* diameter D_p (Sec. 2, Table 1: "Volume equivalent diameter"). Hence

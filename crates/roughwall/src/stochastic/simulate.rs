@@ -17,10 +17,19 @@ use nalgebra::Vector3;
 /// The model's parameters for a run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ModelSetup {
+    /// Normal-angle deviations `(Δξ, Δζ)` of the statistical wall (radians).
     pub wall: Deviations,
+    /// The collision law applied in the frame of each sampled normal (ideal elastic or
+    /// Sommerfeld–Huber; Radenkovic & Simonin 2021, Eqs. 36–42).
     pub law: CollisionLaw,
+    /// `ψ` of the single-collision probability `P(n = 1 | α⁺) = tanh(ψ α⁺/Δγ(β⁺))` (Radenkovic &
+    /// Simonin 2021, Eq. 34; 2 there and by default, 1.5 in Konan et al. 2009). Read by the
+    /// paper's model; a value that is not positive and finite makes every variant collide with
+    /// the mean wall.
     pub psi: f64,
+    /// Particle diameter `D` (m), the lever arm `R = D/2` of the spin in the collision law.
     pub diameter_m: f64,
+    /// The law of the incident speed (m/s).
     pub speed: SpeedLaw,
     /// The erosion law, when the case tallies erosion.
     pub erosion: Option<ErosionSetup>,

@@ -134,6 +134,7 @@ impl VariantKind {
 /// calibrated one).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Variant {
+    /// Which rough-wall model ([`VariantKind`]).
     pub kind: VariantKind,
     /// `Δγ` (rad) of the isotropic variants; `None`: `(Δξ + Δζ)/2` of the wall.
     pub delta_gamma: Option<f64>,

@@ -1,7 +1,7 @@
 //! What every stochastic wall model shares: the virtual wall element a particle meets
 //! ([`SeenWall`]), the outcome of one rebound ([`Rebound`]), the rebounds that need no random
 //! draw, the guard on the number of candidate walls, and the loop of the models that follow a
-//! particle from hit to hit until it leaves the wall ([`Hits`]).
+//! particle from hit to hit until it leaves the wall (`Hits`).
 
 use crate::angles::incident_angles;
 use crate::angles::{gamma_from_normal, normal_from_xi_zeta, xi_zeta_of_normal, xi_zeta_rotated};

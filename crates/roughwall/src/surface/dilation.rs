@@ -56,7 +56,11 @@ pub const BYTES_PER_NODE: u64 = 32;
 /// A dilated surface and the fraction of the original nodes a resting sphere touches.
 #[derive(Clone, Debug)]
 pub struct Dilated {
+    /// The centre surface `c(x, z)` on the original grid (heights in m): a resting sphere's
+    /// centre is `R` above it (the surface itself for a point).
     pub field: HeightField,
+    /// Fraction of the original nodes that some resting sphere touches, in `(0, 1]` (1 for a
+    /// point).
     pub contact_fraction: f64,
 }
 
@@ -305,9 +309,13 @@ pub fn dilate_sphere_exact(f: &HeightField, radius_m: f64) -> Dilated {
 /// resting sphere touches.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EffectiveRoughness {
+    /// Sphere diameter `D` (m); 0 is the surface itself.
     pub diameter_m: f64,
+    /// Measured `Δξ` of the centre surface (rad): RMS of the triangle normals' `ξ − 90°`.
     pub delta_xi: f64,
+    /// Measured `Δζ` of the centre surface (rad): RMS of the triangle normals' `ζ − 90°`.
     pub delta_zeta: f64,
+    /// Fraction of the surface's nodes that some resting sphere touches, in `(0, 1]`.
     pub contact_fraction: f64,
 }
 

@@ -9,16 +9,22 @@
 /// `nx·dx` and `nz·dz`. 2-D roughness (constant along `z`) may use `nz = 1`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct HeightField {
+    /// Nodes along `x`.
     pub nx: usize,
+    /// Nodes along `z` (1 for a 2-D surface constant along `z`).
     pub nz: usize,
+    /// Grid spacing along `x` (m).
     pub dx: f64,
+    /// Grid spacing along `z` (m).
     pub dz: f64,
+    /// Heights `y` of the nodes (m), row-major with `x` fastest: `heights[iz * nx + ix]`;
+    /// `nx · nz` of them.
     pub heights: Vec<f64>,
     /// Which diagonal splits each cell into its two triangles.
     pub triangulation: Triangulation,
 }
 
-/// How every grid cell is split into two triangles (physics notes §5: "two triangles a
+/// How every grid cell is split into two triangles (docs/physics.md §5: "two triangles a
 /// cell"; the notes and the papers do not say along which diagonal).
 ///
 /// `Alternating` (the default) splits the cells with `ix + iz` even along the diagonal from
@@ -124,7 +130,7 @@ impl HeightField {
     /// `(ix, iz+1)` is `u = s_z`: triangle 0 is `(10, 00, 01)` (`u ≥ s_z`), triangle 1
     /// `(10, 01, 11)`. The `x`-slopes of the two triangles are the same edges either way;
     /// the `z`-slopes trade places. For `y = f(x, z)` the normal is `(−∂f/∂x, 1, −∂f/∂z)`
-    /// (physics notes §1).
+    /// (docs/physics.md §1).
     #[inline]
     pub fn cell_normals(&self, ix: usize, iz: usize) -> [[f64; 3]; 2] {
         let h00 = self.at(ix, iz);

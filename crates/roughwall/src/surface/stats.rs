@@ -1,6 +1,6 @@
 //! Statistics of a triangulated surface: rms height, rms slopes and the normal-vector
 //! angles of Radenkovic & Simonin 2021, Table 1 (Eqs. 7–8, 14), in the principal frame
-//! and in frames rotated by `β*` about `y` (physics notes §1).
+//! and in frames rotated by `β*` about `y` (docs/physics.md §1).
 //!
 //! The paper samples the normal along lines in the `x*` direction with steps of about
 //! 0.1 µm. Every such point lies in one triangle of the shared triangulation
@@ -83,7 +83,9 @@ impl Histogram {
 /// on large grids they take every k-th grid row so as to see about 8 million triangles.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HistogramSpec {
+    /// Half-width of the histogram range `[−half_range, half_range)` (rad).
     pub half_range: f64,
+    /// Number of bins across that range.
     pub bins: usize,
 }
 
@@ -102,8 +104,9 @@ pub struct RotatedStats {
     pub rho_xi_eta: f64,
     /// Correlation coefficient of `η*` and `ζ*`.
     pub rho_eta_zeta: f64,
-    /// Histograms of `ξ* − 90°` and `ζ* − 90°`, when requested.
+    /// Histogram of `ξ* − 90°` (rad), when requested.
     pub hist_xi: Option<Histogram>,
+    /// Histogram of `ζ* − 90°` (rad), when requested.
     pub hist_zeta: Option<Histogram>,
 }
 
@@ -315,7 +318,7 @@ fn normals_block(
 }
 
 /// `LANES` triangles in the frame rotated by `β*` (`c = cos β*`, `s = sin β*`):
-/// `a = ξ* − 90° = −asin(n·x*)`, `b = ζ* − 90° = −asin(n·z*)` (Eq. 7, notes §1), and
+/// `a = ξ* − 90° = −asin(n·x*)`, `b = ζ* − 90° = −asin(n·z*)` (Eq. 7, docs/physics.md §1), and
 /// their sums in the order of [`Chunk::rot`] added to `acc`.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
@@ -460,7 +463,7 @@ impl Rotation {
 }
 
 /// `(a, b)` of the quarter turn `q` from the principal-frame `(a0, b0)`:
-/// `x* = cos β* i − sin β* k`, `z* = sin β* i + cos β* k` (notes §1).
+/// `x* = cos β* i − sin β* k`, `z* = sin β* i + cos β* k` (docs/physics.md §1).
 #[inline(always)]
 fn quarter(q: u8, a0: f64, b0: f64) -> (f64, f64) {
     match q {
@@ -640,7 +643,7 @@ pub fn asin_fast(x: f64) -> f64 {
 ///
 /// Angles follow Eq. (7) with the unit normal `n` of each triangle:
 /// `ξ* = acos(n·x*)`, `η* = acos(n·j)`, `ζ* = acos(n·z*)`, where
-/// `x* = cos β* i − sin β* k`, `z* = sin β* i + cos β* k` (physics notes §1). They are
+/// `x* = cos β* i − sin β* k`, `z* = sin β* i + cos β* k` (docs/physics.md §1). They are
 /// evaluated as `ξ* − 90° = −asin(n·x*)`, which keeps full precision near 90°.
 pub fn surface_stats(
     f: &HeightField,

@@ -83,9 +83,15 @@ pub const LOST_REASONS: usize = 4;
 /// What one condition tallies and how.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TallySpec {
+    /// The incident condition `(α⁻, β⁻)` tallied.
     pub condition: IncidentCondition,
+    /// Normal-angle deviations `(Δξ, Δζ)` of the wall (radians): they label the outputs and
+    /// place the two `γ` slices of Fig. 11 (`Δγ` of Radenkovic & Simonin 2021, Eq. 26, at `β⁻`).
     pub deviations: Deviations,
+    /// Bin width (degrees) of the angle histograms, the local impact-angle histograms and
+    /// the Fig. 12 curves; the `γ*` histograms of the Fig. 11 slices use their own width.
     pub bin_width_deg: f64,
+    /// Which model fills the tally: decides the model-specific columns and counters.
     pub model: ModelKind,
     /// The particle mass (kg) when the case tallies erosion; `None` without `[erosion]`.
     pub erosion_particle_mass_kg: Option<f64>,
@@ -172,16 +178,27 @@ pub struct Counters {
     pub particles: u64,
     /// Lost histories by reason (deterministic).
     pub lost: [u64; LOST_REASONS],
-    /// Σ collisions, Σ collisions², histories with one collision, most collisions (deterministic).
+    /// Σ collisions over the followed histories (deterministic; lost ones not counted).
     pub collisions: u64,
+    /// Σ collisions² over the followed histories (deterministic): with
+    /// [`collisions`](Self::collisions), the exact spread of the collision count.
     pub collisions_sq: u128,
+    /// Followed histories with exactly one collision (deterministic): the numerator of the
+    /// single-collision fraction `p_single`.
     pub single: u64,
+    /// Most collisions of one followed history (deterministic; 0 when none was followed).
     pub max_collisions: u32,
-    /// Σ candidate walls drawn, Σ candidate rebounds and Σ of their squares, rebounds that
-    /// hit the guard (stochastic).
+    /// Σ candidate walls drawn over the rebounds (stochastic: steps 2–6 of the procedure,
+    /// docs/physics.md §3, including walls the particle cannot reach).
     pub tries: u64,
+    /// Σ candidate rebounds computed over the rebounds (stochastic: candidates with
+    /// `U⁻·n < 0`, accepted or rejected): `p_single` is rebounds over this sum.
     pub candidates: u64,
+    /// Σ candidate rebounds² over the rebounds (stochastic): with
+    /// [`candidates`](Self::candidates), the standard error of `p_single`.
     pub candidates_sq: u128,
+    /// Rebounds that hit the guard on candidate walls and took the mean wall instead
+    /// (stochastic; [`MAX_TRIES`](crate::stochastic::virtual_wall::MAX_TRIES)).
     pub capped: u64,
 }
 
@@ -210,7 +227,10 @@ impl Counters {
 /// One block's moments, kept so that blocks can be folded in order later.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BlockRecord {
+    /// The block's index within its condition (particles `block · BLOCK_SIZE` onwards).
     pub block: u64,
+    /// The block's moments of each quantity in record order (angles in degrees), [`NM`] of
+    /// them.
     pub moments: [Moments; NM],
 }
 
@@ -345,10 +365,12 @@ impl BlockTally {
 /// The running tally of one condition.
 #[derive(Clone, Debug)]
 pub struct ConditionTally {
+    /// What this condition tallies and how.
     pub spec: TallySpec,
     hists: Vec<Histogram>,
     p_out: Option<RatioCurve>,
     p_first: Option<RatioCurve>,
+    /// Integer counters summed over the blocks absorbed and tallies added.
     pub counters: Counters,
     records: Vec<BlockRecord>,
     /// Moments of the records absorbed so far, folded in absorption order.
@@ -572,19 +594,36 @@ impl ConditionTally {
     }
 }
 
+/// The state of a [`ConditionTally`], borrowed to write a partial tally file
+/// ([`ConditionTally::parts`]).
 pub struct TallyParts<'a> {
+    /// The histograms (degrees): the angle quantities in record order, then, with
+    /// `[erosion]`, the local impact angles that count and those of rejected candidates.
     pub hists: &'a [Histogram],
+    /// Fig. 12 curve by the final `α⁺` (deterministic; `None` for the stochastic model).
     pub p_out: Option<&'a RatioCurve>,
+    /// Fig. 12 curve by the first rebound's `α⁺`, with the model `P(n = 1)` (deterministic;
+    /// `None` for the stochastic model).
     pub p_first: Option<&'a RatioCurve>,
+    /// The integer counters.
     pub counters: &'a Counters,
+    /// The block records absorbed, each block's moments.
     pub records: &'a [BlockRecord],
 }
 
+/// The state of a [`ConditionTally`], borrowed mutably to restore a partial tally file into
+/// an empty tally ([`ConditionTally::parts_mut`]; call [`ConditionTally::refold`] after).
 pub struct TallyPartsMut<'a> {
+    /// The histograms, laid out as in [`TallyParts::hists`].
     pub hists: &'a mut Vec<Histogram>,
+    /// Fig. 12 curve by the final `α⁺` (deterministic; `None` for the stochastic model).
     pub p_out: Option<&'a mut RatioCurve>,
+    /// Fig. 12 curve by the first rebound's `α⁺` (deterministic; `None` for the stochastic
+    /// model).
     pub p_first: Option<&'a mut RatioCurve>,
+    /// The integer counters.
     pub counters: &'a mut Counters,
+    /// The block records.
     pub records: &'a mut Vec<BlockRecord>,
 }
 

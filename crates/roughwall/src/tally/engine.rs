@@ -37,7 +37,9 @@ pub const BLOCK_SIZE: u64 = 1 << 16;
 /// Shard `index` (1-based) of `count`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Shard {
+    /// This shard's number `K`, 1-based (`1 ≤ K ≤ N`).
     pub index: u32,
+    /// The number of shards `N` the case is split into.
     pub count: u32,
 }
 
@@ -65,10 +67,15 @@ impl std::fmt::Display for Shard {
 /// error (degrees) and an optional shard.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Plan {
+    /// The conditions to run, in case order (condition `k` is `specs[k]`).
     pub specs: Vec<TallySpec>,
     /// Particles per condition (the cap when a target is set).
     pub count: u64,
+    /// Target standard error (degrees) of both the mean `α⁺` and the mean `β⁺ − β⁻`: a
+    /// condition stops after the first absorbed block at which both are at or below it;
+    /// `None` runs every condition to `count`.
     pub target_se_deg: Option<f64>,
+    /// The shard `K/N` this run computes (`None`: every block, the whole case).
     pub shard: Option<Shard>,
 }
 

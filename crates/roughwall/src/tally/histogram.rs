@@ -12,9 +12,16 @@ pub const MAX_BINS: usize = 100_000;
 /// (`None` where it does not apply, e.g. a model curve).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bin {
+    /// Lower edge of the bin (degrees).
     pub lo: f64,
+    /// Upper edge of the bin (degrees).
     pub hi: f64,
+    /// The bin's value: a probability density (1/degree) for a PDF or a model density
+    /// (`gamma_model`), a fraction for a [`RatioCurve`], a mean probability for the model
+    /// `P(n = 1)` curve.
     pub value: f64,
+    /// Standard error of `value` in its unit (`None` where it does not apply, e.g. a model
+    /// curve).
     pub se: Option<f64>,
 }
 
@@ -138,8 +145,13 @@ const FIXED_ONE: f64 = 9_007_199_254_740_992.0; // 2^53
 pub struct RatioCurve {
     lo: f64,
     width: f64,
+    /// Particles counted per bin.
     pub total: Vec<u64>,
+    /// Of those, the hits per bin (e.g. single-collision histories).
     pub hits: Vec<u64>,
+    /// Sum per bin of the model probability (clamped into `[0, 1]`) in fixed point, units
+    /// of `2⁻⁵³` so that the sum is exact in any order; particles pushed without a model
+    /// value add 0.
     pub model: Vec<u128>,
     /// Values below this (degrees) are not counted (e.g. rebounds into the wall).
     min: f64,

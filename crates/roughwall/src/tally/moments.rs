@@ -12,8 +12,12 @@
 /// Count, mean and sum of squared deviations from the mean (`M2`) of a set of values.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Moments {
+    /// Number of values.
     pub n: u64,
+    /// Mean of the values (0 when `n = 0`), in their unit (degrees for the tallied angles).
     pub mean: f64,
+    /// Sum of squared deviations from the mean, `Σ (x − mean)²` (`M2` of Chan et al. 1979),
+    /// in the square of the values' unit: the sample variance is `m2/(n − 1)`.
     pub m2: f64,
 }
 

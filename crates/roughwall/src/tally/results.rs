@@ -9,9 +9,13 @@ use crate::wall::Deviations;
 /// Mean, standard deviation and standard error of the mean of `n` values.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Estimate {
+    /// Number of values.
     pub n: u64,
+    /// Mean of the values, in their unit (degrees for angles).
     pub mean: f64,
+    /// Sample standard deviation (divisor `n − 1`; 0 for a single value), same unit.
     pub std: f64,
+    /// Standard error of the mean, `std/√n` (independent values), same unit.
     pub se: f64,
 }
 
@@ -70,7 +74,9 @@ impl Estimate {
 /// A probability and its standard error.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Proportion {
+    /// The probability, in `[0, 1]`.
     pub value: f64,
+    /// Its standard error.
     pub se: f64,
 }
 
@@ -100,7 +106,9 @@ impl Proportion {
 /// One line of `summary.csv`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Summary {
+    /// The incident condition `(α⁻, β⁻)`.
     pub condition: IncidentCondition,
+    /// Normal-angle deviations `(Δξ, Δζ)` of the wall (radians).
     pub deviations: Deviations,
     /// Histories followed (deterministic: lost ones excluded; stochastic: rebounds).
     pub particles: u64,
@@ -110,14 +118,17 @@ pub struct Summary {
     pub dbeta: Option<Estimate>,
     /// `β⁺ − β⁻` after the first collision (degrees; deterministic).
     pub dbeta_first: Option<Estimate>,
-    /// `γ`, `γ*` of the first normal seen (degrees).
+    /// `γ` of the first normal seen (degrees; Radenkovic & Simonin 2021, Eq. 20).
     pub gamma: Option<Estimate>,
+    /// `γ*` of the first normal seen (degrees; Radenkovic & Simonin 2021, Eq. 21).
     pub gamma_star: Option<Estimate>,
     /// Deterministic: fraction of single-collision histories; stochastic: accepted
     /// fraction of candidate rebounds.
     pub p_single: Option<Proportion>,
     /// Collisions per history (deterministic).
     pub collisions: Option<Estimate>,
+    /// Most collisions of one followed history (deterministic; `None` when no history was
+    /// followed, and for the stochastic model).
     pub max_collisions: Option<u32>,
     /// `|U⁺|/|U⁻|`.
     pub speed_ratio: Option<Estimate>,
@@ -145,11 +156,15 @@ pub struct ErosionSummary {
 /// A PDF or per-bin curve of one quantity.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pdf {
+    /// The quantity whose PDF or curve this is.
     pub quantity: Quantity,
+    /// The bins in increasing angle, edges in degrees (densities in 1/degree; fractions or
+    /// mean model probabilities for the per-bin curves of Fig. 12).
     pub bins: Vec<Bin>,
 }
 
 impl Pdf {
+    /// The PDF or curve of `quantity` with these bins.
     pub fn new(quantity: Quantity, bins: Vec<Bin>) -> Pdf {
         Pdf { quantity, bins }
     }
@@ -158,6 +173,7 @@ impl Pdf {
 /// Everything one incident condition produced.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConditionResult {
+    /// The condition's line of `summary.csv`.
     pub summary: Summary,
     /// PDFs and curves, in `pdfs.csv` order.
     pub pdfs: Vec<Pdf>,

@@ -86,7 +86,7 @@ pub fn gaussian_surface(
     }
 }
 
-/// `(α, β)` of a velocity (physics notes §1), radians.
+/// `(α, β)` of a velocity (docs/physics.md §1), radians.
 pub fn angles(u: &nalgebra::Vector3<f64>) -> (f64, f64) {
     let s = u.norm();
     let a = (u.y / s).clamp(-1.0, 1.0).asin();

@@ -7,51 +7,9 @@
 //!   angles whose PDFs match `rebound stochastic` on the same scene within KS 0.01.
 //! * A single call starts no thread (`tests/c/threads.c`).
 
+use crate::common::c_examples::{glass_steel, key_hit, run_program as run};
 use crate::common::*;
-use roughwall::collision::CollisionParams;
-use roughwall::tally::distance::{distances, BinnedPdf};
 use roughwall::tally::histogram::Histogram;
-use roughwall::wall_model::{Hit, WallModel, WallParams};
-use std::path::Path;
-use std::process::Command;
-
-fn glass_steel() -> WallModel {
-    WallModel::new(&WallParams {
-        delta_xi_deg: 3.8,
-        delta_zeta_deg: 7.5,
-        collision: CollisionParams {
-            model: Some("sommerfeld-huber".into()),
-            preset: Some("glass-steel".into()),
-            ..Default::default()
-        },
-        psi: Some(2.0),
-        seed: 2021,
-        ..Default::default()
-    })
-    .unwrap()
-    .0
-}
-
-/// The hits of the examples' `keys` mode (the same in C and Fortran).
-fn key_hit(pid: u64) -> Hit {
-    let uh = 4.0 + 0.25 * pid as f64;
-    Hit {
-        velocity: [uh * 0.5, -0.35 * uh, -uh * 0.866],
-        spin: [0.0, 0.0, 100.0 * pid as f64],
-        normal: [0.0, 1.0, 0.0],
-        lay: [1.0, 0.0, 0.0],
-        wall_velocity: [0.0; 3],
-        diameter_m: 500e-6,
-        particle_id: pid,
-        collision_index: pid % 3,
-    }
-}
-
-fn run(cmd: &Path, args: &[&str]) -> String {
-    let o = Command::new(cmd).args(args).output().unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8(o.stdout).unwrap()
-}
 
 #[test]
 fn the_c_example_gives_the_rust_rebounds_and_the_stochastic_statistics() {
@@ -139,8 +97,7 @@ preset = "glass-steel"
         for v in values.iter().skip(column).step_by(2) {
             h.push(*v);
         }
-        let c = BinnedPdf::new(h.density().iter().map(|b| (b.lo, b.hi, b.value)).collect());
-        let (ks, _) = distances(&c, &BinnedPdf::new(pdf_bins(&out, q)));
+        let ks = ks_against_run(&h, &out, q);
         eprintln!("C example against rebound stochastic: KS {q} = {ks:.4}");
         assert!(ks <= 0.01, "{q}: KS {ks}");
     }

@@ -5,6 +5,8 @@
 //! check their columns ([`headers`]), and build C programs against the C library.
 #![allow(dead_code)]
 
+pub mod c_examples;
+
 use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -445,4 +447,16 @@ pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> roughwall::wall::Deviations {
         delta_xi: dxi_deg.to_radians(),
         delta_zeta: dzeta_deg.to_radians(),
     }
+}
+
+/// The Kolmogorov–Smirnov distance between the histogram `h` and the PDF of `quantity` in
+/// the `pdfs.csv` of the run in `dir` (its first condition).
+pub fn ks_against_run(
+    h: &roughwall::tally::histogram::Histogram,
+    dir: &Path,
+    quantity: &str,
+) -> f64 {
+    use roughwall::tally::distance::{distances, BinnedPdf};
+    let mine = BinnedPdf::new(h.density().iter().map(|b| (b.lo, b.hi, b.value)).collect());
+    distances(&mine, &BinnedPdf::new(pdf_bins(dir, quantity))).0
 }

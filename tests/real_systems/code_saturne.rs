@@ -10,7 +10,6 @@
 //!   stochastic` on the same scene within KS 0.03.
 
 use crate::common::*;
-use roughwall::tally::distance::{distances, BinnedPdf};
 use roughwall::tally::histogram::Histogram;
 use std::process::Command;
 
@@ -133,8 +132,7 @@ preset = "glass-steel"
     ])
     .ok();
     for (q, h) in [("alpha_out", &hist_a), ("dbeta", &hist_d)] {
-        let cs = BinnedPdf::new(h.density().iter().map(|b| (b.lo, b.hi, b.value)).collect());
-        let (ks, _) = distances(&cs, &BinnedPdf::new(pdf_bins(&sm_dir, q)));
+        let ks = ks_against_run(h, &sm_dir, q);
         eprintln!("code_saturne ({n} hits) against rebound stochastic: KS {q} = {ks:.4}");
         assert!(ks <= 0.03, "{q}: KS {ks}");
     }

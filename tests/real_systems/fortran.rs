@@ -2,50 +2,9 @@
 //! `libroughwall.so`: for the same key, the Fortran call returns exactly the Rust call, and a
 //! zero normal is a status (issue 9).
 
+use crate::common::c_examples::{glass_steel, key_hit, run_program as run};
 use crate::common::*;
-use roughwall::collision::CollisionParams;
-use roughwall::wall_model::{Hit, HitStatus, WallModel, WallParams};
-use std::path::Path;
-use std::process::Command;
-
-/// The wall of the examples' `keys` mode: Sec. 4 glass on steel.
-fn glass_steel() -> WallModel {
-    WallModel::new(&WallParams {
-        delta_xi_deg: 3.8,
-        delta_zeta_deg: 7.5,
-        collision: CollisionParams {
-            model: Some("sommerfeld-huber".into()),
-            preset: Some("glass-steel".into()),
-            ..Default::default()
-        },
-        psi: Some(2.0),
-        seed: 2021,
-        ..Default::default()
-    })
-    .unwrap()
-    .0
-}
-
-/// The hits of the examples' `keys` mode (the same in C and Fortran).
-fn key_hit(pid: u64) -> Hit {
-    let uh = 4.0 + 0.25 * pid as f64;
-    Hit {
-        velocity: [uh * 0.5, -0.35 * uh, -uh * 0.866],
-        spin: [0.0, 0.0, 100.0 * pid as f64],
-        normal: [0.0, 1.0, 0.0],
-        lay: [1.0, 0.0, 0.0],
-        wall_velocity: [0.0; 3],
-        diameter_m: 500e-6,
-        particle_id: pid,
-        collision_index: pid % 3,
-    }
-}
-
-fn run(cmd: &Path, args: &[&str]) -> String {
-    let o = Command::new(cmd).args(args).output().unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    String::from_utf8(o.stdout).unwrap()
-}
+use roughwall::wall_model::HitStatus;
 
 #[test]
 fn the_fortran_example_gives_the_rust_rebounds() {

@@ -1,6 +1,7 @@
 ! roughwall from Fortran: an iso_c_binding interface to the C library (include/roughwall.h).
 ! The derived types mirror the C structs field for field; the wall handle is a C pointer.
-! Build with the library: gfortran -c roughwall.f90 (then link -lroughwall).
+! Build with the library (docs/c-library.md): gfortran -c roughwall.f90, then
+!   gfortran app.f90 roughwall.o -L target/release -lroughwall -Wl,-rpath,$PWD/target/release
 module roughwall
   use, intrinsic :: iso_c_binding
   implicit none

@@ -1,8 +1,8 @@
-//! The Fortran example (`examples/fortran/`) built with gfortran against `include/` and
-//! `libroughwall.so`: for the same key, the Fortran call returns exactly the Rust call, and a
-//! zero normal is a status (issue 9).
+//! The Fortran example (`examples/fortran/`) built with gfortran against `libroughwall.so`
+//! by the build line `docs/c-library.md` gives: for the same key, the Fortran call returns
+//! exactly the Rust call, and a zero normal is a status (issue 9).
 
-use crate::common::c_examples::{glass_steel, key_hit, run_program as run};
+use crate::common::c_examples::{glass_steel, key_hit};
 use crate::common::*;
 use roughwall::wall_model::HitStatus;
 
@@ -11,18 +11,42 @@ fn the_fortran_example_gives_the_rust_rebounds() {
     crate::require(&["gfortran"]);
     let tmp = Dir::new();
     let root = repo_root();
-    let exe = tmp.path().join("hits");
-    let module_dir = tmp.path().to_str().unwrap().to_string();
-    build_with_roughwall(
-        "gfortran",
-        &[
-            &root.join("examples/fortran/roughwall.f90"),
-            &root.join("examples/fortran/hits.f90"),
-        ],
-        &exe,
-        &["-J", &module_dir],
+    // The documented build line, run as written in a folder laid out like the repository
+    // (`target/release` the library this test was built with), and the program run without
+    // LD_LIBRARY_PATH: it must find the library by itself.
+    let doc = std::fs::read_to_string(root.join("docs/c-library.md")).unwrap();
+    let line = doc
+        .lines()
+        .find_map(|l| l.strip_prefix("Build: `gfortran"))
+        .and_then(|l| l.split('`').next())
+        .map(|rest| format!("gfortran{rest}"))
+        .expect("docs/c-library.md has a `Build: gfortran …` line");
+    for f in ["roughwall.f90", "hits.f90"] {
+        let to = if f == "hits.f90" { "app.f90" } else { f };
+        std::fs::copy(root.join("examples/fortran").join(f), tmp.join(to)).unwrap();
+    }
+    std::fs::create_dir_all(tmp.join("target")).unwrap();
+    std::os::unix::fs::symlink(c_library_dir(), tmp.join("target/release")).unwrap();
+    let built = std::process::Command::new("sh")
+        .args(["-c", &line])
+        .current_dir(tmp.path())
+        .output()
+        .unwrap();
+    assert!(
+        built.status.success(),
+        "{line}: {}",
+        String::from_utf8_lossy(&built.stderr)
     );
-    let text = run(&exe, &[]);
+    let out = std::process::Command::new(tmp.join("a.out"))
+        .env_remove("LD_LIBRARY_PATH")
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{line}, then ./a.out: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
     let model = glass_steel();
     let mut lines = text.lines();
     assert_eq!(

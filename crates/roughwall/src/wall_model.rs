@@ -139,11 +139,29 @@ impl WallModel {
         let Some(frame) = Frame::new(hit) else {
             return unchanged(HitStatus::InvalidInput);
         };
-        let u_rel = Vector3::from(hit.velocity) - Vector3::from(hit.wall_velocity);
+        // The rebound is homogeneous of degree one in (velocity, spin): a velocity whose
+        // squares would over- or underflow is brought near 1 by a power of two (exact) and the
+        // rebound scaled back. Within range nothing is scaled: the same bits as ever.
+        let u_host = Vector3::from(hit.velocity) - Vector3::from(hit.wall_velocity);
+        let k = taming_exponent(&u_host);
+        let (u_rel, spin_in) = (
+            scale_pow2(u_host, -k),
+            scale_pow2(Vector3::from(hit.spin), -k),
+        );
         let u = frame.to_local(&u_rel);
         if u.y == 0.0 {
             return unchanged(HitStatus::NotApproaching);
         }
+        // The elastic law leaves the spin alone: it is returned as given, not rotated into
+        // the wall's frame and back (which would change its last bits).
+        let elastic = matches!(self.law, CollisionLaw::Elastic);
+        let spin_back = |w: Vector3<f64>| {
+            if elastic {
+                Vector3::from(hit.spin)
+            } else {
+                scale_pow2(w, k)
+            }
+        };
         if self.wall.delta_xi == 0.0 && self.wall.delta_zeta == 0.0 {
             // A smooth wall: the collision with the mean wall, as `stochastic::rebound` gives
             // it (no random draw, one candidate wall), but computed in the host's axes rather
@@ -152,12 +170,10 @@ impl WallModel {
             // same order, of a CFD code's own specular rebound (code_saturne's
             // CS_LAGR_REBOUND), so a smooth elastic roughwall wall gives its host's
             // trajectories bit for bit (examples/code_saturne, check (a)).
-            let (v, w) = self
-                .law
-                .collide(u_rel, Vector3::from(hit.spin), frame.ey, hit.diameter_m);
-            return Self::outcome(hit, v, w, 0.0, 0.0, 1);
+            let (v, w) = self.law.collide(u_rel, spin_in, frame.ey, hit.diameter_m);
+            return Self::outcome(hit, scale_pow2(v, k), spin_back(w), 0.0, 0.0, 1);
         }
-        let w = frame.to_local(&Vector3::from(hit.spin));
+        let w = frame.to_local(&spin_in);
         let mut r = rng::stream(
             self.seed,
             &[rng::domain::WALL_HITS, hit.particle_id, hit.collision_index],
@@ -174,8 +190,8 @@ impl WallModel {
         );
         Self::outcome(
             hit,
-            frame.to_global(&out.velocity),
-            frame.to_global(&out.spin),
+            scale_pow2(frame.to_global(&out.velocity), k),
+            spin_back(frame.to_global(&out.spin)),
             out.gamma,
             out.gamma_star,
             out.tries,
@@ -286,6 +302,42 @@ impl HitOutcome {
     }
 }
 
+/// Components within `[2^-SAFE_EXPONENT, 2^SAFE_EXPONENT]` have squares and sums of three
+/// squares that neither overflow nor underflow (`f64` spans about `2^±1022`).
+const SAFE_EXPONENT: i32 = 400;
+
+/// The exponent `k` of a power of two that brings the largest component of `v` into
+/// `[1, 2)` when it lies outside `[2^-SAFE_EXPONENT, 2^SAFE_EXPONENT]`, else 0 (also for a
+/// zero or non-finite vector).
+fn taming_exponent(v: &Vector3<f64>) -> i32 {
+    let m = v.amax();
+    if m == 0.0 || !m.is_finite() {
+        return 0;
+    }
+    // The binary exponent of m, from its bits (a subnormal counts as 2^-1023 or below).
+    let e = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let e = if e == -1023 {
+        -1023 - (m.to_bits() & ((1u64 << 52) - 1)).leading_zeros() as i32 + 12
+    } else {
+        e
+    };
+    if e.abs() > SAFE_EXPONENT {
+        e
+    } else {
+        0
+    }
+}
+
+/// `v · 2^k`, exactly (two steps, so that `2^k` itself stays representable).
+fn scale_pow2(v: Vector3<f64>, k: i32) -> Vector3<f64> {
+    if k == 0 {
+        return v;
+    }
+    let half = k / 2;
+    let step = |e: i32| f64::from_bits(((e + 1023) as u64) << 52);
+    v * step(half) * step(k - half)
+}
+
 /// The wall's frame at a hit: `e_y` the normal into the flow, `e_x` the lay direction in the
 /// wall plane, `e_z = e_x × e_y` (right-handed, as the paper's `x, y, z`).
 struct Frame {
@@ -295,9 +347,12 @@ struct Frame {
 }
 
 impl Frame {
-    /// `None` for a zero normal or a lay direction (nearly) parallel to it.
+    /// `None` for a zero normal or a lay direction (nearly) parallel to it. Both may have
+    /// any finite non-zero length: one whose squares would over- or underflow is first
+    /// scaled by a power of two (exact, and the same unit vector as without the scaling).
     fn new(hit: &Hit) -> Option<Frame> {
         let n = Vector3::from(hit.normal);
+        let n = scale_pow2(n, -taming_exponent(&n));
         let n_len = n.norm();
         if n_len == 0.0 || !n_len.is_finite() {
             return None;
@@ -315,6 +370,7 @@ impl Frame {
             ey = -ey; // into the flow: the particle arrives against it
         }
         let lay = Vector3::from(hit.lay);
+        let lay = scale_pow2(lay, -taming_exponent(&lay));
         let lay_len = lay.norm();
         let t = lay - lay.dot(&ey) * ey;
         let t_len = t.norm();
@@ -667,5 +723,132 @@ mod tests {
         .unwrap();
         assert_eq!(warnings.len(), 1);
         assert!(warnings[0].contains("wall.delta_zeta_deg"));
+    }
+
+    /// An elastic rough wall (the paper's model and `calibrated`).
+    fn elastic_rough(model: Option<&str>) -> WallModel {
+        WallModel::new(&WallParams {
+            delta_xi_deg: 2.5,
+            delta_zeta_deg: 7.5,
+            model: model.map(String::from),
+            seed: 11,
+            ..Default::default()
+        })
+        .unwrap()
+        .0
+    }
+
+    fn close(a: [f64; 3], b: [f64; 3], rel: f64) -> bool {
+        let scale = b.iter().map(|x| x.abs()).fold(0.0, f64::max);
+        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= rel * scale)
+    }
+
+    /// Normals, lay directions and velocities of any finite length, 1e-300 to 1e300: the
+    /// same rebound as at unit length (the velocity's scaled with it), speed conserved by
+    /// the elastic law, never the guard.
+    #[test]
+    fn any_vector_length_gives_the_unit_rebound() {
+        for model in [None, Some("calibrated"), Some("sommerfeld-huber-1999")] {
+            let wall = elastic_rough(model);
+            for pid in 0..20u64 {
+                let base = Hit {
+                    velocity: [0.8, -0.35, -0.4],
+                    spin: [0.0; 3],
+                    normal: [0.0, 1.0, 0.0],
+                    lay: [1.0, 0.0, 0.0],
+                    wall_velocity: [0.0; 3],
+                    diameter_m: 1e-4,
+                    particle_id: pid,
+                    collision_index: 0,
+                };
+                let want = wall.rebound(&base);
+                assert_eq!(want.status, HitStatus::Rebound);
+                for e in [-300, -200, -170, -160, -100, -10, 0, 10, 100, 154, 200, 300] {
+                    let f = 10f64.powi(e);
+                    let scaled = |v: [f64; 3]| v.map(|x| x * f);
+                    for (what, hit) in [
+                        (
+                            "normal",
+                            Hit {
+                                normal: scaled(base.normal),
+                                ..base
+                            },
+                        ),
+                        (
+                            "lay",
+                            Hit {
+                                lay: scaled(base.lay),
+                                ..base
+                            },
+                        ),
+                        (
+                            "velocity",
+                            Hit {
+                                velocity: scaled(base.velocity),
+                                ..base
+                            },
+                        ),
+                    ] {
+                        let got = wall.rebound(&hit);
+                        assert_eq!(got.status, HitStatus::Rebound, "{model:?} {what} 1e{e}");
+                        assert!(got.candidate_walls < crate::stochastic::MAX_TRIES);
+                        let expect = if what == "velocity" {
+                            want.velocity.map(|x| x * f)
+                        } else {
+                            want.velocity
+                        };
+                        assert!(
+                            close(got.velocity, expect, 1e-12),
+                            "{model:?} {what} 1e{e}: {:?} against {:?}",
+                            got.velocity,
+                            expect
+                        );
+                        let speed = |v: [f64; 3]| {
+                            let m = v.iter().map(|x| x.abs()).fold(0.0, f64::max);
+                            m * v.iter().map(|x| (x / m).powi(2)).sum::<f64>().sqrt()
+                        };
+                        let (s_in, s_out) = (speed(hit.velocity), speed(got.velocity));
+                        assert!(
+                            (s_out / s_in - 1.0).abs() < 1e-12,
+                            "{model:?} {what} 1e{e}: |U| {s_in} → {s_out}"
+                        );
+                    }
+                }
+                // A power-of-two length within range is the same rebound bit for bit.
+                let doubled = Hit {
+                    normal: base.normal.map(|x| x * 2.0),
+                    ..base
+                };
+                assert_eq!(wall.rebound(&doubled).velocity, want.velocity);
+            }
+        }
+    }
+
+    /// The elastic law returns the spin as given, on a smooth and on a rough wall.
+    #[test]
+    fn the_elastic_law_returns_the_spin_bit_unchanged() {
+        let smooth = WallModel::new(&WallParams::default()).unwrap().0;
+        for wall in [
+            smooth,
+            elastic_rough(None),
+            elastic_rough(Some("calibrated")),
+        ] {
+            for pid in 0..1000u64 {
+                let spin = [0.1 * pid as f64, -3.7e2, 1.0 / (pid as f64 + 3.0)];
+                let hit = Hit {
+                    velocity: [1.0, -0.3, 0.45],
+                    spin,
+                    normal: [0.3, 1.0, -0.2],
+                    lay: [1.0, 0.2, 0.1],
+                    wall_velocity: [0.0; 3],
+                    diameter_m: 1e-4,
+                    particle_id: pid,
+                    collision_index: 1,
+                };
+                let out = wall.rebound(&hit);
+                assert_eq!(out.status, HitStatus::Rebound);
+                assert_eq!(out.spin, spin);
+            }
+        }
     }
 }

@@ -121,6 +121,39 @@ fn a_sphere_needs_its_scale_and_size_and_must_fit() {
     }
 }
 
+/// A height file read with `--surface` gives the roughness's absolute scale: a sphere needs
+/// nothing more (before, the run asked for `--surface` while one was given).
+#[test]
+fn a_height_file_gives_a_sphere_its_scale() {
+    let tmp = Dir::new();
+    let surface = write_case(
+        tmp.path(),
+        "s.toml",
+        "name = \"s\"\nseed = 3\n[surface]\nlength_um = 256.0\nnodes = 256\nrms_height_um = 0.37\ncorr_length_x_um = 12.0\ncorr_length_z_um = 6.0\n",
+    );
+    let heights = tmp.join("h.rbhf");
+    rebound(&[
+        "surface",
+        "--case",
+        surface.to_str().unwrap(),
+        "--out",
+        tmp.join("s").to_str().unwrap(),
+        "--heights",
+        heights.to_str().unwrap(),
+    ])
+    .ok();
+    let body = case("20", "contact = \"sphere\"").replace("rms_height_um = 0.37", "");
+    let c = write_case(tmp.path(), "sphere.toml", &body);
+    let out = run_case(
+        "deterministic",
+        &c,
+        &tmp.join("d"),
+        &["--surface", heights.to_str().unwrap()],
+    );
+    let manifest = std::fs::read_to_string(out.join("run.toml")).unwrap();
+    assert!(manifest.contains("[sphere_contact]"), "{manifest}");
+}
+
 #[test]
 fn the_sphere_run_does_not_repeat_the_scene_warnings() {
     // `effective_for_diameter` resolves the case's deterministic sphere run too; the

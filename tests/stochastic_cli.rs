@@ -247,3 +247,88 @@ fn roughness_beyond_the_low_roughness_range_warns_but_runs() {
     );
     assert!(out.join("summary.csv").is_file());
 }
+
+/// A target standard error is one behaviour whether the case or the command line sets it:
+/// without a count both run past the 10 000 particles of a run without a target (here
+/// two blocks of 65 536), and a target the count stops short of is a warning naming it.
+#[test]
+fn a_target_runs_the_same_from_the_case_and_the_command_line() {
+    let tmp = Dir::new();
+    let scene = BASE
+        .replace("alpha_deg = [-0.01, -15.0, -90.0]", "alpha_deg = [-15.0]")
+        .replace("beta_deg = [0.0, 60.0]", "beta_deg = [60.0]")
+        .replace("count = 3000\n", "");
+    let in_case = case_in(
+        &tmp,
+        "in_case.toml",
+        &scene.replace(
+            "diameter_um = 500.0",
+            "diameter_um = 500.0\ntarget_se_deg = 0.015",
+        ),
+    );
+    let plain = case_in(&tmp, "plain.toml", &scene);
+    let run = |case: &str, out: &str, extra: &[&str]| {
+        let out = tmp.join(out);
+        let mut args = vec!["stochastic", "--case", case, "--out", out.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let r = rebound(&args).ok();
+        (
+            std::fs::read(out.join("summary.csv")).unwrap(),
+            r.stderr,
+            out,
+        )
+    };
+    let (a, a_err, a_dir) = run(&in_case, "a", &[]);
+    let (b, b_err, _) = run(&plain, "b", &["--target-se", "0.015"]);
+    assert_eq!(a, b, "the case's target and --target-se differ");
+    assert!(!a_err.contains("not reached") && !b_err.contains("not reached"));
+    let s = Csv::read(&a_dir.join("summary.csv"));
+    let n = s.num(&s.rows[0], "particles");
+    assert!(n > 10_000.0, "stopped at {n}");
+    assert!(s.num(&s.rows[0], "se_mean_alpha_out_deg") <= 0.015);
+    // A count that stops the run first: a warning, not silence.
+    let (_, err, _) = run(
+        &plain,
+        "c",
+        &["--target-se", "0.0001", "--particles", "20000"],
+    );
+    assert!(
+        err.contains("the target standard error 0.0001° was not reached in 20000 particles"),
+        "{err}"
+    );
+}
+
+/// `[wall]` lengths have the ranges of a `[surface]`'s (10⁻⁶ … 10⁹ µm), for every command
+/// that reads the wall.
+#[test]
+fn wall_lengths_below_their_minimum_are_refused() {
+    let wall = "[wall]\ndelta_xi_deg = 3.8\ndelta_zeta_deg = 7.5";
+    for (body, key) in [
+        (
+            "[wall]\nrms_height_um = 1e-300\ncorr_length_x_um = 12.0\ncorr_length_z_um = 4.0",
+            "wall.rms_height_um",
+        ),
+        (
+            "[wall]\nrms_height_um = 5e-324\ncorr_length_x_um = 12.0\ncorr_length_z_um = 4.0",
+            "wall.rms_height_um",
+        ),
+        (
+            "[wall]\nrms_height_um = 0.37\ncorr_length_x_um = 1e-9\ncorr_length_z_um = 4.0",
+            "wall.corr_length_x_um",
+        ),
+        (
+            "[wall]\ndelta_xi_deg = 3.8\ndelta_zeta_deg = 7.5\nrms_height_um = 1e-7",
+            "wall.rms_height_um",
+        ),
+    ] {
+        let case = BASE.replace(wall, body);
+        assert_ne!(case, BASE);
+        bad(&case, key, &[]);
+        let tmp = Dir::new();
+        let file = case_in(&tmp, "c.toml", &case);
+        for cmd in ["deterministic", "calibrate"] {
+            let out = tmp.join(cmd);
+            rebound(&[cmd, "--case", &file, "--out", out.to_str().unwrap()]).refused(key);
+        }
+    }
+}

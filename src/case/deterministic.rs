@@ -56,8 +56,9 @@ pub fn triangulation(case: &Case) -> Result<Triangulation> {
         .ok_or_else(|| Error::Internal(format!("triangulation `{}`", names[k])))
 }
 
-/// Validates `[deterministic]` (keys named in one-line errors).
-pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
+/// Validates `[deterministic]` (keys named in one-line errors); `height_file`: the run reads
+/// its surface from a file (`--surface`), which gives the roughness's absolute scale.
+pub fn deterministic_options(case: &Case, height_file: bool) -> Result<DeterministicOptions> {
     let d = case.deterministic.clone().unwrap_or_default();
     let mc = d.max_collisions.unwrap_or(DEFAULT_MAX_COLLISIONS as i64);
     let mc = check_int_range(
@@ -110,7 +111,7 @@ pub fn deterministic_options(case: &Case) -> Result<DeterministicOptions> {
     let h_um = if sphere && d.rms_height_um.is_none() {
         match wall_h {
             Some(h) => h,
-            None if case.surface.is_some() => h_um,
+            None if case.surface.is_some() || height_file => h_um,
             None => {
                 return Err(Error::Input(
                     "[deterministic] contact = \"sphere\" needs the roughness's absolute scale: set `deterministic.rms_height_um` (or `wall.rms_height_um` with correlation lengths, or give a [surface] or --surface)".into(),
@@ -182,7 +183,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
     let mut scene = case.scene(&mut warnings)?;
     scene.set_count(o.particles)?;
     scene.set_target_se(o.target_se)?;
-    let options = deterministic_options(case)?;
+    let options = deterministic_options(case, surface_file.is_some())?;
     // Flatter than this, every history would exhaust the tracker's step budget.
     if let Some(c) = scene
         .conditions
@@ -274,7 +275,7 @@ mod tests {
             let case = shipped(name);
             assert_eq!(case.name, name);
             let scene = case.scene(&mut Vec::new()).unwrap();
-            let opt = deterministic_options(&case).unwrap();
+            let opt = deterministic_options(&case, false).unwrap();
             let plan = surface_plan(&scene, &opt.scene).unwrap();
             assert!(matches!(plan, SurfacePlan::Auto(_)));
             if name.starts_with("glass") {

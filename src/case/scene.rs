@@ -16,6 +16,9 @@ pub struct Scene {
     pub speed: SpeedLaw,
     /// Histories per condition (the cap when a target standard error is set).
     pub count: usize,
+    /// Whether `count` was given (`[particles] count` or `--particles`): without it, a target
+    /// standard error runs up to [`MAX_PARTICLES`], one without a target 10 000.
+    pub count_given: bool,
     /// Target standard error (degrees) of mean `α⁺` and mean `β⁺ − β⁻`.
     pub target_se_deg: Option<f64>,
     pub diameter_m: f64,
@@ -51,14 +54,19 @@ impl Scene {
                 ));
             }
             self.count = n as usize;
+            self.count_given = true;
         }
         Ok(())
     }
 
-    /// Applies `--target-se DEG` (overrides `[particles] target_se_deg`).
+    /// Applies `--target-se DEG` (overrides `[particles] target_se_deg`). Like a target in the
+    /// case, it runs up to [`MAX_PARTICLES`] per condition unless a count was given.
     pub fn set_target_se(&mut self, target: Option<f64>) -> Result<()> {
         if let Some(t) = target {
             self.target_se_deg = Some(target_se("--target-se", t)?);
+            if !self.count_given {
+                self.count = MAX_PARTICLES as usize;
+            }
         }
         Ok(())
     }
@@ -251,6 +259,7 @@ impl Case {
                 ..SpeedLaw::horizontal(mean, std)
             },
             count: count as usize,
+            count_given: p.count.is_some(),
             target_se_deg: target,
             diameter_m: diameter_um * 1e-6,
             law: self.collision_law()?,

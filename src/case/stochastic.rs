@@ -29,7 +29,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
     let mut warnings = Vec::new();
     let mut scene = case.scene(&mut warnings)?;
     // One case file drives both models: its `[deterministic]` section is checked here too.
-    super::deterministic::deterministic_options(case)?;
+    super::deterministic::deterministic_options(case, false)?;
     scene.set_count(o.particles)?;
     scene.set_target_se(o.target_se)?;
     let mut notes = toml::Table::new();

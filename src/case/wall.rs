@@ -2,7 +2,7 @@
 //! and the statistics `rebound surface` measures on it (Radenkovic & Simonin 2021, Sec. 2).
 
 use super::schema::*;
-use roughwall::check::{check_int_range, check_length, positive, within, Warning};
+use roughwall::check::{check_int_range, check_length, within, Warning};
 use roughwall::error::{Error, Result};
 pub use roughwall::surface::SurfaceSpec;
 use roughwall::wall::{self, Deviations};
@@ -61,6 +61,20 @@ impl Case {
         if has_grid {
             return Ok(WallSource::Surface(self.surface_spec(warnings)?));
         }
+        // The lengths a [wall] gives have the ranges of a [surface]'s.
+        let (lo, hi) = LENGTH_RANGE_UM;
+        let lengths = "a surface's lengths, a picometre to a kilometre";
+        let length = |key: &str, v: f64| within(&format!("{sec}.{key}"), v, lo, hi, " µm", lengths);
+        if let Some(h) = w.rms_height_um.filter(|&h| h != 0.0) {
+            within(
+                &format!("{sec}.rms_height_um"),
+                h,
+                lo,
+                hi,
+                " µm (or 0)",
+                lengths,
+            )?;
+        }
         let mut axis = |c: Option<f64>, d: Option<f64>, cname: &str, dname: &str| -> Result<f64> {
             match (c, d) {
                 (Some(_), Some(_)) => Err(Error::Input(format!(
@@ -68,13 +82,13 @@ impl Case {
                 ))),
                 (None, Some(d)) => wall::checked_deviation(&format!("{sec}.{dname}"), d, warnings),
                 (Some(c), None) => {
-                    let c = positive(&format!("{sec}.{cname}"), c)?;
+                    let c = length(cname, c)?;
                     let h = w.rms_height_um.ok_or_else(|| {
                         Error::Input(format!(
                             "[{sec}] gives `{cname}` but not `rms_height_um` (needed by Eq. 15)"
                         ))
                     })?;
-                    let h = positive(&format!("{sec}.rms_height_um"), h)?;
+                    let h = length("rms_height_um", h)?;
                     wall::checked_deviation(
                         &format!("{sec}.{cname} (as a deviation)"),
                         wall::deviation_from_surface(h, c).to_degrees(),

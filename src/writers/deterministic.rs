@@ -175,6 +175,11 @@ pub fn finish(
         manifest.set_run("particles_per_s", f((total as f64 / seconds).round()));
     }
     manifest.write(dir)?;
+    warnings.extend(super::target_warnings(
+        tallies,
+        stats,
+        p.scene.target_se_deg,
+    ));
     Ok(warnings)
 }
 

@@ -11,10 +11,11 @@ pub mod force_sweep;
 pub mod stochastic;
 pub mod surface;
 
-use crate::case::Scene;
-use crate::output::Manifest;
+use crate::case::{Scene, Warning};
+use crate::output::{fmt_num, Manifest};
 use roughwall::erosion::{dnv, ErosionModel, ErosionSetup};
-use roughwall::tally::BLOCK_SIZE;
+use roughwall::tally::engine::ConditionStats;
+use roughwall::tally::{ConditionTally, BLOCK_SIZE};
 
 fn f(x: f64) -> toml::Value {
     toml::Value::Float(x)
@@ -87,4 +88,35 @@ pub fn erosion_manifest(e: &ErosionSetup) -> toml::Value {
     }
     t.insert("model".into(), toml::Value::String(e.model.name().into()));
     toml::Value::Table(t)
+}
+
+/// A warning per condition that ran to its particle count without reaching the target
+/// standard error (`--target-se`, `[particles] target_se_deg`): the count it stopped at and
+/// the standard errors it reached.
+pub fn target_warnings(
+    tallies: &[ConditionTally],
+    stats: Option<&[ConditionStats]>,
+    target_se_deg: Option<f64>,
+) -> Vec<Warning> {
+    let (Some(stats), Some(target)) = (stats, target_se_deg) else {
+        return Vec::new();
+    };
+    tallies
+        .iter()
+        .zip(stats)
+        .filter(|(_, s)| s.target_reached == Some(false))
+        .map(|(t, _)| {
+            let c = t.spec.condition;
+            let se = t
+                .running_se()
+                .map(|(a, b)| format!("{}° and {}°", fmt_num(a), fmt_num(b)))
+                .unwrap_or_else(|| "undefined".into());
+            Warning(format!(
+                "α⁻ = {}°, β⁻ = {}°: the target standard error {target}° was not reached in {} particles (the count caps a target: `--particles`, `[particles] count`); standard errors of mean α⁺ and mean β⁺ − β⁻ {se}",
+                fmt_num(c.alpha_in_deg()),
+                fmt_num(c.beta_in_deg()),
+                t.counters.particles,
+            ))
+        })
+        .collect()
 }

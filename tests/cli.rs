@@ -142,3 +142,71 @@ fn every_command_help_shows_an_example() {
         );
     }
 }
+
+/// Messages that named no key, called a value by the wrong type, said "not found" for a file
+/// that exists, or printed a value as hundreds of digits.
+#[test]
+fn messages_name_what_is_wrong() {
+    let tmp = Dir::new();
+    let refused = |args: &[&str], needle: &str| {
+        let out = tmp.join("never");
+        let mut a: Vec<&str> = args.to_vec();
+        a.extend(["--out", out.to_str().unwrap()]);
+        rebound(&a).refused(needle);
+        assert!(!out.exists());
+    };
+    let case = |name: &str, body: &str| write_case(tmp.path(), name, body).display().to_string();
+    let array = case("a.toml", "name = \"x\"\n[[wall]]\ndelta_xi_deg = 1.0\n");
+    refused(
+        &["stochastic", "--case", &array],
+        "a.toml:2: section `[[wall]]` is an array of tables: allowed one table `[wall]`",
+    );
+    let date = case(
+        "d.toml",
+        "name = \"x\"\n[wall]\ndelta_xi_deg = 1979-05-27T07:32:00Z\ndelta_zeta_deg = 1.0\n",
+    );
+    refused(
+        &["stochastic", "--case", &date],
+        "key `delta_xi_deg`: invalid type: a datetime, expected f64",
+    );
+    let tiny = case(
+        "t.toml",
+        "name = \"x\"\n[wall]\ndelta_xi_deg = 1.0\ndelta_zeta_deg = -1e-300\n",
+    );
+    refused(
+        &["stochastic", "--case", &tiny],
+        "invalid `wall.delta_zeta_deg` = -1e-300: allowed 0 to 20 degrees",
+    );
+    let fifo = tmp.join("fifo");
+    assert!(std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let fifo = fifo.to_str().unwrap();
+    let dir = tmp.path().to_str().unwrap();
+    refused(
+        &["stochastic", "--case", "/dev/null"],
+        "is a character device, not a file",
+    );
+    refused(&["stochastic", "--case", fifo], "is a FIFO, not a file");
+    refused(&["stochastic", "--case", dir], "is a directory, not a file");
+    refused(
+        &["deterministic", "--surface", fifo],
+        "is a FIFO, not a file",
+    );
+    let table = case(
+        "e.toml",
+        &format!(
+            "name = \"x\"\n[wall]\ndelta_xi_deg = 1.0\ndelta_zeta_deg = 1.0\n[incidence]\nalpha_deg = [-5.0]\n[stochastic]\nmodel = \"calibrated\"\nescape_table = \"{dir}\"\n"
+        ),
+    );
+    refused(
+        &["stochastic", "--case", &table],
+        "`stochastic.escape_table` = ",
+    );
+    refused(
+        &["stochastic", "--case", &table],
+        ": a directory, not a file",
+    );
+}

@@ -17,6 +17,12 @@ pub fn resolve_path(path: &Path) -> Result<PathBuf> {
     if path.is_file() {
         return Ok(path.to_path_buf());
     }
+    if let Some(kind) = roughwall::check::not_a_regular_file(path) {
+        return Err(Error::Input(format!(
+            "case file `{}` is {kind}, not a file",
+            path.display()
+        )));
+    }
     let candidates = [
         Path::new("configs").join(path),
         Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -122,6 +128,21 @@ fn one_line(origin: &str, text: &str, e: &toml::de::Error) -> Error {
     let line_no = text[..start].matches('\n').count() + 1;
     let line = text.lines().nth(line_no - 1).unwrap_or("").trim();
     let key = line.split('=').next().unwrap_or("").trim();
+    // serde calls an array of tables and a TOML datetime "map": say what they are.
+    if let Some(name) = line.strip_prefix("[[").and_then(|l| l.split("]]").next()) {
+        let name = name.trim();
+        return Error::Input(format!(
+            "{origin}:{line_no}: section `[[{name}]]` is an array of tables: allowed one table `[{name}]`"
+        ));
+    }
+    if msg.contains("invalid type: map") && line.contains('=') {
+        let value = line.split_once('=').map_or("", |(_, v)| v).trim();
+        let date = value.len() >= 8
+            && (value.as_bytes().get(4) == Some(&b'-') || value.as_bytes().get(2) == Some(&b':'));
+        if date && value.bytes().take(2).all(|b| b.is_ascii_digit()) {
+            msg = msg.replace("invalid type: map", "invalid type: a datetime");
+        }
+    }
     if line.contains('=') && !key.is_empty() {
         Error::Input(format!("{origin}:{line_no}: key `{key}`: {msg}"))
     } else {

@@ -219,9 +219,12 @@ const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 23;
 fn read_escape_table(path: &str) -> Result<&'static roughwall::calibrated::EscapeTable> {
     let key = "stochastic.escape_table";
     let file = super::load::resolve_path(std::path::Path::new(path)).map_err(|_| {
-        Error::Input(format!(
-            "`{key}` = \"{path}\": file not found (looked as given and under configs/)"
-        ))
+        match roughwall::check::not_a_regular_file(std::path::Path::new(path)) {
+            Some(kind) => Error::Input(format!("`{key}` = \"{path}\": {kind}, not a file")),
+            None => Error::Input(format!(
+                "`{key}` = \"{path}\": file not found (looked as given and under configs/)"
+            )),
+        }
     })?;
     let what = format!("`{key}` = \"{path}\"");
     let len = std::fs::metadata(&file).map(|m| m.len()).unwrap_or(0);

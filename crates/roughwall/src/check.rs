@@ -4,6 +4,7 @@
 //! case file in the application.
 
 use crate::error::{Error, Result};
+use std::path::Path;
 
 pub use crate::warning::Warning;
 
@@ -82,6 +83,29 @@ pub fn check_length(key: &str, len: usize, max: usize, what: &str, allowed: &str
     Ok(())
 }
 
+/// What a path that exists but is not a regular file is ("a directory", "a FIFO", …); `None`
+/// for a regular file (after links) or a path that does not exist. Read before opening:
+/// opening a FIFO would wait for a writer.
+pub fn not_a_regular_file(path: &Path) -> Option<&'static str> {
+    use std::os::unix::fs::FileTypeExt;
+    let t = std::fs::metadata(path).ok()?.file_type();
+    Some(if t.is_file() {
+        return None;
+    } else if t.is_dir() {
+        "a directory"
+    } else if t.is_fifo() {
+        "a FIFO"
+    } else if t.is_char_device() {
+        "a character device"
+    } else if t.is_block_device() {
+        "a block device"
+    } else if t.is_socket() {
+        "a socket"
+    } else {
+        "not a regular file"
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -98,5 +122,19 @@ mod tests {
         assert_eq!(check_value("m", "b", &["a", "b"], "a or b"), Ok(1));
         let e = check_value("m", "c", &["a", "b"], "\"a\" or \"b\"").unwrap_err();
         assert_eq!(e.to_string(), "invalid `m` = \"c\": allowed \"a\" or \"b\"");
+    }
+
+    #[test]
+    fn devices_and_directories_are_not_regular_files() {
+        assert_eq!(
+            not_a_regular_file(Path::new("/dev/null")),
+            Some("a character device")
+        );
+        assert_eq!(not_a_regular_file(Path::new("/tmp")), Some("a directory"));
+        assert_eq!(not_a_regular_file(Path::new("/definitely/not/here")), None);
+        assert_eq!(
+            not_a_regular_file(Path::new(file!()).parent().unwrap()),
+            Some("a directory")
+        );
     }
 }

@@ -30,7 +30,10 @@ pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
     /// The one-line message for a bad value: names the key, the value and what is allowed.
+    /// A number far from 1 is written in its shortest exponent form (`1e-300`, not 300
+    /// digits).
     pub fn invalid(key: &str, value: impl Display, allowed: &str) -> Error {
+        let value = compact_number(value.to_string());
         Error::Input(format!("invalid `{key}` = {value}: allowed {allowed}"))
     }
 
@@ -47,6 +50,23 @@ impl Error {
             Error::Model(_) => 3,
             Error::Internal(_) => 4,
         }
+    }
+}
+
+/// `text` unchanged, unless it is a number whose plain decimal form is long (below 1e-5 or
+/// from 1e16 in magnitude): then the same number in its shortest round-trip exponent form.
+fn compact_number(text: String) -> String {
+    match text.parse::<f64>() {
+        Ok(x)
+            if x.is_finite()
+                && text.len() > 18
+                && text
+                    .bytes()
+                    .all(|b| b.is_ascii_digit() || b == b'.' || b == b'-') =>
+        {
+            format!("{x:e}")
+        }
+        _ => text,
     }
 }
 
@@ -71,3 +91,26 @@ impl Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_far_from_one_are_written_short() {
+        let m = |v: f64| Error::invalid("k", v, "x").to_string();
+        assert_eq!(m(25.0), "invalid `k` = 25: allowed x");
+        assert_eq!(m(-0.5), "invalid `k` = -0.5: allowed x");
+        assert_eq!(m(1e-300), "invalid `k` = 1e-300: allowed x");
+        assert_eq!(m(-2.5e-7), "invalid `k` = -0.00000025: allowed x");
+        assert_eq!(m(-2.5e-17), "invalid `k` = -2.5e-17: allowed x");
+        assert_eq!(m(1e300), "invalid `k` = 1e300: allowed x");
+        assert_eq!(m(f64::NAN), "invalid `k` = NaN: allowed x");
+        assert_eq!(m(123456.789), "invalid `k` = 123456.789: allowed x");
+        // Text stays text.
+        assert_eq!(
+            Error::invalid("k", "\"00000000000000000000001\"", "x").to_string(),
+            "invalid `k` = \"00000000000000000000001\": allowed x"
+        );
+    }
+}

@@ -289,6 +289,12 @@ pub fn build_surfaces(
 /// Reads a height field saved by `rebound surface --heights FILE`; every problem is a
 /// one-line input error naming the file.
 pub fn read_surface(path: &Path) -> Result<HeightField> {
+    if let Some(kind) = crate::check::not_a_regular_file(path) {
+        return Err(Error::Input(format!(
+            "--surface file `{}` is {kind}, not a file",
+            path.display()
+        )));
+    }
     if !path.is_file() {
         return Err(Error::Input(format!(
             "--surface file `{}` not found",

@@ -12,9 +12,14 @@ use std::path::PathBuf;
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
-    /// No summary on success and no progress bar (warnings and errors are still printed).
+    /// No summary on success and no progress bar or log lines (warnings and errors are still
+    /// printed).
     #[arg(long, short = 'q', global = true)]
     pub quiet: bool,
+    /// When stderr is not a terminal (a batch job's log): after an estimate of the whole run,
+    /// a progress line every SECONDS (0: none).
+    #[arg(long, global = true, value_name = "SECONDS", default_value_t = 30.0)]
+    pub log_every: f64,
 }
 
 #[derive(Subcommand, Debug)]

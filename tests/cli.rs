@@ -210,3 +210,39 @@ fn messages_name_what_is_wrong() {
         ": a directory, not a file",
     );
 }
+
+/// On a non-terminal stderr (a batch job's log) a long run gives an estimate once it has run
+/// for a second and then a line every `--log-every` seconds; `--quiet` silences them, and a
+/// bad interval is refused.
+#[test]
+fn a_long_run_logs_its_progress_when_stderr_is_not_a_terminal() {
+    let tmp = Dir::new();
+    let run = |extra: &[&str]| {
+        let out = tmp.join(format!("o{}", extra.len()));
+        let mut args = vec![
+            "stochastic",
+            "--particles",
+            "1500000",
+            "--threads",
+            "1",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        rebound(&args).ok().stderr
+    };
+    let log = run(&["--log-every", "0.2"]);
+    let estimate = log
+        .lines()
+        .find(|l| l.starts_with("stochastic: 9000000 particles planned"))
+        .unwrap_or_else(|| panic!("no estimate in {log}"));
+    assert!(estimate.contains(" in all"), "{estimate}");
+    assert!(
+        log.lines()
+            .any(|l| l.contains("particles (") && l.contains(" left")),
+        "no progress line in {log}"
+    );
+    let quiet = run(&["--log-every", "0.2", "--quiet", "--seed", "3"]);
+    assert!(quiet.is_empty(), "{quiet}");
+    rebound(&["stochastic", "--log-every=-1"]).refused("invalid `--log-every` = -1");
+}

@@ -200,6 +200,14 @@ pub fn run(cli: Cli) -> Result<()> {
         .num_threads(threads)
         .build()
         .map_err(|e| Error::Io(format!("thread pool: {e}")))?;
+    if !(cli.log_every.is_finite() && cli.log_every >= 0.0) {
+        return Err(Error::invalid(
+            "--log-every",
+            cli.log_every,
+            "a number of seconds ≥ 0 (0: no log lines)",
+        ));
+    }
+    crate::progress::set_log_every(cli.log_every);
     if cli.quiet {
         crate::progress::hide();
     }

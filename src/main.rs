@@ -40,6 +40,7 @@ use clap::error::ErrorKind;
 use clap::Parser;
 
 fn main() {
+    output::out_dir::remove_staging_on_signals();
     let cli = match cli::Cli::try_parse() {
         Ok(cli) => cli,
         Err(e)

@@ -526,3 +526,45 @@ fn concurrent_runs_on_one_out_leave_one_complete_result() {
     }
     eprintln!("concurrency: 10 trials, {refused} runs refused by the lock");
 }
+
+/// A run stopped by SIGTERM, SIGINT or SIGHUP (a batch system's cancel or time limit, Ctrl-C)
+/// removes its staging directory and exits with 128 + the signal: `--out` keeps its old
+/// result and nothing hidden is left beside it.
+#[test]
+fn a_signal_leaves_the_old_result_and_no_staging_directory() {
+    let tmp = tempfile::tempdir().unwrap();
+    let t = tmp.path();
+    let small = write_case(t, "small.toml", &stochastic_case("sig", 2_000));
+    let long = write_case(t, "long.toml", &stochastic_case("sig", 50_000_000));
+    let work = t.join("work");
+    std::fs::create_dir(&work).unwrap();
+    let d = work.join("D");
+    stochastic(&small, &d, "1").ok();
+    let before = snapshot(&d, false);
+    for (sig, name) in [(15, "TERM"), (2, "INT"), (1, "HUP")] {
+        let mut child = spawn_stochastic(&long, &d, "2", Stdio::null());
+        // Until the run is computing into its staging directory.
+        let t0 = Instant::now();
+        while !names(&work).iter().any(|n| n.starts_with(".D.staging-")) {
+            assert!(
+                t0.elapsed() < Duration::from_secs(30),
+                "no staging directory"
+            );
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        std::thread::sleep(Duration::from_millis(100));
+        let sent = std::process::Command::new("kill")
+            .args([&format!("-{name}"), &child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(sent.success());
+        let status = child.wait().unwrap();
+        assert_eq!(status.code(), Some(128 + sig), "SIG{name}: {status}");
+        assert_eq!(snapshot(&d, false), before, "SIG{name} changed D");
+        assert_eq!(
+            names(&work),
+            BTreeSet::from(["D".to_string(), ".D.lock".to_string()]),
+            "SIG{name} left something beside D"
+        );
+    }
+}

@@ -26,7 +26,9 @@
 //!   inside a run's directory) and the lock files of such nested outputs are carried into the
 //!   new result (hard links, or copies where the file system has none);
 //! - a run that fails after staging began removes its staging directory (a drop guard) and
-//!   leaves `--out` untouched; staging and old directories left by killed runs are removed
+//!   leaves `--out` untouched; so does a run stopped by SIGINT, SIGTERM or SIGHUP (Ctrl-C, a
+//!   batch system's cancel or time limit): [`remove_staging_on_signals`] removes the staging
+//!   directories of the process and exits with status 128 + the signal; staging and old directories left by killed runs are removed
 //!   (or, for an old directory whose `NAME` is missing, put back) by the next run on the same
 //!   `--out`, which holds the lock and so knows that no live run owns them.
 
@@ -75,6 +77,7 @@ impl OutputDir {
         // The state may have changed while we were not holding the lock.
         check_out(target, option)?;
         let staging = create_staging(&parent, &key)?;
+        remember_staging(&staging);
         Ok(OutputDir {
             target: resolved,
             shown: target.to_path_buf(),
@@ -106,6 +109,10 @@ impl OutputDir {
                 .map_err(|e| Error::io(&self.target, format!("carrying subdirectories: {e}")))?;
         }
         sync_tree(&self.staging).map_err(|e| Error::io(&self.staging, e))?;
+        // Held across the swap: a signal's cleanup (which takes it first) cannot remove a
+        // staging directory that is being swapped in.
+        let mut registered = STAGING.lock().unwrap_or_else(|e| e.into_inner());
+        registered.retain(|q| q != &self.staging);
         if exists {
             match exchange(&self.staging, &self.target) {
                 Ok(()) => {}
@@ -118,6 +125,7 @@ impl OutputDir {
             fs::rename(&self.staging, &self.target).map_err(|e| Error::io(&self.target, e))?;
         }
         self.committed = true;
+        drop(registered);
         sync_dir(&self.parent).map_err(|e| Error::io(&self.parent, e))?;
         // After an exchange the staging path holds the old result; a failure here only
         // leaves a hidden directory that the next run removes.
@@ -148,7 +156,45 @@ impl Drop for OutputDir {
         if !self.committed {
             let _ = fs::remove_dir_all(&self.staging);
         }
+        forget_staging(&self.staging);
     }
+}
+
+/// The staging directories this process is writing (what a signal must remove).
+static STAGING: std::sync::Mutex<Vec<PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+fn remember_staging(p: &Path) {
+    STAGING
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .push(p.to_path_buf());
+}
+
+fn forget_staging(p: &Path) {
+    STAGING
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .retain(|q| q != p);
+}
+
+/// On SIGINT, SIGTERM or SIGHUP, removes the staging directories of the process and exits
+/// with status 128 + the signal, as a process killed by it would: `--out` keeps its old
+/// result, and nothing hidden is left beside it. (A run killed by SIGKILL cannot clean up: the
+/// next run on the same `--out` does.) A thread waits for the signals; call once, early.
+pub fn remove_staging_on_signals() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+        return; // without the handler a signal ends the run as before
+    };
+    std::thread::spawn(move || {
+        if let Some(sig) = signals.forever().next() {
+            let dirs = STAGING.lock().unwrap_or_else(|e| e.into_inner()).clone();
+            for d in dirs {
+                let _ = fs::remove_dir_all(&d);
+            }
+            std::process::exit(128 + sig);
+        }
+    });
 }
 
 /// What an existing path is, for messages.

@@ -180,7 +180,9 @@ typedef struct {
   /*
    `RW_MODEL_CALIBRATED` only: the escape table as the NUL-terminated text
    `rebound calibrate` writes (`escape_table.csv`); NULL: the built-in table. The
-   handle keeps its own copy (the text may be freed after `rw_wall_new`).
+   handle keeps its own copy (the text may be freed after `rw_wall_new`). A process keeps
+   each distinct table for its life, at most 16 besides the built-in one (about 1.4 MB
+   each): a 17th is `RW_INVALID_PARAMETER`.
    */
   const char *escape_table_csv;
 } rw_wall_params;

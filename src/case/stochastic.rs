@@ -235,5 +235,5 @@ fn read_escape_table(path: &str) -> Result<&'static roughwall::calibrated::Escap
     }
     let text = std::fs::read_to_string(&file)
         .map_err(|e| Error::Input(format!("{what}: cannot read it: {e}")))?;
-    Ok(roughwall::calibrated::EscapeTable::parse(&text, &what)?.intern())
+    roughwall::calibrated::EscapeTable::parse(&text, &what)?.intern()
 }

@@ -104,7 +104,9 @@ pub struct rw_wall_params {
     pub delta_gamma_deg: f64,
     /// `RW_MODEL_CALIBRATED` only: the escape table as the NUL-terminated text
     /// `rebound calibrate` writes (`escape_table.csv`); NULL: the built-in table. The
-    /// handle keeps its own copy (the text may be freed after `rw_wall_new`).
+    /// handle keeps its own copy (the text may be freed after `rw_wall_new`). A process keeps
+    /// each distinct table for its life, at most 16 besides the built-in one (about 1.4 MB
+    /// each): a 17th is `RW_INVALID_PARAMETER`.
     pub escape_table_csv: *const std::os::raw::c_char,
 }
 

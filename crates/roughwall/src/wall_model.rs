@@ -70,7 +70,7 @@ fn with_escape_table(variant: Variant, table: Option<&str>) -> Result<Variant> {
     };
     variant.check_takes_escape_table()?;
     let table = crate::calibrated::EscapeTable::parse(text, "`stochastic.escape_table`")?;
-    variant.with_escape_table(table.intern())
+    variant.with_escape_table(table.intern()?)
 }
 
 impl WallModel {

@@ -1,8 +1,8 @@
 //! The library's integration tests as one binary (ripgrep's `tests/tests.rs` is the model):
 //! the physics through the public API only, no command line. Each file of `tests/` is a
 //! module here, so its tests keep their names under the file's (`cargo test -p roughwall
-//! --test library force_models::`). `no_allocation.rs` stays a binary of its own: it installs
-//! a counting global allocator. A new test file is added below (the test at the end fails
+//! --test library force_models::`). `no_allocation.rs` (a counting global allocator) and
+//! `escape_table_bound.rs` (a per-process bound) stay binaries of their own. A new test file is added below (the test at the end fails
 //! until it is).
 
 mod common;
@@ -15,7 +15,7 @@ mod stochastic_sampler;
 mod surface_table1;
 
 /// The test binaries `Cargo.toml` declares besides this one.
-const OWN_BINARIES: [&str; 1] = ["no_allocation"];
+const OWN_BINARIES: [&str; 2] = ["no_allocation", "escape_table_bound"];
 
 /// With `autotests = false`, a file in `tests/` that is neither a module here nor its own
 /// `[[test]]` would silently never run.

@@ -360,21 +360,32 @@ impl EscapeTable {
 
     /// A `'static` copy of `self`, shared by every wall built with an equal table: wall
     /// models are `Copy` and hold a reference, and a host building many walls from one
-    /// table keeps one copy. (Each distinct table is kept for the life of the process.)
-    pub fn intern(self) -> &'static EscapeTable {
+    /// table keeps one copy. Each distinct table is kept for the life of the process, so at
+    /// most [`MAX_DISTINCT_TABLES`] distinct ones (besides the built-in table) are taken:
+    /// about 1.4 MB each, 23 MB in all; one more is a one-line error, never a growing process.
+    pub fn intern(self) -> Result<&'static EscapeTable> {
         static TABLES: Mutex<Vec<&'static EscapeTable>> = Mutex::new(Vec::new());
         if self == *EscapeTable::builtin() {
-            return EscapeTable::builtin();
+            return Ok(EscapeTable::builtin());
         }
         let mut v = TABLES.lock().unwrap_or_else(|e| e.into_inner());
         if let Some(t) = v.iter().find(|t| ***t == self) {
-            return t;
+            return Ok(t);
+        }
+        if v.len() >= MAX_DISTINCT_TABLES {
+            return Err(Error::Input(format!(
+                "`stochastic.escape_table`: more than {MAX_DISTINCT_TABLES} distinct escape tables in one process (each stays in memory for the process's life); build the walls from fewer tables"
+            )));
         }
         let t: &'static EscapeTable = Box::leak(Box::new(self));
         v.push(t);
-        t
+        Ok(t)
     }
 }
+
+/// Distinct escape tables a process may hold besides the built-in one (see
+/// [`EscapeTable::intern`]): a host's walls use one or a few calibrations.
+pub const MAX_DISTINCT_TABLES: usize = 16;
 
 /// The built-in table's text.
 pub const BUILTIN: &str = include_str!("aniso-escape.csv");

@@ -164,7 +164,9 @@ fn the_model_reads_the_first_stage_of_its_roughness_angle() {
         for d in [3.0, 5.0, 7.0] {
             c.push_first(deg(d));
         }
-        EscapeTable::from_counts(c.at_centres(), "stages").intern()
+        EscapeTable::from_counts(c.at_centres(), "stages")
+            .intern()
+            .unwrap()
     };
     let single = |t: &'static EscapeTable, d: f64| {
         let wall = Deviations {
@@ -630,11 +632,11 @@ fn the_incidence_axis_is_finest_at_grazing_incidence() {
 #[test]
 fn interning_keeps_one_copy_per_table() {
     let a = EscapeTable::from_counts(EscapeCounts::default(), "x");
-    let p = a.clone().intern();
-    let q = a.intern();
+    let p = a.clone().intern().unwrap();
+    let q = a.intern().unwrap();
     assert!(std::ptr::eq(p, q));
     assert!(std::ptr::eq(
-        EscapeTable::builtin().clone().intern(),
+        EscapeTable::builtin().clone().intern().unwrap(),
         EscapeTable::builtin()
     ));
 }

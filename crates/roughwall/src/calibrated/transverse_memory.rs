@@ -246,7 +246,7 @@ mod tests {
                     c.transverse.push(k, z, b * z);
                 }
             }
-            let table = EscapeTable::from_counts(c, "memory").intern();
+            let table = EscapeTable::from_counts(c, "memory").intern().unwrap();
             assert!((table.transverse_slope(Stage::later(0.0)) - b).abs() < 1e-6);
             let inc = CalibratedIncidence::new(deg(-5.0), deg(beta), &wall);
             let u = velocity_from_angles(1.0, deg(-5.0), deg(beta));

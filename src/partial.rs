@@ -380,6 +380,15 @@ impl PartialFile {
             if t.blocks() != listed {
                 return Err(bad("its block list does not match its block records"));
             }
+            // The checksum guards against accidents; an edited tally with a recomputed
+            // checksum must still add up.
+            consistent(&t).map_err(|m| {
+                bad(&format!(
+                    "condition α⁻ = {}°, β⁻ = {}°: {m} (an edited or corrupted tally)",
+                    spec.condition.alpha_in_deg(),
+                    spec.condition.beta_in_deg()
+                ))
+            })?;
             tallies.push(t);
         }
         Ok(Partial {
@@ -392,6 +401,54 @@ impl PartialFile {
         })
     }
 }
+
+/// Whether a restored tally adds up: every block record's moments finite with `0 ≤ n ≤ block
+/// size` and `M2 ≥ 0`; the particles counted equal the records' followed ones plus the lost;
+/// each angle histogram holds as many values as the records of its quantity; single-collision
+/// histories at most the followed ones.
+fn consistent(t: &ConditionTally) -> std::result::Result<(), String> {
+    let p = t.parts();
+    for r in p.records {
+        for (q, m) in r.moments.iter().enumerate() {
+            if m.n > BLOCK_SIZE || !m.mean.is_finite() || !m.m2.is_finite() || m.m2 < 0.0 {
+                return Err(format!(
+                    "block {} has impossible moments for quantity {q} (n {}, mean {}, M2 {})",
+                    r.block, m.n, m.mean, m.m2
+                ));
+            }
+        }
+    }
+    let n = |q: usize| -> u64 { p.records.iter().map(|r| r.moments[q].n).sum() };
+    let followed = n(0);
+    let lost: u64 = p.counters.lost.iter().sum();
+    if followed + lost != p.counters.particles {
+        return Err(format!(
+            "{} particles, but its records follow {followed} and lose {lost}",
+            p.counters.particles
+        ));
+    }
+    for (q, h) in p.hists.iter().enumerate().take(NM) {
+        let sum: u64 = h.occupied().1.iter().sum();
+        if sum != h.total() || (q < ANGLE_HISTOGRAMS && h.total() != n(q)) {
+            return Err(format!(
+                "histogram {q} holds {} values, its records {}",
+                h.total(),
+                n(q)
+            ));
+        }
+    }
+    if p.counters.single > followed {
+        return Err(format!(
+            "{} single-collision histories of {followed} followed",
+            p.counters.single
+        ));
+    }
+    Ok(())
+}
+
+/// The histograms filled with their moment quantity, value for value (the angles; the impact
+/// histograms after them have no moments).
+const ANGLE_HISTOGRAMS: usize = 12;
 
 #[cfg(test)]
 mod tests {

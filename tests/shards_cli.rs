@@ -470,3 +470,62 @@ fn sealed(body: &str) -> String {
         .collect();
     format!("{body}# sha256 {hex}\n")
 }
+
+/// An edited tally whose checksum was recomputed must still add up: a NaN mean, a particle
+/// count that disagrees with the records, or a histogram that does not hold its records'
+/// values is refused naming the shard; the untouched shards merge.
+#[test]
+fn an_edited_tally_with_a_recomputed_checksum_is_refused() {
+    let tmp = Dir::new();
+    let case = write_case(tmp.path(), "c.toml", CASE);
+    let shards: Vec<PathBuf> = (1..=2)
+        .map(|k| {
+            let d = out(tmp.path(), &format!("s{k}"));
+            run_case("stochastic", &case, &d, &["--shard", &format!("{k}/2")]);
+            d
+        })
+        .collect();
+    let file = shards[1].join("partial.toml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let body = &text[..text.trim_end().rfind('\n').unwrap() + 1];
+    let merge = |name: &str| {
+        let o = out(tmp.path(), name);
+        let r = rebound(&[
+            "merge",
+            "--out",
+            o.to_str().unwrap(),
+            shards[0].to_str().unwrap(),
+            shards[1].to_str().unwrap(),
+        ]);
+        (r, o)
+    };
+    let (r, _) = merge("fine");
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    // The first record's first mean (α⁺ of the first block), as bits: NaN.
+    let records = body.find("records = [\"").unwrap() + "records = [\"".len();
+    let fields: Vec<&str> = body[records..].split(' ').take(3).collect();
+    let nan = body.replacen(
+        &format!("{} {} {}", fields[0], fields[1], fields[2]),
+        &format!("{} {} 7ff8000000000000", fields[0], fields[1]),
+        1,
+    );
+    // The first condition's particle count, one more.
+    let line = body
+        .lines()
+        .find(|l| l.starts_with("particles = ") && !l.contains('"'))
+        .unwrap();
+    let n: u64 = line["particles = ".len()..].parse().unwrap();
+    let more = body.replacen(line, &format!("particles = {}", n + 1), 1);
+    for (edited, needle) in [
+        (nan, "impossible moments"),
+        (more, "but its records follow"),
+    ] {
+        assert_ne!(edited, body);
+        std::fs::write(&file, sealed(&edited)).unwrap();
+        let (r, o) = merge("never");
+        r.refused("an edited or corrupted tally");
+        r.refused(needle);
+        r.refused(&file.display().to_string());
+        assert!(!o.exists(), "a refused merge wrote output");
+    }
+}

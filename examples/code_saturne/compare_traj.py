@@ -2,6 +2,7 @@
 """Compare particle trajectory CSVs of two code_saturne runs (check (a)).
 
 Usage: compare_traj.py RUNDIR_A RUNDIR_B [--tol T] [--hits RUNDIR_WITH_HITS]
+       compare_traj.py RUNDIR_SMOOTH RUNDIR_ROUGH --rough
 
 Each RUNDIR contains traj_rank*.csv written by cs_user_lagr_particle.c:
   step,time,particle_id,n_coll,cell_id,x,y,z,u,v,w,sx,sy,sz   (%.17g)
@@ -14,7 +15,16 @@ Pass criterion ("equal to printed precision"): same keys, same cell ids and
 every compared value textually identical as printed (%.17g, i.e. bitwise
 equal doubles), unless --tol T > 0 is given, in which case
 max |a-b| <= T is accepted (for experiments; run_checks.sh and the test use
-the default, bitwise).  Exit status 0 on pass, 1 on failure.
+the default, bitwise).  With --hits, the hook's calls are counted: every
+particle must have as many logged hits as code_saturne's built-in rebounds
+of run A gave it (a wall hit in the box reverses one velocity component of
+the straight-line trajectory, so the sign changes of u, v, w between steps
+count the built-in rebounds).
+
+--rough (check (c)): run B has the rough wall, run A the smooth one, the same
+particles: every particle's trajectory must be identical up to its first wall
+hit, and the trajectories that follow a hit must differ (at least 90 % of the
+particles that hit a wall).  Exit status 0 on pass, 1 on failure.
 """
 import argparse
 import csv
@@ -39,6 +49,92 @@ def load(rundir):
                     sys.exit("duplicate row %s in %s" % (key, rundir))
                 rows[key] = r
     return rows
+
+
+# The injection velocities of scene 1 (cs_user_lagr_boundary_conditions.c): the state before
+# a particle's first step, which the trajectory files (written after each step) do not hold.
+INJECTED = [(0.5, 1.0, 0.7), (0.6, -0.9, -0.5)]
+
+
+def rebounds_per_particle(rows):
+    """Built-in rebounds per particle: sign changes of u, v, w from the injection velocity
+    (the set whose magnitudes the first step has; drag changes them by ~1e-4) through the
+    steps."""
+    by_pid = {}
+    for (step, pid), r in rows.items():
+        by_pid.setdefault(pid, []).append((step, [float(r[c]) for c in ("u", "v", "w")]))
+    count = {}
+    for pid, seq in by_pid.items():
+        seq.sort()
+        v1 = seq[0][1]
+        start = min(INJECTED, key=lambda s: sum((abs(a) - abs(b)) ** 2 for a, b in zip(v1, s)))
+        seq = [(0, list(start))] + seq
+        n = 0
+        for (_, a), (_, b) in zip(seq, seq[1:]):
+            n += sum(1 for x, y in zip(a, b) if x * y < 0)
+        count[pid] = n
+    return count
+
+
+def logged_hits_per_particle(rundir, last_step):
+    """Logged hook calls per particle up to its last recorded trajectory step (`last_step`);
+    and the calls in the step a particle left the domain, which no trajectory row shows."""
+    count, trailing = {}, 0
+    for fn in sorted(glob.glob(os.path.join(rundir, "wall_hits_rank*.csv"))):
+        with open(fn, newline="") as f:
+            for r in csv.DictReader(f):
+                pid = int(r["particle_id"])
+                if int(r["step"]) > last_step.get(pid, -1):
+                    trailing += 1
+                    continue
+                count[pid] = count.get(pid, 0) + 1
+    return count, trailing
+
+
+def first_hit_step(rows):
+    """Per particle, the first step at which its velocity changed sign (its first hit),
+    from the injection velocity on (see `rebounds_per_particle`)."""
+    by_pid = {}
+    for (step, pid), r in rows.items():
+        by_pid.setdefault(pid, []).append((step, [float(r[c]) for c in ("u", "v", "w")]))
+    first = {}
+    for pid, seq in by_pid.items():
+        seq.sort()
+        v1 = seq[0][1]
+        start = min(INJECTED, key=lambda s: sum((abs(a) - abs(b)) ** 2 for a, b in zip(v1, s)))
+        seq = [(0, list(start))] + seq
+        for (_, a), (s, b) in zip(seq, seq[1:]):
+            if any(x * y < 0 for x, y in zip(a, b)):
+                first[pid] = s
+                break
+    return first
+
+
+def rough(smooth_dir, rough_dir):
+    A, B = load(smooth_dir), load(rough_dir)
+    first = first_hit_step(A)
+    before_equal, before_total = 0, 0
+    hit, changed = 0, 0
+    for pid, s_hit in first.items():
+        hit += 1
+        differs = False
+        for (s, p), ra in A.items():
+            if p != pid:
+                continue
+            rb = B.get((s, p))
+            if s < s_hit:
+                before_total += 1
+                if rb is not None and all(ra[c] == rb[c] for c in FIELDS[:6]):
+                    before_equal += 1
+            elif rb is None or any(ra[c] != rb[c] for c in ("u", "v", "w")):
+                differs = True
+        changed += differs
+    print("rough wall: %d particles hit a wall; before the first hit %d of %d rows identical"
+          % (hit, before_equal, before_total))
+    print("rough wall: trajectories changed after the hit for %d of %d particles" % (changed, hit))
+    ok = hit > 0 and before_equal == before_total and changed >= 0.9 * hit
+    print("CHECK (c): %s" % ("PASS" if ok else "FAIL"))
+    return 0 if ok else 1
 
 
 def hits_summary(rundir):
@@ -73,7 +169,10 @@ def main():
     ap.add_argument("b")
     ap.add_argument("--tol", type=float, default=0.0)
     ap.add_argument("--hits", default=None)
+    ap.add_argument("--rough", action="store_true")
     args = ap.parse_args()
+    if args.rough:
+        return rough(args.a, args.b)
 
     A, B = load(args.a), load(args.b)
     ka, kb = set(A), set(B)
@@ -134,7 +233,22 @@ def main():
         print("  collisions per particle (last recorded state): " +
               ", ".join("%d:%d" % (c, hist[c]) for c in sorted(hist)))
 
-    ok = (not only_a and not only_b and n_cell_diff == 0 and
+    calls_ok = True
+    if args.hits:
+        built_in = rebounds_per_particle(A)
+        last_step = {}
+        for (step, pid) in A:
+            last_step[pid] = max(step, last_step.get(pid, -1))
+        logged, trailing = logged_hits_per_particle(args.hits, last_step)
+        pids_all = set(built_in) | set(logged)
+        off = [p for p in pids_all if built_in.get(p, 0) != logged.get(p, 0)]
+        print("hook calls per particle equal code_saturne's built-in rebounds: %d particles, "
+              "%d rebounds, %d hook calls, %d particles differ (%d calls in the step a "
+              "particle left the domain, not in any trajectory row)"
+              % (len(pids_all), sum(built_in.values()), sum(logged.values()), len(off),
+                 trailing))
+        calls_ok = not off and sum(logged.values()) > 0
+    ok = (not only_a and not only_b and n_cell_diff == 0 and calls_ok and
           (n_text_diff == 0 if args.tol == 0.0 else mx <= args.tol))
     print("CHECK (a): %s" % ("PASS" if ok else "FAIL"))
     return 0 if ok else 1

@@ -29,6 +29,9 @@ for mode in builtin user; do
   "$work/a-$mode/run.sh" > "$work/a-$mode.log" 2>&1 || { tail -30 "$work/a-$mode.log" >&2; exit 1; }
 done
 python3 "$here/compare_traj.py" "${resu[builtin]}" "${resu[user]}" --tol "${TOL:-0}" --hits "${resu[user]}"
+resu_c=$("$here/setup_case.sh" rough user "$work/c")
+"$work/c/run.sh" > "$work/c.log" 2>&1 || { tail -30 "$work/c.log" >&2; exit 1; }
+python3 "$here/compare_traj.py" "${resu[user]}" "$resu_c" --rough
 t1=$(date +%s.%N)
 resu_b=$("$here/setup_case.sh" glass-steel user "$work/b")
 "$work/b/run.sh" > "$work/b.log" 2>&1 || { tail -30 "$work/b.log" >&2; exit 1; }

@@ -9,12 +9,14 @@
 #                      y = 0 whose lay direction is 60 deg from x in the floor plane, so they
 #                      arrive at alpha- = -15 deg, beta- = 60 deg; Sec. 4 glass-steel wall
 #                      (3.8, 7.5) deg, Sommerfeld-Huber preset (check (b))
+#   SCENE rough        the smooth scene with a rough elastic roughwall wall (3.8, 7.5) deg:
+#                      the trajectories after a hit must differ from the smooth ones (check (c))
 # The roughwall header and library: ROUGHWALL_INCLUDE (default <repo>/include) and
 # ROUGHWALL_LIB (the directory of libroughwall.so, default <repo>/target/release).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-usage="usage: setup_case.sh smooth|glass-steel builtin|user OUTDIR [NPROCS]"
+usage="usage: setup_case.sh smooth|rough|glass-steel builtin|user OUTDIR [NPROCS]"
 scene=${1:?$usage} mode=${2:?$usage} outdir=${3:?$usage} nprocs=${4:-1}
 case $mode in builtin) user_mode=0 ;; user) user_mode=1 ;; *) echo "$usage" >&2; exit 2 ;; esac
 export USER=${USER:-root}
@@ -30,6 +32,11 @@ case $scene in
     mesh_args=""
     defs="$defs -DCSWM_SCENE=1 -DCSWM_N_INJECT=50 -DCSWM_NT_MAX=60 -DCSWM_DT=0.005"
     defs="$defs -DCSWM_DELTA_XI_DEG=0.0 -DCSWM_DELTA_ZETA_DEG=0.0 -DCSWM_LAW=0 -DCSWM_PRESET=0"
+    ;;
+  rough)
+    mesh_args=""
+    defs="$defs -DCSWM_SCENE=1 -DCSWM_N_INJECT=50 -DCSWM_NT_MAX=60 -DCSWM_DT=0.005"
+    defs="$defs -DCSWM_DELTA_XI_DEG=3.8 -DCSWM_DELTA_ZETA_DEG=7.5 -DCSWM_LAW=0 -DCSWM_PRESET=0"
     ;;
   glass-steel)
     mesh_args="--lx 0.5 --nx 50"

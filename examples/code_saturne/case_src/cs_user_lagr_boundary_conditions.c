@@ -134,7 +134,8 @@ _open_hits_file(void)
   fprintf(_hits_f,
           "step,particle_id,collision_index,face_id,b_zone_id,t_intersect,"
           "xi,yi,zi,u_in_x,u_in_y,u_in_z,n_x,n_y,n_z,"
-          "n_dot_outward,u_out_x,u_out_y,u_out_z,status,gamma,gamma_star,candidate_walls\n");
+          "n_dot_outward,u_out_x,u_out_y,u_out_z,status,gamma,gamma_star,candidate_walls,"
+          "diameter\n");
 }
 
 #endif
@@ -270,13 +271,14 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
     _open_hits_file();
   fprintf(_hits_f,
           "%d,%llu,%llu,%ld,%d,%.17g,%.17g,%.17g,%.17g,"
-          "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g,%.17g,%u\n",
+          "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%.17g,%.17g,%u,"
+          "%.17g\n",
           cs_glob_time_step->nt_cur, pid, cidx, (long)face_id, b_zone_id,
           t_intersect, c_intersect[0], c_intersect[1], c_intersect[2],
           hit.velocity[0], hit.velocity[1], hit.velocity[2],
           face_norm[0], face_norm[1], face_norm[2], n_dot_out,
           res.velocity[0], res.velocity[1], res.velocity[2], status,
-          res.gamma, res.gamma_star, res.candidate_walls);
+          res.gamma, res.gamma_star, res.candidate_walls, diameter);
   _n_hits++;
   if (_n_hits % 256 == 0)
     fflush(_hits_f);

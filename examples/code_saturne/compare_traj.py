@@ -56,24 +56,28 @@ def load(rundir):
 INJECTED = [(0.5, 1.0, 0.7), (0.6, -0.9, -0.5)]
 
 
-def rebounds_per_particle(rows):
-    """Built-in rebounds per particle: sign changes of u, v, w from the injection velocity
-    (the set whose magnitudes the first step has; drag changes them by ~1e-4) through the
-    steps."""
+def velocity_sequences(rows):
+    """Per particle, its velocities (u, v, w) step by step, led by its injection velocity
+    (the set whose magnitudes the first step has; drag changes them by ~1e-4)."""
     by_pid = {}
     for (step, pid), r in rows.items():
         by_pid.setdefault(pid, []).append((step, [float(r[c]) for c in ("u", "v", "w")]))
-    count = {}
     for pid, seq in by_pid.items():
         seq.sort()
         v1 = seq[0][1]
         start = min(INJECTED, key=lambda s: sum((abs(a) - abs(b)) ** 2 for a, b in zip(v1, s)))
-        seq = [(0, list(start))] + seq
-        n = 0
-        for (_, a), (_, b) in zip(seq, seq[1:]):
-            n += sum(1 for x, y in zip(a, b) if x * y < 0)
-        count[pid] = n
-    return count
+        seq.insert(0, (0, list(start)))
+    return by_pid
+
+
+def rebounds_per_particle(rows):
+    """Built-in rebounds per particle: sign changes of u, v, w from step to step."""
+    return {
+        pid: sum(
+            sum(1 for x, y in zip(a, b) if x * y < 0) for (_, a), (_, b) in zip(seq, seq[1:])
+        )
+        for pid, seq in velocity_sequences(rows).items()
+    }
 
 
 def logged_hits_per_particle(rundir, last_step):
@@ -92,17 +96,9 @@ def logged_hits_per_particle(rundir, last_step):
 
 
 def first_hit_step(rows):
-    """Per particle, the first step at which its velocity changed sign (its first hit),
-    from the injection velocity on (see `rebounds_per_particle`)."""
-    by_pid = {}
-    for (step, pid), r in rows.items():
-        by_pid.setdefault(pid, []).append((step, [float(r[c]) for c in ("u", "v", "w")]))
+    """Per particle, the first step at which its velocity changed sign (its first hit)."""
     first = {}
-    for pid, seq in by_pid.items():
-        seq.sort()
-        v1 = seq[0][1]
-        start = min(INJECTED, key=lambda s: sum((abs(a) - abs(b)) ** 2 for a, b in zip(v1, s)))
-        seq = [(0, list(start))] + seq
+    for pid, seq in velocity_sequences(rows).items():
         for (_, a), (s, b) in zip(seq, seq[1:]):
             if any(x * y < 0 for x, y in zip(a, b)):
                 first[pid] = s

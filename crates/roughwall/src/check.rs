@@ -83,27 +83,35 @@ pub fn check_length(key: &str, len: usize, max: usize, what: &str, allowed: &str
     Ok(())
 }
 
-/// What a path that exists but is not a regular file is ("a directory", "a FIFO", …); `None`
-/// for a regular file (after links) or a path that does not exist. Read before opening:
-/// opening a FIFO would wait for a writer.
-pub fn not_a_regular_file(path: &Path) -> Option<&'static str> {
+/// What a file type is, for messages: "a regular file", "a directory", "a symbolic link",
+/// "a FIFO", "a character device", "a block device", "a socket".
+pub fn file_type_name(ft: &std::fs::FileType) -> &'static str {
     use std::os::unix::fs::FileTypeExt;
-    let t = std::fs::metadata(path).ok()?.file_type();
-    Some(if t.is_file() {
-        return None;
-    } else if t.is_dir() {
-        "a directory"
-    } else if t.is_fifo() {
+    if ft.is_fifo() {
         "a FIFO"
-    } else if t.is_char_device() {
+    } else if ft.is_char_device() {
         "a character device"
-    } else if t.is_block_device() {
+    } else if ft.is_block_device() {
         "a block device"
-    } else if t.is_socket() {
+    } else if ft.is_socket() {
         "a socket"
+    } else if ft.is_symlink() {
+        "a symbolic link"
+    } else if ft.is_dir() {
+        "a directory"
+    } else if ft.is_file() {
+        "a regular file"
     } else {
         "not a regular file"
-    })
+    }
+}
+
+/// What a path that exists but is not a regular file is ("a directory", "a FIFO", …; see
+/// [`file_type_name`]); `None` for a regular file (after links) or a path that does not
+/// exist. Read before opening: opening a FIFO would wait for a writer.
+pub fn not_a_regular_file(path: &Path) -> Option<&'static str> {
+    let t = std::fs::metadata(path).ok()?.file_type();
+    (!t.is_file()).then(|| file_type_name(&t))
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! Finnie's ductile erosion (I. Finnie, *Erosion of surfaces by solid particles*, Wear 3 (1960)
 //! 87–103), in the form OpenFOAM's `particleErosion` cloud function implements (Qian et al.
-//! 2022 couple the same law; docs/physics.md §8 give its angle function for K = 6):
+//! 2022 couple the same law; docs/physics.md §8 gives its angle function for K = 2):
 //!
 //! `V = m|U|²/(p ψ K) · (sin 2α − (6/K) sin²α)` for `tan α < K/6`, and
 //! `V = m|U|²/(p ψ K) · K cos²α / 6` otherwise,
@@ -79,12 +79,12 @@ mod tests {
     }
 
     #[test]
-    fn limits_and_the_physics_notes_form() {
+    fn limits_and_the_physics_md_form() {
         // Grazing: nothing; normal incidence: K cos²α/6 = 0 (no cutting).
         assert_eq!(F.angle_function(0.0), 0.0);
         assert!(F.angle_function(std::f64::consts::FRAC_PI_2).abs() < 1e-16);
-        // K = 6: sin 2α − sin²α = the notes' sin 2γ − 3 sin²γ scaled? No: the notes write
-        // Finnie's classic f(γ) = sin 2γ − 3 sin²γ (tan γ ≤ 1/3), cos²γ/3 above: K = 2.
+        // docs/physics.md §8 writes Finnie's classic f(γ) = sin 2γ − 3 sin²γ (tan γ ≤ 1/3),
+        // cos²γ/3 above: the law at K = 2.
         let a = 0.2_f64;
         assert!((F.angle_function(a) - (2.0 * a).sin() + 3.0 * a.sin().powi(2)).abs() < 1e-15);
         let b = 1.0_f64;

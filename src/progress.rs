@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 static HIDDEN: AtomicBool = AtomicBool::new(false);
 
 /// Seconds between two log lines, as `f64` bits (`--log-every`; 0: none).
-static LOG_EVERY_S: AtomicU64 = AtomicU64::new(0x403E_0000_0000_0000); // 30.0
+static LOG_EVERY_S: AtomicU64 = AtomicU64::new(f64::to_bits(30.0));
 
 /// How long a run goes before its log gives an estimate.
 const ESTIMATE_AFTER: Duration = Duration::from_secs(1);

@@ -2,12 +2,12 @@
 //! procedure written out in docs/physics.md §3): one rebound of a particle from the
 //! statistical anisotropic rough wall.
 //!
-//! This is the library entry point a CFD (Euler–Lagrange) code calls once per wall
-//! collision: it needs only the incident state, the wall's two deviations, the
-//! collision law and a random generator — no surface, no tables.
+//! Its entry point, [`super::rebound`] (the dispatcher's paper variant), is what a CFD
+//! (Euler–Lagrange) code calls once per wall collision: it needs only the incident state, the
+//! wall's two deviations, the collision law and a random generator — no surface, no tables.
 
 use super::shadow_effect::ShadowSampler;
-use super::virtual_wall::{guard_rebound, trivial, Rebound, SeenWall, MAX_TRIES};
+use super::virtual_wall::{guard_rebound, Rebound, SeenWall, MAX_TRIES};
 use crate::angles::incident_angles;
 use crate::collision::CollisionLaw;
 use crate::wall::{
@@ -164,70 +164,6 @@ fn accept_single_collision<R: Rng + ?Sized>(
     let u: f64 = rng.gen();
     let q = t0 + t0 * t0;
     u * (1.0 + q) < q || u < (psi * y.asin() / sd).tanh()
-}
-
-/// One rebound of a particle from the statistical anisotropic rough wall
-/// (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; docs/physics.md §3 steps 1–7).
-///
-/// 1. `α⁻, β⁻` of `u_in`, then `Δγ, Δγ*, Cov(γ, γ*)` (Eq. 26).
-/// 2. `γ` from the shadow-effect law `P_eff(γ | α⁻)` (Eqs. 31–33), sampled exactly
-///    ([`ShadowSampler`]).
-/// 3. `γ*` from the conditional normal law given `γ` (Eqs. 29–30).
-/// 4. The unit normal `n` (Eq. 23, exact unit vector); if `U⁻·n ≥ 0`, back to 2.
-/// 5. The collision law in the frame of `n` ([`CollisionLaw::collide`], Eqs. 36–42).
-/// 6. `α⁺`; reject if `α⁺ ≤ 0` or with probability `1 − tanh(ψ α⁺/Δγ(β⁺))`
-///    (Eqs. 34–35) and go back to 2 with the same incident state.
-/// 7. Return `U⁺, ω⁺`.
-///
-/// `psi` is ψ of Eq. (34) (2 in the paper); `diameter_m` the particle diameter (m).
-/// A smooth wall (`Δξ = Δζ = 0`) is one collision with the mean wall, exactly. A
-/// non-positive or non-finite `psi` cannot accept any candidate: the smooth-wall
-/// collision is returned with `tries = MAX_TRIES` (callers validate `psi`).
-///
-/// Precondition: the particle moves towards the wall, `u_in.y < 0`; otherwise the
-/// input is returned unchanged with `tries = 0`.
-///
-/// ```
-/// use nalgebra::Vector3;
-/// use rand::SeedableRng;
-/// use roughwall::collision::{CollisionLaw, ShParams};
-/// use roughwall::stochastic::rebound;
-/// use roughwall::wall::Deviations;
-///
-/// // Glass bead (D = 500 µm) hitting a steel wall at α⁻ = −15°, β⁻ = 60°.
-/// let wall = Deviations { delta_xi: 3.8_f64.to_radians(), delta_zeta: 7.5_f64.to_radians() };
-/// let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
-/// let u_in = roughwall::angles::velocity_from_angles(6.0, (-15f64).to_radians(), 60f64.to_radians());
-/// let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(42);
-/// let out = rebound(u_in, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
-/// assert!(out.velocity.y > 0.0);                      // leaves the wall
-/// assert!(out.velocity.norm() <= u_in.norm() + 1e-12); // no energy gain
-/// assert!(out.tries >= 1);
-/// ```
-pub fn rebound<R: Rng + ?Sized>(
-    u_in: Vector3<f64>,
-    omega_in: Vector3<f64>,
-    wall: &Deviations,
-    law: &CollisionLaw,
-    psi: f64,
-    diameter_m: f64,
-    rng: &mut R,
-) -> Rebound {
-    let smooth_wall = wall.delta_xi == 0.0 && wall.delta_zeta == 0.0;
-    if let Some(done) = trivial(u_in, omega_in, smooth_wall, law, psi, diameter_m) {
-        return done;
-    }
-    let (alpha, beta) = incident_angles(&u_in);
-    Incidence::new(alpha, beta, wall).rebound_observed(
-        u_in,
-        omega_in,
-        wall,
-        law,
-        psi,
-        diameter_m,
-        rng,
-        |_, _, _| {},
-    )
 }
 
 #[cfg(test)]

@@ -1,4 +1,5 @@
-//! One rebound from whichever rough-wall model a [`Variant`] names: the paper's
+//! One rebound from whichever rough-wall model a [`Variant`] names ([`rebound`] is the
+//! paper's, the entry point a CFD code calls once per wall collision): the paper's
 //! ([`super::rebound_model`]), one of the models CFD codes ship ([`super::cfd_models`]) or
 //! the calibrated one ([`crate::calibrated`]). Each model keeps its own view of an incident
 //! direction ([`ModelIncidence`]); this module only chooses.
@@ -45,8 +46,67 @@ impl ModelIncidence {
     }
 }
 
-/// [`super::rebound`] with the virtual walls drawn by `variant` ([`super::variants`]); the
-/// paper's variant is [`super::rebound`] exactly.
+/// One rebound of a particle from the statistical anisotropic rough wall
+/// (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; docs/physics.md §3 steps 1–7).
+///
+/// 1. `α⁻, β⁻` of `u_in`, then `Δγ, Δγ*, Cov(γ, γ*)` (Eq. 26).
+/// 2. `γ` from the shadow-effect law `P_eff(γ | α⁻)` (Eqs. 31–33), sampled exactly
+///    ([`ShadowSampler`]).
+/// 3. `γ*` from the conditional normal law given `γ` (Eqs. 29–30).
+/// 4. The unit normal `n` (Eq. 23, exact unit vector); if `U⁻·n ≥ 0`, back to 2.
+/// 5. The collision law in the frame of `n` ([`CollisionLaw::collide`], Eqs. 36–42).
+/// 6. `α⁺`; reject if `α⁺ ≤ 0` or with probability `1 − tanh(ψ α⁺/Δγ(β⁺))`
+///    (Eqs. 34–35) and go back to 2 with the same incident state.
+/// 7. Return `U⁺, ω⁺`.
+///
+/// `psi` is ψ of Eq. (34) (2 in the paper); `diameter_m` the particle diameter (m).
+/// A smooth wall (`Δξ = Δζ = 0`) is one collision with the mean wall, exactly. A
+/// non-positive or non-finite `psi` cannot accept any candidate: the smooth-wall
+/// collision is returned with `tries = MAX_TRIES` (callers validate `psi`).
+///
+/// Precondition: the particle moves towards the wall, `u_in.y < 0`; otherwise the
+/// input is returned unchanged with `tries = 0`.
+///
+/// ```
+/// use nalgebra::Vector3;
+/// use rand::SeedableRng;
+/// use roughwall::collision::{CollisionLaw, ShParams};
+/// use roughwall::stochastic::rebound;
+/// use roughwall::wall::Deviations;
+///
+/// // Glass bead (D = 500 µm) hitting a steel wall at α⁻ = −15°, β⁻ = 60°.
+/// let wall = Deviations { delta_xi: 3.8_f64.to_radians(), delta_zeta: 7.5_f64.to_radians() };
+/// let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
+/// let u_in = roughwall::angles::velocity_from_angles(6.0, (-15f64).to_radians(), 60f64.to_radians());
+/// let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(42);
+/// let out = rebound(u_in, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
+/// assert!(out.velocity.y > 0.0);                      // leaves the wall
+/// assert!(out.velocity.norm() <= u_in.norm() + 1e-12); // no energy gain
+/// assert!(out.tries >= 1);
+/// ```
+pub fn rebound<R: Rng + ?Sized>(
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    rng: &mut R,
+) -> Rebound {
+    rebound_variant(
+        u_in,
+        omega_in,
+        wall,
+        law,
+        psi,
+        diameter_m,
+        Variant::PAPER,
+        rng,
+    )
+}
+
+/// [`rebound`] with the virtual walls drawn by `variant` ([`super::variants`]); the paper's
+/// variant is [`rebound`].
 #[allow(clippy::too_many_arguments)]
 pub fn rebound_variant<R: Rng + ?Sized>(
     u_in: Vector3<f64>,

@@ -66,18 +66,18 @@ impl RunOutputs {
         key: &ConditionKey,
         quantity: &str,
         pdf: &BinnedPdf,
-    ) -> (f64, f64, Option<f64>) {
+    ) -> (f64, Option<f64>, Option<f64>) {
         match Quantity::from_name(quantity).and_then(|q| self.tables.estimate(key, q)) {
-            Some(e) => (e.mean, e.std, Some(e.se)),
+            Some(e) => (e.mean, e.std, e.se),
             None => {
                 let (m, s) = pdf.mean_std();
-                (m, s, None)
+                (m, Some(s), None)
             }
         }
     }
 
     /// `(mean, std, se)` of `β⁺ − β⁻` at a condition (Figs. 16–17).
-    pub fn dbeta(&self, key: &ConditionKey) -> Option<(f64, f64, Option<f64>)> {
+    pub fn dbeta(&self, key: &ConditionKey) -> Option<(f64, Option<f64>, Option<f64>)> {
         let pdf = &self.pdfs.get(key)?.iter().find(|e| e.0 == "dbeta")?.1;
         Some(self.moments(key, "dbeta", pdf))
     }
@@ -117,8 +117,8 @@ pub struct ComparisonRow {
     pub l1: f64,
     pub mean_a: f64,
     pub mean_b: f64,
-    pub std_a: f64,
-    pub std_b: f64,
+    pub std_a: Option<f64>,
+    pub std_b: Option<f64>,
     pub se_a: Option<f64>,
     pub se_b: Option<f64>,
 }
@@ -198,8 +198,8 @@ pub fn comparison_table(rows: &[ComparisonRow]) -> CsvTable {
             fmt_num(r.l1),
             fmt_num(r.mean_a),
             fmt_num(r.mean_b),
-            fmt_num(r.std_a),
-            fmt_num(r.std_b),
+            fmt_opt(r.std_a),
+            fmt_opt(r.std_b),
             fmt_opt(r.se_a),
             fmt_opt(r.se_b),
             fmt_opt(r.z()),

@@ -49,6 +49,8 @@ struct Log {
     started: Instant,
     estimated: bool,
     last_line: Instant,
+    /// Time between two lines after the estimate (`None`: no lines).
+    every: Option<Duration>,
     note: String,
 }
 
@@ -73,7 +75,7 @@ impl Log {
                 duration(elapsed + left)
             ));
         }
-        let every = log_every()?;
+        let every = self.every?;
         if now.duration_since(self.last_line) < every {
             return None;
         }
@@ -134,6 +136,7 @@ impl Progress {
                 started: now,
                 estimated: false,
                 last_line: now,
+                every: log_every(),
                 note: String::new(),
             })
         });
@@ -206,7 +209,7 @@ mod tests {
 
     #[test]
     fn a_log_estimates_once_then_writes_every_interval() {
-        set_log_every(0.05);
+        let every = Duration::from_secs(10);
         let start = Instant::now() - Duration::from_secs(2);
         let mut log = Log {
             label: "stochastic".into(),
@@ -215,6 +218,7 @@ mod tests {
             started: start,
             estimated: false,
             last_line: start,
+            every: Some(every),
             note: String::new(),
         };
         let first = log.lines().unwrap();
@@ -223,14 +227,18 @@ mod tests {
             "{first}"
         );
         assert!(first.ends_with("about 20 s in all"), "{first}");
-        assert_eq!(log.lines(), None);
-        std::thread::sleep(Duration::from_millis(60));
+        assert_eq!(log.lines(), None, "a line before its interval");
+        // An interval later (the last line moved back instead of waiting for it).
+        log.last_line -= every;
         log.done = 500;
         let line = log.lines().unwrap();
         assert!(
             line.starts_with("stochastic: 500/1000 particles (50.0 %) after 2 s"),
             "{line}"
         );
-        set_log_every(30.0);
+        assert_eq!(log.lines(), None, "two lines in one interval");
+        log.every = None;
+        log.last_line -= every;
+        assert_eq!(log.lines(), None, "--log-every 0 writes no lines");
     }
 }

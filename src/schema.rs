@@ -100,8 +100,8 @@ fn opt(x: Option<f64>) -> String {
 pub fn summary_row(r: &ConditionResult) -> Vec<String> {
     let s = &r.summary;
     let mean = |e: Option<Estimate>| opt(e.map(|e| e.mean));
-    let std = |e: Option<Estimate>| opt(e.map(|e| e.std));
-    let se = |e: Option<Estimate>| opt(e.map(|e| e.se));
+    let std = |e: Option<Estimate>| opt(e.and_then(|e| e.std));
+    let se = |e: Option<Estimate>| opt(e.and_then(|e| e.se));
     vec![
         fmt_key(s.condition.alpha_in_deg()),
         fmt_key(s.condition.beta_in_deg()),
@@ -128,7 +128,7 @@ pub fn summary_row(r: &ConditionResult) -> Vec<String> {
         se(s.dbeta_first),
         se(s.gamma),
         se(s.gamma_star),
-        opt(s.p_single.map(|p| p.se)),
+        opt(s.p_single.and_then(|p| p.se)),
         se(s.collisions),
         se(s.speed_ratio),
     ]
@@ -140,11 +140,14 @@ fn erosion_cells(r: &ConditionResult) -> Vec<String> {
         return vec![String::new(); SUMMARY_EROSION_HEADER.len()];
     };
     let sci = |x: Option<f64>| x.map(fmt_sci).unwrap_or_default();
-    let pair = |x: Option<Estimate>| [sci(x.map(|e| e.mean)), sci(x.map(|e| e.se))];
+    let pair = |x: Option<Estimate>| [sci(x.map(|e| e.mean)), sci(x.and_then(|e| e.se))];
     let impacts = e.impacts;
     [
         pair(e.per_mass),
-        [opt(impacts.map(|e| e.mean)), opt(impacts.map(|e| e.se))],
+        [
+            opt(impacts.map(|e| e.mean)),
+            opt(impacts.and_then(|e| e.se)),
+        ],
         pair(e.rejected_per_mass),
         pair(e.per_particle),
     ]
@@ -191,8 +194,8 @@ pub fn tables(results: &[ConditionResult]) -> [CsvTable; 3] {
                 q.name().to_string(),
                 e.n.to_string(),
                 f(e.mean),
-                f(e.std),
-                f(e.se),
+                e.std.map(f).unwrap_or_default(),
+                e.se.map(f).unwrap_or_default(),
             ]);
         }
     }
@@ -237,6 +240,15 @@ fn number(s: &str, path: &Path, what: &str) -> Result<f64> {
             path.display()
         ))),
     }
+}
+
+/// [`number`], or `None` for an empty cell (a value undefined for the run, e.g. a standard
+/// deviation of one value).
+fn optional_number(s: &str, path: &Path, what: &str) -> Result<Option<f64>> {
+    if s.is_empty() {
+        return Ok(None);
+    }
+    number(s, path, what).map(Some)
 }
 
 /// Reads `summary.csv`, `pdfs.csv` and (when present) `moments.csv` of a run directory;
@@ -299,8 +311,8 @@ pub fn read_run(dir: &Path, flag: &str) -> Result<RunTables> {
         let e = Estimate {
             n: n.max(0.0) as u64,
             mean: number(cell(row, "mean"), &mp, "mean").map_err(named)?,
-            std: number(cell(row, "std"), &mp, "std").map_err(named)?,
-            se: number(cell(row, "se"), &mp, "se").map_err(named)?,
+            std: optional_number(cell(row, "std"), &mp, "std").map_err(named)?,
+            se: optional_number(cell(row, "se"), &mp, "se").map_err(named)?,
         };
         out.estimates.insert(
             (

@@ -83,15 +83,7 @@ model = "sommerfeld-huber"
 preset = "glass-steel"
 "#,
     );
-    let out = tmp.path().join("sm");
-    rebound(&[
-        "stochastic",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    let out = run_case("stochastic", &case, &tmp.path().join("sm"), &[]);
     for (q, column, lo, hi) in [("alpha_out", 0, -90.0, 90.0), ("dbeta", 1, -180.0, 180.0)] {
         let mut h = Histogram::new(lo, hi, 1.0);
         for v in values.iter().skip(column).step_by(2) {

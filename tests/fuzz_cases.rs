@@ -1148,10 +1148,16 @@ const TEXT_COLUMNS: [&str; 2] = ["model", "quantity"];
 ///   `deterministic`'s: the rejected candidates' erosion columns (`DETERMINISTIC_NA`);
 /// - `pdfs.csv`: `se` of the model curves `gamma_model` and `p_single_model` only;
 /// - `force_sweep.csv`: `contact_time_s` for `hu2021` and for U_N = 0 only;
+/// - a standard deviation or standard error of a single value ("undefined for this run"):
+///   `std`, `se` of a `moments.csv` row with `n = 1`, `std_*`, `se_*` of a `summary.csv` row
+///   with one particle;
 /// - `moments.csv`, `accuracy.csv`, `dynamic_convergence.csv`, `surface_summary.csv`,
-///   `normal_angles.csv` and any other CSV: nowhere.
+///   `normal_angles.csv` and any other CSV: nowhere else.
 fn empty_allowed(cmd: Cmd, file: &str, col: &str, row: &dyn Fn(&str) -> String) -> bool {
+    let spread = col.starts_with("std_") || col.starts_with("se_");
     match file {
+        "moments.csv" => matches!(col, "std" | "se") && row("n") == "1",
+        "summary.csv" if spread && row("particles") == "1" => true,
         "summary.csv" => match cmd {
             Cmd::Stochastic => STOCHASTIC_NA.contains(&col),
             Cmd::Deterministic => DETERMINISTIC_NA.contains(&col),
@@ -1817,6 +1823,19 @@ fn the_judge_flags_what_the_issue_forbids() {
     assert_eq!(
         cats(judge(c, &ran(Some(0), None, ""), &out)),
         ["output: CSV does not parse"]
+    );
+    // A spread of one value is empty; of two values it must be a number.
+    write(
+        "pdfs.csv",
+        "alpha_in_deg,quantity,value,se\n-5,alpha_out,0.2,0.01\n",
+    );
+    write(
+        "moments.csv",
+        "quantity,n,mean,std,se\nalpha_out,1,1.5,,\ndbeta,2,1.5,,\n",
+    );
+    assert_eq!(
+        cats(judge(c, &ran(Some(0), None, ""), &out)),
+        ["output: empty cell", "output: empty cell"]
     );
     std::fs::remove_file(out.join("moments.csv")).unwrap();
     write("pdfs.csv", "alpha_in_deg,quantity,value,se\n");

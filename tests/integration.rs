@@ -8,7 +8,7 @@
 //! must not share the machine with the other tests; `real_systems/` is the target of the
 //! tests against real systems (feature `real-systems`). The library's own tests are in
 //! `crates/roughwall/tests/`. A new test file is added below (the test at the end fails
-//! until it is).
+//! until it is, for this crate's `tests/` and the library's).
 
 mod common;
 
@@ -32,35 +32,54 @@ mod stochastic_variants;
 mod surface_cli;
 mod wall_messages;
 
-/// The test binaries `Cargo.toml` declares besides this one.
-const OWN_BINARIES: [&str; 1] = ["fuzz_cases"];
-
-/// With `autotests = false`, a file in `tests/` that is neither a module here nor its own
-/// `[[test]]` would silently never run.
+/// With `autotests = false`, a test file that is neither a `[[test]]` target of its crate's
+/// `Cargo.toml` nor a module of one would silently never run. Checked here for both crates
+/// of the workspace: their `tests/*.rs` and the files beside a target's `main.rs`.
 #[test]
-fn every_test_file_is_a_module_of_this_binary_or_its_own_target() {
-    let root = common::repo_root();
-    let this = include_str!("integration.rs");
-    let manifest = std::fs::read_to_string(root.join("Cargo.toml")).unwrap();
-    for e in std::fs::read_dir(root.join("tests")).unwrap() {
-        let p = e.unwrap().path();
-        if p.extension().is_none_or(|x| x != "rs") {
-            continue;
-        }
-        let stem = p.file_stem().unwrap().to_string_lossy().into_owned();
-        if stem == "integration" {
-            continue;
-        }
-        if OWN_BINARIES.contains(&stem.as_str()) {
+fn every_test_file_is_a_test_target_or_a_module_of_one() {
+    for krate in [
+        common::repo_root().to_path_buf(),
+        common::repo_root().join("crates/roughwall"),
+    ] {
+        let manifest = std::fs::read_to_string(krate.join("Cargo.toml")).unwrap();
+        let targets: Vec<&str> = manifest
+            .lines()
+            .filter_map(|l| l.strip_prefix("path = \"tests/")?.strip_suffix('"'))
+            .collect();
+        let harnesses: Vec<String> = targets
+            .iter()
+            .filter(|t| !t.contains('/'))
+            .map(|t| std::fs::read_to_string(krate.join("tests").join(t)).unwrap())
+            .collect();
+        let is_module = |text: &str, stem: &str| text.lines().any(|l| l == format!("mod {stem};"));
+        for stem in rust_stems(&krate.join("tests")) {
             assert!(
-                manifest.contains(&format!("path = \"tests/{stem}.rs\"")),
-                "tests/{stem}.rs is not a [[test]] of Cargo.toml"
+                targets.contains(&format!("{stem}.rs").as_str())
+                    || harnesses.iter().any(|h| is_module(h, &stem)),
+                "{}/tests/{stem}.rs is neither a [[test]] of its Cargo.toml nor a `mod {stem};` of one",
+                krate.display()
             );
-        } else {
-            assert!(
-                this.lines().any(|l| l == format!("mod {stem};")),
-                "tests/{stem}.rs is not a module of tests/integration.rs: add `mod {stem};`"
-            );
+        }
+        for dir_target in targets.iter().filter_map(|t| t.strip_suffix("/main.rs")) {
+            let main =
+                std::fs::read_to_string(krate.join("tests").join(dir_target).join("main.rs"))
+                    .unwrap();
+            for stem in rust_stems(&krate.join("tests").join(dir_target)) {
+                assert!(
+                    stem == "main" || is_module(&main, &stem),
+                    "tests/{dir_target}/{stem}.rs is not a `mod {stem};` of tests/{dir_target}/main.rs"
+                );
+            }
         }
     }
+}
+
+/// The stems of the `.rs` files directly in `dir`.
+fn rust_stems(dir: &std::path::Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
+        .map(|p| p.file_stem().unwrap().to_string_lossy().into_owned())
+        .collect()
 }

@@ -122,10 +122,16 @@ fn rust_files(dir: &Path) -> Vec<PathBuf> {
     out
 }
 
-/// The code of a file: comments dropped, unit tests (from `#[cfg(test)]` on) left out.
+/// The code of a file: comments dropped, the unit-test module (from `#[cfg(test)] mod …` on,
+/// by convention the file's last item) left out. A `#[cfg(test)]` on any other item (a
+/// test-only constant or branch) does not cut the file there.
 fn code(text: &str) -> String {
-    let text = text.split("#[cfg(test)]").next().unwrap_or("");
-    text.lines()
+    let cut = text
+        .match_indices("#[cfg(test)]")
+        .find(|(i, m)| text[i + m.len()..].trim_start().starts_with("mod "))
+        .map_or(text.len(), |(i, _)| i);
+    text[..cut]
+        .lines()
         .map(|l| match l.find("//") {
             Some(i) => &l[..i],
             None => l,
@@ -406,4 +412,18 @@ fn strongly_connected(graph: &BTreeMap<String, BTreeSet<String>>) -> Vec<Vec<Str
     }
     s.out.sort();
     s.out
+}
+
+#[test]
+fn only_the_test_module_is_left_out_of_a_files_code() {
+    let text = "use a::b;\n#[cfg(test)]\nconst K: u8 = 1; // x\nuse c::d;\n#[cfg(test)]\nmod tests {\n    use e::f;\n}\n";
+    assert_eq!(
+        code(text),
+        "use a::b;\n#[cfg(test)]\nconst K: u8 = 1; \nuse c::d;"
+    );
+    // The library's C ABI sits after a test-only constant: its imports are scanned.
+    let ffi =
+        std::fs::read_to_string(crate::common::repo_root().join("crates/roughwall/src/ffi.rs"))
+            .unwrap();
+    assert!(code(&ffi).contains("pub unsafe extern \"C\" fn rw_rebound("));
 }

@@ -516,9 +516,21 @@ fn an_edited_tally_with_a_recomputed_checksum_is_refused() {
         .unwrap();
     let n: u64 = line["particles = ".len()..].parse().unwrap();
     let more = body.replacen(line, &format!("particles = {}", n + 1), 1);
+    // The first histogram's first count (after its first bin's index), one more: it no
+    // longer holds its records' values.
+    let hist = body.find("histograms = [[").unwrap() + "histograms = [[".len();
+    let index: &str = body[hist..].split(", ").next().unwrap();
+    let at = hist + index.len() + ", ".len();
+    let first: &str = body[at..].split(',').next().unwrap();
+    let count: u64 = first.parse().unwrap();
+    let binned = format!("{}{}{}", &body[..at], count + 1, &body[at + first.len()..]);
+    // More single-collision histories than histories followed.
+    let single = body.replacen("\nsingle = 0\n", &format!("\nsingle = {}\n", n + 1), 1);
     for (edited, needle) in [
         (nan, "impossible moments"),
         (more, "but its records follow"),
+        (binned, "histogram 0 holds"),
+        (single, "single-collision histories of"),
     ] {
         assert_ne!(edited, body);
         std::fs::write(&file, sealed(&edited)).unwrap();

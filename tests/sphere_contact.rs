@@ -132,16 +132,12 @@ fn a_height_file_gives_a_sphere_its_scale() {
         "name = \"s\"\nseed = 3\n[surface]\nlength_um = 256.0\nnodes = 256\nrms_height_um = 0.37\ncorr_length_x_um = 12.0\ncorr_length_z_um = 6.0\n",
     );
     let heights = tmp.join("h.rbhf");
-    rebound(&[
+    run_case(
         "surface",
-        "--case",
-        surface.to_str().unwrap(),
-        "--out",
-        tmp.join("s").to_str().unwrap(),
-        "--heights",
-        heights.to_str().unwrap(),
-    ])
-    .ok();
+        &surface,
+        &tmp.join("s"),
+        &["--heights", heights.to_str().unwrap()],
+    );
     let body = case("20", "contact = \"sphere\"").replace("rms_height_um = 0.37", "");
     let c = write_case(tmp.path(), "sphere.toml", &body);
     let out = run_case(

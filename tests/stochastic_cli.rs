@@ -332,3 +332,38 @@ fn wall_lengths_below_their_minimum_are_refused() {
         }
     }
 }
+
+/// One particle has a mean but no spread: every std and se cell is empty (not 0) in both
+/// models' `summary.csv` and `moments.csv`, and `compare` reads such a run back (issue 33).
+#[test]
+fn one_particle_writes_no_spread() {
+    let tmp = Dir::new();
+    for model in ["stochastic", "deterministic"] {
+        let out = tmp.join(model);
+        rebound(&[model, "--particles", "1", "--out", out.to_str().unwrap()]).ok();
+        let summary = Csv::read(&out.join("summary.csv"));
+        let moments = Csv::read(&out.join("moments.csv"));
+        for row in summary.records() {
+            assert_eq!(&row["particles"], "1");
+            assert!(!row["mean_alpha_out_deg"].is_empty(), "{model}: no mean");
+            for (name, cell) in summary.header.iter().zip(row.cells()) {
+                if name.starts_with("std_") || name.starts_with("se_") {
+                    assert!(cell.is_empty(), "{model}: {name} = {cell}");
+                }
+            }
+        }
+        for row in moments.records() {
+            assert_eq!(&row["n"], "1");
+            assert_eq!((&row["std"], &row["se"]), ("", ""), "{model}");
+        }
+        let (r, c) = (out.to_str().unwrap(), tmp.join(format!("{model}-compare")));
+        rebound(&["compare", "--a", r, "--b", r, "--out", c.to_str().unwrap()]).ok();
+        let cmp = Csv::read(&c.join("comparison.csv"));
+        for row in cmp
+            .records()
+            .filter(|r| ["alpha_out", "dbeta"].contains(&&r["quantity"]))
+        {
+            assert_eq!((&row["std_a"], &row["z"]), ("", ""), "{model}");
+        }
+    }
+}

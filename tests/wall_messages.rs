@@ -95,15 +95,7 @@ fn c_message(p: &rw_wall_params) -> (i32, String) {
 fn case_message(text: &str, dir: &std::path::Path, k: usize) -> Option<String> {
     let case = write_case(dir, &format!("case{k}.toml"), text);
     let out = dir.join(format!("out{k}"));
-    let run = rebound(&[
-        "stochastic",
-        "--particles",
-        "1000",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let run = rebound_case("stochastic", &case, &out, &["--particles", "1000"]);
     if run.code == 0 {
         return None;
     }

@@ -8,7 +8,7 @@ use crate::runner::TallyOverrides;
 use roughwall::erosion::ErosionSetup;
 use roughwall::error::{Error, Result};
 use roughwall::stochastic::simulate::{tally_spec, ModelSetup};
-use roughwall::stochastic::variants::checked_psi;
+use roughwall::stochastic::variants::{checked_psi, PSI_PAPER};
 use roughwall::stochastic::Variant;
 use roughwall::tally::TallySpec;
 use roughwall::wall::Deviations;
@@ -192,7 +192,12 @@ fn effective_wall(
 impl Case {
     /// ψ of the single-collision probability, Eq. (34): `[stochastic] psi`, default 2 (the paper's).
     pub fn psi(&self) -> Result<f64> {
-        checked_psi(self.stochastic.as_ref().and_then(|s| s.psi).unwrap_or(2.0))
+        checked_psi(
+            self.stochastic
+                .as_ref()
+                .and_then(|s| s.psi)
+                .unwrap_or(PSI_PAPER),
+        )
     }
 
     /// The rough-wall model of `[stochastic] model` and `delta_gamma_deg` (default: the

@@ -338,3 +338,28 @@ impl Case {
             .collect()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The built-in `surface` case (`configs/cases/table1.toml`) is the surface whose Table 1
+    /// statistics the library's `table1_statistics_full_size` test checks: that test types
+    /// the same spec and seed in, so an edit of the shipped case must show here.
+    #[test]
+    fn the_builtin_surface_case_is_the_full_table1_surface() {
+        let case = super::super::parse(super::super::builtin::SURFACE, "built-in").unwrap();
+        assert_eq!(case.seed, Some(1));
+        let spec = case.surface_spec(&mut Vec::new()).unwrap();
+        assert_eq!(
+            spec,
+            SurfaceSpec {
+                length_m: 5e-3,
+                nodes: 5001,
+                rms_height_m: 0.37e-6,
+                corr_length_x_m: Some(12e-6),
+                corr_length_z_m: Some(4e-6),
+            }
+        );
+    }
+}

@@ -11,7 +11,7 @@ use std::path::Path;
 pub struct SweepPoint {
     pub x: f64,
     pub mean: f64,
-    pub std: f64,
+    pub std: Option<f64>,
     pub se: Option<f64>,
 }
 
@@ -43,7 +43,11 @@ pub fn sweep_series(
         } else {
             mean
         },
-        Series::new(name, pts.iter().map(|p| (p.x, p.std)).collect(), kind),
+        Series::new(
+            name,
+            pts.iter().filter_map(|p| Some((p.x, p.std?))).collect(),
+            kind,
+        ),
     ))
 }
 
@@ -118,7 +122,7 @@ pub fn dbeta_sweeps(
                         },
                         mean: e.mean,
                         std: e.std,
-                        se: Some(e.se),
+                        se: e.se,
                     })
                 })
                 .collect();
@@ -146,19 +150,30 @@ mod tests {
     #[test]
     fn sweep_series_sorts_and_needs_two_points() {
         let p = |x, mean, std, se| SweepPoint { x, mean, std, se };
-        assert!(
-            sweep_series("DS", "α⁻", -15.0, vec![p(10.0, 1.0, 2.0, None)], Kind::Line).is_none()
-        );
+        assert!(sweep_series(
+            "DS",
+            "α⁻",
+            -15.0,
+            vec![p(10.0, 1.0, Some(2.0), None)],
+            Kind::Line
+        )
+        .is_none());
         let (m, s) = sweep_series(
             "DS",
             "α⁻",
             -15.0,
-            vec![p(20.0, 1.0, 3.0, Some(0.1)), p(10.0, 0.5, 2.0, Some(0.2))],
+            vec![
+                p(20.0, 1.0, Some(3.0), Some(0.1)),
+                p(10.0, 0.5, Some(2.0), Some(0.2)),
+                p(30.0, 0.7, None, None),
+            ],
             Kind::Line,
         )
         .unwrap();
-        assert_eq!(m.points, vec![(10.0, 0.5), (20.0, 1.0)]);
-        assert_eq!(m.err, vec![0.4, 0.2]);
+        assert_eq!(m.points, vec![(10.0, 0.5), (20.0, 1.0), (30.0, 0.7)]);
+        assert_eq!(m.err[..2], [0.4, 0.2]);
+        assert!(m.err[2].is_nan(), "no error bar without a standard error");
+        // A single particle's spread is undefined: no point on the std curve.
         assert_eq!(s.points, vec![(10.0, 2.0), (20.0, 3.0)]);
         assert_eq!(m.label, "DS, α⁻ = -15°");
     }

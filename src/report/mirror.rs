@@ -27,7 +27,7 @@ fn mean_se(d: &[f64]) -> (f64, Option<f64>) {
     let mut sums = ShiftedSums::default();
     d.iter().for_each(|&x| sums.push(x));
     let m = sums.moments();
-    (m.mean, m.se().filter(|_| m.n >= 2))
+    (m.mean, m.se())
 }
 
 /// One triangulation's runs: (α⁻, β⁻) in thousandths of a degree → column → one value per

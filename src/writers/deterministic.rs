@@ -17,7 +17,7 @@ use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::{ConditionResult, ConditionTally};
 use std::path::Path;
 
-use super::{f, round};
+use super::{f, insert_standard_errors, round};
 
 /// `surface_choice` of `run.toml`: where the surface came from, its grid and (`measure`)
 /// the deviations it has (over all its realisations).
@@ -215,10 +215,7 @@ fn condition_row(
             row.insert("target_reached".into(), toml::Value::Boolean(reached));
         }
     }
-    if let (Some(a), Some(d)) = (r.summary.alpha_out, r.summary.dbeta) {
-        row.insert("se_mean_alpha_out_deg".into(), f(a.se));
-        row.insert("se_mean_dbeta_deg".into(), f(d.se));
-    }
+    insert_standard_errors(&mut row, &r.summary);
     row.insert("lost".into(), toml::Value::Integer(lost.total() as i64));
     row.insert(
         "collision_cap_hits".into(),

@@ -21,6 +21,16 @@ fn f(x: f64) -> toml::Value {
     toml::Value::Float(x)
 }
 
+/// The standard errors of the mean `α⁺` and `β⁺ − β⁻` of a condition's manifest row, when
+/// they are defined (two values or more).
+fn insert_standard_errors(row: &mut toml::Table, s: &roughwall::tally::Summary) {
+    let se = |e: Option<roughwall::tally::Estimate>| e.and_then(|e| e.se);
+    if let (Some(a), Some(d)) = (se(s.alpha_out), se(s.dbeta)) {
+        row.insert("se_mean_alpha_out_deg".into(), f(a));
+        row.insert("se_mean_dbeta_deg".into(), f(d));
+    }
+}
+
 fn round(x: f64, digits: i32) -> f64 {
     let p = 10f64.powi(digits);
     (x * p).round() / p

@@ -12,7 +12,7 @@ use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
 use std::path::Path;
 
-use super::{f, round};
+use super::{f, insert_standard_errors, round};
 
 /// Writes the outputs of a run (or of merged shards) into `dir` (the staging directory of
 /// the run's [`OutputDir`](crate::output::OutputDir)): `summary.csv`, `pdfs.csv`, `moments.csv`, the figures and
@@ -74,10 +74,7 @@ pub fn finish(
         if let Some(ps) = r.summary.p_single {
             row.insert("p_single".into(), f(round(ps.value, 6)));
         }
-        if let (Some(a), Some(d)) = (r.summary.alpha_out, r.summary.dbeta) {
-            row.insert("se_mean_alpha_out_deg".into(), f(a.se));
-            row.insert("se_mean_dbeta_deg".into(), f(d.se));
-        }
+        insert_standard_errors(&mut row, &r.summary);
         row.insert("capped".into(), toml::Value::Integer(c.capped as i64));
         rows.push(toml::Value::Table(row));
         results.push(r);

@@ -39,9 +39,19 @@ pub fn key_hit(pid: u64) -> Hit {
     }
 }
 
-/// Runs a built example; panics with its stderr unless it succeeds; its stdout.
+/// Runs a built example without `LD_LIBRARY_PATH` (it must find `libroughwall.so` by the
+/// path it was linked with); panics with its stderr unless it succeeds; its stdout.
 pub fn run_program(cmd: &Path, args: &[&str]) -> String {
-    let o = Command::new(cmd).args(args).output().unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = Command::new(cmd)
+        .args(args)
+        .env_remove("LD_LIBRARY_PATH")
+        .output()
+        .unwrap();
+    assert!(
+        o.status.success(),
+        "{}: {}",
+        cmd.display(),
+        String::from_utf8_lossy(&o.stderr)
+    );
     String::from_utf8(o.stdout).unwrap()
 }

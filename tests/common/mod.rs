@@ -203,14 +203,7 @@ pub fn run_case(command: &str, case: &Path, out: &Path, extra: &[&str]) -> PathB
 /// `needle` (exit 2) without writing its `--out`.
 pub fn refuse_case(command: &str, case: &Path, dir: &Path, needle: &str) {
     let out = dir.join("never-written");
-    rebound(&[
-        command,
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .refused(needle);
+    rebound_case(command, case, &out, &[]).refused(needle);
     assert!(!out.exists(), "{needle}: wrote {}", out.display());
 }
 

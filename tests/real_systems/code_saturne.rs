@@ -189,15 +189,7 @@ model = "sommerfeld-huber"
 preset = "glass-steel"
 "#,
     );
-    let sm_dir = tmp.path().join("sm");
-    rebound(&[
-        "stochastic",
-        "--case",
-        case.to_str().unwrap(),
-        "--out",
-        sm_dir.to_str().unwrap(),
-    ])
-    .ok();
+    let sm_dir = run_case("stochastic", &case, &tmp.path().join("sm"), &[]);
     for (q, h) in [("alpha_out", &hist_a), ("dbeta", &hist_d)] {
         let ks = ks_against_run(h, &sm_dir, q);
         eprintln!("code_saturne ({n} hits) against rebound stochastic: KS {q} = {ks:.4}");

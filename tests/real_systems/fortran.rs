@@ -2,7 +2,7 @@
 //! by the build line `docs/c-library.md` gives: for the same key, the Fortran call returns
 //! exactly the Rust call, and a zero normal is a status (issue 9).
 
-use crate::common::c_examples::{glass_steel, key_hit};
+use crate::common::c_examples::{glass_steel, key_hit, run_program};
 use crate::common::*;
 use roughwall::wall_model::HitStatus;
 
@@ -37,16 +37,7 @@ fn the_fortran_example_gives_the_rust_rebounds() {
         "{line}: {}",
         String::from_utf8_lossy(&built.stderr)
     );
-    let out = std::process::Command::new(tmp.join("a.out"))
-        .env_remove("LD_LIBRARY_PATH")
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{line}, then ./a.out: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = run_program(&tmp.join("a.out"), &[]);
     let model = glass_steel();
     let mut lines = text.lines();
     assert_eq!(

@@ -68,15 +68,17 @@ pub struct CollisionParams {
     pub model: Option<String>,
     /// `"glass-steel"` ([`ShParams::glass_steel`]).
     pub preset: Option<String>,
-    /// Restitution coefficient beyond `alpha_e_deg`, in (0, 1].
+    /// Restitution coefficient beyond `alpha_e_deg` (Radenkovic & Simonin 2021, Eq. 36), in
+    /// (0, 1].
     pub e_h: Option<f64>,
-    /// Impact angle (degrees) up to which restitution falls, in (0, 90].
+    /// Impact angle (degrees) up to which restitution falls (Eq. 36), in (0, 90].
     pub alpha_e_deg: Option<f64>,
-    /// Friction coefficient at grazing impact, in [0, 2].
+    /// Friction coefficient at grazing impact (Eq. 37 as corrected in docs/physics.md §2),
+    /// in [0, 2] (2: a bound chosen here, far above measured wall friction).
     pub mu_0: Option<f64>,
-    /// Friction coefficient beyond `alpha_mu_deg`, in [0, 2].
+    /// Friction coefficient beyond `alpha_mu_deg` (Eq. 37), in [0, 2].
     pub mu_h: Option<f64>,
-    /// Impact angle (degrees) up to which friction falls, in (0, 90].
+    /// Impact angle (degrees) up to which friction falls (Eq. 37), in (0, 90].
     pub alpha_mu_deg: Option<f64>,
 }
 

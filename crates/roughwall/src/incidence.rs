@@ -15,15 +15,16 @@ pub struct SpeedLaw {
     /// Standard deviation of the drawn speed (m/s); 0 draws nothing and every particle gets
     /// `mean_m_s`. Non-positive draws are redrawn ([`draw_speed`]).
     pub std_m_s: f64,
-    /// Whether the drawn speed is the horizontal speed `u_h` (the paper's convention, the
-    /// default) or the speed `|U|`.
+    /// Whether the drawn speed is the horizontal speed `u_h` (the convention of Radenkovic & Simonin 2021,
+    /// Sec. 4, and the default: docs/physics.md §6) or the speed `|U|`.
     pub reference: SpeedReference,
 }
 
 /// What the drawn speed of a [`SpeedLaw`] is.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum SpeedReference {
-    /// The horizontal speed `u_h` (the paper's convention).
+    /// The horizontal speed `u_h` (Radenkovic & Simonin 2021, Sec. 4: `u⁻ ~ N(5.91, 1.16)`
+    /// m/s is the horizontal projection; docs/physics.md §6).
     #[default]
     Horizontal,
     /// The speed `|U|`.
@@ -41,7 +42,7 @@ impl SpeedReference {
 }
 
 impl SpeedLaw {
-    /// A horizontal-speed law (the paper's convention).
+    /// A horizontal-speed law (Radenkovic & Simonin 2021, Sec. 4; docs/physics.md §6).
     pub const fn horizontal(mean_m_s: f64, std_m_s: f64) -> SpeedLaw {
         SpeedLaw {
             mean_m_s,

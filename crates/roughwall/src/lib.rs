@@ -22,7 +22,7 @@
 //! | --- | --- |
 //! | rebound one particle off a wall from a CFD code (any frame, moving wall, keyed stream) | [`wall_model::WallModel`], or [`ffi`] from C and Fortran |
 //! | draw one rebound in the wall's frame | [`stochastic::rebound`] (paper), [`stochastic::rebound_variant`] (any model) |
-//! | generate a rough surface and measure it | [`surface::generate`], [`surface::stats`] |
+//! | generate a rough surface and measure it | [`surface::generate()`], [`surface::stats`] |
 //! | follow particles on a surface | [`deterministic::Tracker`], [`deterministic::run_condition`] |
 //! | run many particles into tallies with standard errors | [`tally::engine::run`] with [`stochastic::simulate::fill_block`] or [`deterministic::fill_block`] |
 //! | the calibrated model and its table | [`calibrated`] |
@@ -130,8 +130,10 @@
 //! }
 //! ```
 //!
-//! The peak elastic force of a glass prolate spheroid (λ = 2) hitting a wall side-on,
-//! by Hu et al. 2021's fit (Eqs. 7–8) and by the rigid-spheroid Hertz model:
+//! The peak elastic force of a glass prolate spheroid (λ = 2) hitting a wall standing on its
+//! tip (β = 90°, the major axis normal to the wall), by Hu et al. 2021's fit (Eqs. 7–8) and
+//! by the rigid-spheroid Hertz model; the particle and `U_N` are those of Hu et al. 2021,
+//! Fig. 6 (type I glass of Table 1, `D` = 2.45 µm, the captions' 64 GPa: docs/physics.md §7):
 //!
 //! ```
 //! use roughwall::force::{Impact, Model, Particle};

@@ -19,9 +19,11 @@ pub struct Deviations {
 }
 
 /// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
-/// stretched: run, but warn (the paper validates Eq. 14 up to about 7.5°).
+/// stretched: run, but warn (the paper finds Eq. 14 exact up to about 0.13 rad = 7.5°, Sec.
+/// 2.4, Fig. 4, and writes Eq. 15 for that range).
 pub const LOW_ROUGHNESS_LIMIT_DEG: f64 = 7.5;
-/// Beyond this deviation the wall models are not meant to be used at all.
+/// Beyond this deviation the wall models are not meant to be used at all: a bound chosen
+/// here (the paper validates its approximations only up to 7.5°, Sec. 2.4).
 pub const MAX_DEVIATION_DEG: f64 = 20.0;
 
 /// A deviation given in degrees under `key`, checked (0 to [`MAX_DEVIATION_DEG`]; beyond

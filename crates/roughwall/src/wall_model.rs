@@ -105,7 +105,7 @@ impl WallModel {
             delta_zeta: checked_deviation("wall.delta_zeta_deg", p.delta_zeta_deg, &mut warnings)?,
         };
         let law = c.law()?;
-        let psi = checked_psi(p.psi.unwrap_or(2.0))?;
+        let psi = checked_psi(p.psi.unwrap_or(crate::stochastic::variants::PSI_PAPER))?;
         let variant = Variant::checked(p.model.as_deref(), p.delta_gamma_deg)?;
         let built = WallModel {
             wall,
@@ -814,12 +814,53 @@ mod tests {
                         );
                     }
                 }
-                // A power-of-two length within range is the same rebound bit for bit.
-                let doubled = Hit {
-                    normal: base.normal.map(|x| x * 2.0),
-                    ..base
+            }
+        }
+    }
+
+    /// Scaling a direction by a power of two is exact, so a normal or lay direction off the
+    /// axes scaled by 2^k gives the same rebound bit for bit, also beyond the range where its
+    /// squared length would overflow or underflow (2^±600, 2^±1000); a velocity scaled by 2^k
+    /// gives the rebound scaled by 2^k, bit for bit.
+    #[test]
+    fn power_of_two_lengths_give_the_same_rebound_bit_for_bit() {
+        for model in [None, Some("calibrated"), Some("sommerfeld-huber-1999")] {
+            let wall = elastic_rough(model);
+            for pid in 0..20u64 {
+                let base = Hit {
+                    velocity: [0.8, -0.9, -0.4],
+                    spin: [0.0; 3],
+                    normal: [0.3, 1.0, -0.2],
+                    lay: [1.0, 0.1, 0.7],
+                    wall_velocity: [0.0; 3],
+                    diameter_m: 1e-4,
+                    particle_id: pid,
+                    collision_index: 0,
                 };
-                assert_eq!(wall.rebound(&doubled).velocity, want.velocity);
+                let want = wall.rebound(&base);
+                assert_eq!(want.status, HitStatus::Rebound);
+                for k in [-1000, -600, -300, -1, 1, 300, 600, 1000] {
+                    let f = 2f64.powi(k);
+                    let scaled = |v: [f64; 3]| v.map(|x| x * f);
+                    let normal = Hit {
+                        normal: scaled(base.normal),
+                        ..base
+                    };
+                    let lay = Hit {
+                        lay: scaled(base.lay),
+                        ..base
+                    };
+                    assert_eq!(wall.rebound(&normal), want, "{model:?} normal 2^{k}");
+                    assert_eq!(wall.rebound(&lay), want, "{model:?} lay 2^{k}");
+                    if k.abs() < 1000 {
+                        let velocity = Hit {
+                            velocity: scaled(base.velocity),
+                            ..base
+                        };
+                        let got = wall.rebound(&velocity);
+                        assert_eq!(got.velocity, scaled(want.velocity), "{model:?} 2^{k}");
+                    }
+                }
             }
         }
     }

@@ -3,7 +3,8 @@
 //! trapped particle followed from hit to hit.
 //!
 //! Eq. (34) gives the single-collision probability as `tanh(ψ α⁺/Δγ(β⁺))` whatever the
-//! incidence. The deterministic simulation says otherwise: at grazing incidence a particle
+//! incidence. The deterministic simulation says otherwise (`results/REPORT.md`, "A model
+//! within the deterministic noise? The calibrated escape law"): at grazing incidence a particle
 //! hits near the asperity tops and escapes more easily, and after a first collision it
 //! starts low, in a valley. So the model tabulates, per collision *stage* (the first, by the
 //! roughness of its incident plane: [`Stage::first`]; or a later one of the same history,

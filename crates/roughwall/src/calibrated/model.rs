@@ -134,7 +134,9 @@ impl CalibratedIncidence {
     }
 
     /// The proposal's element without the table's correction: the slope along the path from
-    /// the shadow law in slopes, the transverse slope from Eq. (30) in slopes afresh.
+    /// the shadow law in slopes (Radenkovic & Simonin 2021, Eq. 32 at vanishing roughness,
+    /// `(g − x)e^{−g²/2}`: [`super::slope_space::proposal`]), the transverse slope from
+    /// Eq. (30) in slopes afresh.
     #[inline]
     pub fn draw_proposal<R: Rng + ?Sized>(&self, rng: &mut R) -> SeenWall {
         let g = self.sampler.sample(rng) / PROPOSAL_EPS;

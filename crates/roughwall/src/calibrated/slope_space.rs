@@ -8,9 +8,10 @@
 //! (Gaussian surface of Gaussian correlation: its profiles differ only by these scales).
 //! The normal's angles `(γ, γ*)` of Radenkovic & Simonin 2021 (Eqs. 20–21) are not that
 //! variable: `γ = asin(s_l/N)` with `N = √(1 + s_l² + s_t²)` shrinks with the transverse
-//! slope `s_t`, so at one `α/Δγ` the law of `γ/Δγ` moves with `Δγ*` (about 0.01° in the first
-//! element's mean per degree of `Δγ*` at `Δγ` = 6.5°), and a table measured on one wall
-//! would not transfer to another. The transverse slope given the
+//! slope `s_t`, so at one `α/Δγ` the law of `γ/Δγ` moves with `Δγ*`, and a table measured on
+//! one wall did not transfer to another (docs/design-notes.md, "Slopes, not angles": at
+//! α⁻ = −5°, `Δγ` = 6.5°, the angle tables' bias in mean α⁺ went from −0.003° to −0.088° as
+//! `Δγ*` went from 2.5° to 8.7°, the slope tables' to −0.049°). The transverse slope given the
 //! profile is exactly Gaussian too: `s_t = (Cov/σ_l²) s_l + N(0, σ_t² − Cov²/σ_l²)`
 //! (Eq. 30 in slopes; a Gaussian correlation's cross-covariances with the profile are
 //! proportional to the along-path slope's), so no shrink factor is needed there either.
@@ -147,11 +148,7 @@ pub fn reduced_slope(u: &Vector3<f64>, slopes: &Deviations) -> f64 {
 pub fn proposal(x: f64) -> ShadowSampler {
     let x_law = if x.is_nan() { 0.0 } else { x };
     let alpha = x_law.clamp(-PROPOSAL_X_MAX, PROPOSAL_X_MAX) * PROPOSAL_EPS;
-    if x > 0.0 {
-        ShadowSampler::rising(alpha, PROPOSAL_EPS)
-    } else {
-        ShadowSampler::new(alpha, PROPOSAL_EPS)
-    }
+    ShadowSampler::for_trajectory(alpha, PROPOSAL_EPS)
 }
 
 #[cfg(test)]

@@ -78,7 +78,8 @@ pub(super) fn window_ratio_within(d: &[u64], m: &[u64], j: usize, max_k: usize) 
 /// `None` when none holds [`ELEMENT_MIN_COUNT`] draws. Pooling along `x_in` within the stage
 /// keeps the memory that pooling the stages loses: at α⁻ = −32.5°, β⁻ = 90° on the Sec. 3
 /// wall the deterministic next element has a mean `γ/Δγ` of 1.07, 1.50 and 2.00 after `q` in
-/// `[−3, −2.5)`, `[−2.5, −2)` and `[−2, −1.5)`.
+/// `[−3, −2.5)`, `[−2.5, −2)` and `[−2, −1.5)` (docs/design-notes.md, "Multiple collisions
+/// followed").
 pub(super) fn same_stage_ratio(deterministic: &[u64], model: &[u64], c: usize) -> Option<f64> {
     const K: usize = SAME_STAGE_S_CELLS;
     let plane = X_IN_BINS * G_BINS;
@@ -377,7 +378,7 @@ impl EscapeTable {
     /// The probability that a particle leaves the wall after a collision of `stage` from
     /// reduced incident angle `x_in` with reduced rebound angle `x_out` (bilinear between
     /// the rows' positions along `x_in` and the bin centres along `x_out`, clamped at the
-    /// edges; 1 beyond `x_out = 4`, 0 for `x_out ≤ 0`).
+    /// edges; 1 beyond `x_out =` [`X_OUT_MAX`], 0 for `x_out ≤ 0`).
     #[inline]
     pub fn p_escape(&self, stage: Stage, x_in: f64, x_out: f64) -> f64 {
         if x_out.is_nan() || x_out <= 0.0 {

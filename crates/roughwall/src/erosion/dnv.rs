@@ -28,7 +28,8 @@ pub struct Dnv {
     pub n: f64,
     /// Density of the wall material `ρ_t` (kg/m³).
     pub target_density_kg_m3: f64,
-    /// Which angle function `F(α)` applies: ductile (Eq. 3.3) or brittle (`2α/π`).
+    /// Which angle function `F(α)` applies: ductile (Eq. 3.3) or brittle (`2α/π`, pysand's
+    /// brittle function, not an equation of RP-O501: see the module docs).
     pub angle_dependency: AngleDependency,
 }
 

@@ -210,12 +210,14 @@ pub const YOUNGS_RANGE_PA: (f64, f64) = (1e3, 1e13);
 pub const DIAMETER_RANGE_M: (f64, f64) = (1e-9, 1.0);
 /// Aspect ratios λ: spheres to fibres of 1000:1.
 pub const MAX_LAMBDA: f64 = 1000.0;
-/// Normal impact speeds (m/s): 0, or elastic impacts from a micrometre per second (slower,
-/// adhesion decides) to far below hypervelocity. This is the smallest positive `U_N` accepted
-/// (m/s); `U_N = 0` is accepted too.
+/// Normal impact speeds (m/s): 0, or impacts from a micrometre per second (slower, adhesion
+/// decides) up to [`MAX_U_N_M_S`]. This is the smallest positive `U_N` accepted (m/s);
+/// `U_N = 0` is accepted too.
 pub const MIN_U_N_M_S: f64 = 1e-6;
-/// The largest normal impact speed `U_N` accepted (m/s), 10 km/s: far below hypervelocity
-/// (see [`MIN_U_N_M_S`] for the range).
+/// The largest normal impact speed `U_N` accepted (m/s), 10 km/s, where impacts become
+/// hypervelocity: a guard that keeps the arithmetic finite, not a validity limit. The
+/// elastic models hold only while the deformation stays small (Hertz, Hu et al. 2021, Eq. 3
+/// and Sec. 3, Fig. 4: plastic yield sets in far below this speed for most materials).
 pub const MAX_U_N_M_S: f64 = 1e4;
 
 /// What a model returns for one impact.

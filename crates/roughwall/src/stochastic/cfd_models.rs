@@ -41,11 +41,7 @@ impl CfdIncidence {
     /// The direction `(α, β)` (rad) for `model` with the roughness angle `delta_gamma`
     /// (rad).
     pub fn new(model: CfdModel, alpha: f64, beta: f64, delta_gamma: f64) -> CfdIncidence {
-        let sampler = if alpha > 0.0 {
-            ShadowSampler::rising(alpha, delta_gamma)
-        } else {
-            ShadowSampler::new(alpha, delta_gamma)
-        };
+        let sampler = ShadowSampler::for_trajectory(alpha, delta_gamma);
         CfdIncidence {
             model,
             alpha,
@@ -64,8 +60,11 @@ impl CfdIncidence {
         SeenWall::of_normal(normal, self.beta)
     }
 
-    /// A wall element drawn by this model.
-    /// `t` is the horizontal incident direction `(cos β⁻, 0, −sin β⁻)` and `γ > 0` tilts
+    /// A wall element drawn by this model, as each model's source gives it
+    /// ([`super::variants`]: Sommerfeld & Huber 1999 by Radenkovic & Simonin 2021,
+    /// Eqs. 31–33, isotropic; the quoted `gaussian-angle` formula; LIGGGHTS-PFM
+    /// `surface_model_roughness.h` l. 144–213; ELEXI `particle_boundary_condition.f90`
+    /// l. 855–937). `t` is the horizontal incident direction `(cos β⁻, 0, −sin β⁻)` and `γ > 0` tilts
     /// the element towards the particle (local impact angle `|α⁻| + γ`).
     pub(crate) fn draw<R: Rng + ?Sized>(&self, rng: &mut R) -> SeenWall {
         let dg = self.delta_gamma;
@@ -119,7 +118,8 @@ impl CfdIncidence {
 /// cases ruled out by the caller) whose direction is `inc`: a wall element is drawn for the
 /// incident velocity (redrawn while the particle cannot reach it, `U·n ≥ 0`), the collision
 /// law is applied, and a rebound that does not leave the mean wall (`v⁺ ≤ 0`) hits the wall
-/// again: a new element is drawn for the new velocity. `candidates` counts the collisions.
+/// again: a new element is drawn for the new velocity ([`super::virtual_wall::Hits`] gives the
+/// source). `candidates` counts the collisions.
 /// Every collision is reported to `observe` as accepted (each is a real impact).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn rebound_repeated<R: Rng + ?Sized>(

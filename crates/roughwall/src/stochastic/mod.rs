@@ -1,5 +1,5 @@
 //! The stochastic wall models: the anisotropic model of Radenkovic & Simonin 2021
-//! (Sec. 3.3–3.6, Fig. 13; the procedure written out in docs/physics.md §3), the models CFD
+//! (Secs. 3.4–3.6, Fig. 13; the procedure written out in docs/physics.md §3), the models CFD
 //! codes ship, and the runs of many rebounds (the calibrated model is [`crate::calibrated`]).
 //!
 //! * [`shadow_effect`]: the exact sampler and density of `P_eff(γ | α⁻)` (Eqs. 31–33).

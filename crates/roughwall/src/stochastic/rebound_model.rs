@@ -40,11 +40,7 @@ impl Incidence {
     pub fn new(alpha: f64, beta: f64, wall: &Deviations) -> Incidence {
         let moments = rotated_moments(wall, beta);
         let delta_gamma = moments.delta_gamma();
-        let sampler = if alpha > 0.0 {
-            ShadowSampler::rising(alpha, delta_gamma)
-        } else {
-            ShadowSampler::new(alpha, delta_gamma)
-        };
+        let sampler = ShadowSampler::for_trajectory(alpha, delta_gamma);
         Incidence {
             alpha,
             beta,

@@ -115,6 +115,16 @@ impl ShadowSampler {
         Self::build(alpha.clamp(-FRAC_PI_2, FRAC_PI_2 - 1e-3), delta_gamma)
     }
 
+    /// The law for a trajectory at `alpha` (rad), whichever way it moves: [`Self::new`]
+    /// for a particle coming down (`α ≤ 0`), [`Self::rising`] for one going up (`α > 0`).
+    pub fn for_trajectory(alpha: f64, delta_gamma: f64) -> Self {
+        if alpha > 0.0 {
+            Self::rising(alpha, delta_gamma)
+        } else {
+            Self::new(alpha, delta_gamma)
+        }
+    }
+
     fn build(a: f64, delta_gamma: f64) -> Self {
         let s = if delta_gamma.is_finite() {
             delta_gamma.max(0.0)

@@ -51,7 +51,7 @@ impl ModelIncidence {
 ///
 /// 1. `α⁻, β⁻` of `u_in`, then `Δγ, Δγ*, Cov(γ, γ*)` (Eq. 26).
 /// 2. `γ` from the shadow-effect law `P_eff(γ | α⁻)` (Eqs. 31–33), sampled exactly
-///    ([`ShadowSampler`]).
+///    ([`super::shadow_effect::ShadowSampler`]).
 /// 3. `γ*` from the conditional normal law given `γ` (Eqs. 29–30).
 /// 4. The unit normal `n` (Eq. 23, exact unit vector); if `U⁻·n ≥ 0`, back to 2.
 /// 5. The collision law in the frame of `n` ([`CollisionLaw::collide`], Eqs. 36–42).
@@ -169,7 +169,8 @@ pub fn rebound_from<R: Rng + ?Sized>(
 
 /// [`rebound_from`] reporting every candidate rebound to `observe`: the incident velocity,
 /// the normal of the virtual wall hit and whether the rebound was accepted (the last call)
-/// or rejected as a multiple collision (Radenkovic & Simonin 2021, Fig. 13, step 6). The
+/// or rejected as a multiple collision (Radenkovic & Simonin 2021, Eq. 34; docs/physics.md §3
+/// step 6). The
 /// smooth-wall fallback and the trivial cases with a collision report the mean wall `j` as
 /// accepted; the models that follow a trapped particle report every hit as accepted.
 #[allow(clippy::too_many_arguments)]

@@ -6,7 +6,7 @@
 //!
 //! | variant | virtual wall | shadow effect | a rebound into the wall |
 //! | --- | --- | --- | --- |
-//! | `radenkovic-simonin-2021` | `γ`, `γ*` of the anisotropic wall (Eqs. 26, 29–33) | yes (Eq. 31) | rejected with prob. `1 − tanh(ψα⁺/Δγ)` or when `α⁺ ≤ 0`, redrawn for the same incident particle (Eq. 34) |
+//! | `radenkovic-simonin-2021` | `γ`, `γ*` of the anisotropic wall (Eqs. 26, 29–33) | yes (Eqs. 31–33) | rejected with prob. `1 − tanh(ψα⁺/Δγ)` or when `α⁺ ≤ 0`, redrawn for the same incident particle (Eq. 34) |
 //! | `sommerfeld-huber-1999` | isotropic: `γ` from the shadow law with `Δγ`, `γ* ~ N(0, Δγ)` | yes | hits the wall again (a new virtual wall for the new velocity) |
 //! | `gaussian-angle` | `α₁ = max(α + Δγ N(0,1), 0)`: a tilt in the incident plane only | no | hits again |
 //! | `gaussian-tilt` | tilt `δ = \|Δγ N(0,1)\|`, azimuth uniform in `[0, π)` towards the particle | no | hits again |
@@ -48,6 +48,10 @@ use crate::wall::{Deviations, MAX_DEVIATION_DEG};
 /// ψ of Eq. (34): the paper uses 2 (Konan et al. 1.5); below 0.01 almost every candidate
 /// rebound is rejected (hundreds of redraws per rebound), above 100 none is.
 pub const PSI_RANGE: (f64, f64) = (0.01, 100.0);
+
+/// ψ of Eq. (34) when none is given: Radenkovic & Simonin 2021's 2 (Sec. 3.5, Fig. 12;
+/// docs/physics.md §3 step 6).
+pub const PSI_PAPER: f64 = 2.0;
 
 /// ψ of Eq. (34) under the key `stochastic.psi`, checked against [`PSI_RANGE`].
 pub fn checked_psi(psi: f64) -> Result<f64> {

@@ -20,9 +20,11 @@ pub struct SeenWall {
     pub gamma: f64,
     /// Inclination `γ*` normal to the incident plane (rad, Eq. 21).
     pub gamma_star: f64,
-    /// Fluctuation `ξ' = ξ − π/2` of the normal's angle with `x` (rad, Eq. 23).
+    /// Fluctuation `ξ' = ξ − π/2` of the normal's angle with `x` (rad, Eq. 4; from `γ, γ*`
+    /// by Eq. 23).
     pub xi: f64,
-    /// Fluctuation `ζ' = ζ − π/2` of the normal's angle with `z` (rad, Eq. 23).
+    /// Fluctuation `ζ' = ζ − π/2` of the normal's angle with `z` (rad, Eq. 4; from `γ, γ*`
+    /// by Eq. 23).
     pub zeta: f64,
     /// Unit normal (Eqs. 10, 23, exact unit vector).
     pub normal: Vector3<f64>,
@@ -129,7 +131,9 @@ impl Rebound {
 
 /// The rebounds that need no random draw: a particle not moving towards the wall (or a
 /// non-finite input) is returned unchanged with `tries = 0`; a smooth wall (or a `psi` that
-/// can accept nothing) gives the collision with the mean wall.
+/// can accept nothing) gives the collision with the mean wall. These are this project's
+/// rules for the hard cases of docs/physics.md §9, not the paper's (its procedure, §3,
+/// assumes a rough wall and a particle that reaches it).
 pub(crate) fn trivial(
     u_in: Vector3<f64>,
     omega_in: Vector3<f64>,
@@ -170,7 +174,9 @@ pub(crate) fn trivial(
     None
 }
 
-/// After [`MAX_TRIES`] candidate walls: the collision with the mean (smooth) wall `j`.
+/// After [`MAX_TRIES`] candidate walls: the collision with the mean (smooth) wall `j` (a
+/// guard of this project, docs/physics.md §9: never a hang; the paper's procedure, §3, has
+/// no cap).
 pub(crate) fn guard_rebound(
     u: Vector3<f64>,
     w: Vector3<f64>,
@@ -198,7 +204,10 @@ pub(crate) fn guard_rebound(
 /// The models that follow a particle from hit to hit until it leaves the wall (the simpler
 /// variants and the calibrated model): each hit draws an element for the particle's current
 /// direction, applies the collision law, and either lets the particle leave or goes on with
-/// the rebound velocity.
+/// the rebound velocity. A rebound that does not leave meets a new virtual wall (Sommerfeld
+/// & Zivkovic 1992, as Radenkovic & Simonin 2021, Sec. 1, describe it; for `calibrated`,
+/// docs/design-notes.md, "Multiple collisions followed"), unlike the paper's model, which
+/// redraws the same incident particle (Eq. 34).
 pub(crate) struct Hits<'a> {
     pub law: &'a CollisionLaw,
     pub diameter_m: f64,

@@ -460,7 +460,7 @@ impl ConditionTally {
     }
 
     /// Standard errors (degrees) of the running mean `α⁺` and mean `β⁺ − β⁻`, the
-    /// quantities the stopping rule watches; `None` before any particle was followed.
+    /// quantities the stopping rule watches; `None` before two particles were followed.
     pub fn running_se(&self) -> Option<(f64, f64)> {
         Some((self.running[ALPHA_OUT].se()?, self.running[DBETA].se()?))
     }
@@ -691,14 +691,14 @@ mod tests {
         assert_eq!(s.particles, 1000);
         let p = s.p_single.unwrap();
         assert_eq!(p.value, 0.5);
-        assert!((p.se - (0.25f64 / 1000.0).sqrt()).abs() < 1e-15);
+        assert!((p.se.unwrap() - (0.25f64 / 1000.0).sqrt()).abs() < 1e-15);
         let c = s.collisions.unwrap();
         assert_eq!(c.mean, 1.5);
-        assert!((c.std - (250.0f64 / 999.0).sqrt()).abs() < 1e-12);
+        assert!((c.std.unwrap() - (250.0f64 / 999.0).sqrt()).abs() < 1e-12);
         assert_eq!(s.max_collisions, Some(2));
         assert_eq!(s.lost, Some(0));
         let a = s.alpha_out.unwrap();
-        assert!((a.se - a.std / 1000f64.sqrt()).abs() < 1e-15);
+        assert!((a.se.unwrap() - a.std.unwrap() / 1000f64.sqrt()).abs() < 1e-15);
         for pdf in r.pdfs.iter().filter(|p| p.quantity.is_density()) {
             let integral: f64 = pdf.bins.iter().map(|b| b.value * (b.hi - b.lo)).sum();
             assert!((integral - 1.0).abs() < 1e-12, "{:?}", pdf.quantity);
@@ -726,7 +726,7 @@ mod tests {
         assert!((p.value - 100.0 / 150.0).abs() < 1e-15);
         // Delta method: p² sd(c)/√n with sd(c) of 50 ones and 50 twos.
         let sd = (25.0f64 / 99.0).sqrt();
-        assert!((p.se - p.value * p.value * sd / 10.0).abs() < 1e-15);
+        assert!((p.se.unwrap() - p.value * p.value * sd / 10.0).abs() < 1e-15);
         assert_eq!(r.summary.lost, None);
         assert!(r.summary.collisions.is_none() && r.summary.dbeta_first.is_none());
         assert!(r.pdf(Quantity::PSingleGivenAlphaOut).is_none());

@@ -39,16 +39,17 @@ impl Moments {
         self.n = n;
     }
 
-    /// Sample standard deviation (divisor `n − 1`; 0 for a single value), `None` when empty.
+    /// Sample standard deviation (divisor `n − 1`), `None` for fewer than two values (it is
+    /// undefined, not 0).
     pub fn std(&self) -> Option<f64> {
         match self.n {
-            0 => None,
-            1 => Some(0.0),
+            0 | 1 => None,
             n => Some((self.m2.max(0.0) / (n - 1) as f64).sqrt()),
         }
     }
 
-    /// Standard error of the mean, `std / √n` (independent values), `None` when empty.
+    /// Standard error of the mean, `std / √n` (independent values), `None` for fewer than
+    /// two values.
     pub fn se(&self) -> Option<f64> {
         self.std().map(|s| s / (self.n as f64).sqrt())
     }
@@ -148,7 +149,8 @@ mod tests {
         assert_eq!(Moments::default().std(), None);
         let mut s = ShiftedSums::default();
         s.push(3.0);
-        assert_eq!(s.moments().std(), Some(0.0));
+        assert_eq!((s.moments().std(), s.moments().se()), (None, None));
+        assert_eq!(s.moments().mean(), Some(3.0));
         for _ in 0..99 {
             s.push(3.0);
         }

@@ -6,17 +6,19 @@ use super::quantity::Quantity;
 use crate::incidence::IncidentCondition;
 use crate::wall::Deviations;
 
-/// Mean, standard deviation and standard error of the mean of `n` values.
+/// Mean, standard deviation and standard error of the mean of `n ≥ 1` values.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Estimate {
     /// Number of values.
     pub n: u64,
     /// Mean of the values, in their unit (degrees for angles).
     pub mean: f64,
-    /// Sample standard deviation (divisor `n − 1`; 0 for a single value), same unit.
-    pub std: f64,
-    /// Standard error of the mean, `std/√n` (independent values), same unit.
-    pub se: f64,
+    /// Sample standard deviation (divisor `n − 1`), same unit; `None` for a single value
+    /// (undefined, written as an empty cell).
+    pub std: Option<f64>,
+    /// Standard error of the mean, `std/√n` (independent values), same unit; `None` for a
+    /// single value.
+    pub se: Option<f64>,
 }
 
 impl Estimate {
@@ -25,8 +27,8 @@ impl Estimate {
         Some(Estimate {
             n: m.n,
             mean: m.mean()?,
-            std: m.std()?,
-            se: m.se()?,
+            std: m.std(),
+            se: m.se(),
         })
     }
 
@@ -35,8 +37,8 @@ impl Estimate {
         Estimate {
             n: self.n,
             mean: self.mean * c,
-            std: self.std * c,
-            se: self.se * c,
+            std: self.std.map(|s| s * c),
+            se: self.se.map(|s| s * c),
         }
     }
 
@@ -49,7 +51,7 @@ impl Estimate {
         }
         let nn = n as u128;
         let mean = sum as f64 / n as f64;
-        let var = if n > 1 {
+        let var = (n > 1).then(|| {
             let num = nn
                 .checked_mul(sum_sq)
                 .and_then(|a| a.checked_sub(sum.checked_mul(sum)?));
@@ -58,15 +60,13 @@ impl Estimate {
                 // Beyond u128 (not reachable within the schema's limits): floating point.
                 None => ((sum_sq as f64 - sum as f64 * mean) / (n - 1) as f64).max(0.0),
             }
-        } else {
-            0.0
-        };
-        let std = var.sqrt();
+        });
+        let std = var.map(f64::sqrt);
         Some(Estimate {
             n,
             mean,
             std,
-            se: std / (n as f64).sqrt(),
+            se: std.map(|s| s / (n as f64).sqrt()),
         })
     }
 }
@@ -76,17 +76,18 @@ impl Estimate {
 pub struct Proportion {
     /// The probability, in `[0, 1]`.
     pub value: f64,
-    /// Its standard error.
-    pub se: f64,
+    /// Its standard error; `None` from a single trial (no spread to estimate it from).
+    pub se: Option<f64>,
 }
 
 impl Proportion {
-    /// `k` successes in `n` independent trials: `k/n`, `√(p(1 − p)/n)`.
+    /// `k` successes in `n` independent trials: `k/n`, `√(p(1 − p)/n)` (`None` for
+    /// `n < 2`).
     pub fn binomial(k: u64, n: u64) -> Proportion {
         let p = k as f64 / n as f64;
         Proportion {
             value: p,
-            se: (p * (1.0 - p) / n as f64).sqrt(),
+            se: (n > 1).then(|| (p * (1.0 - p) / n as f64).sqrt()),
         }
     }
 
@@ -98,7 +99,7 @@ impl Proportion {
         let p = if sum > 0 { n as f64 / sum as f64 } else { 1.0 };
         Proportion {
             value: p,
-            se: c.map_or(0.0, |c| p * p * c.se),
+            se: c.and_then(|c| c.se).map(|se| p * p * se),
         }
     }
 }
@@ -215,20 +216,28 @@ mod tests {
         // 1, 2, 3, 4: mean 2.5, variance 5/3.
         let e = Estimate::of_counts(4, 10, 30).unwrap();
         assert_eq!(e.mean, 2.5);
-        assert!((e.std - (5.0f64 / 3.0).sqrt()).abs() < 1e-15);
-        assert_eq!(Estimate::of_counts(1, 7, 49).unwrap().std, 0.0);
+        assert!((e.std.unwrap() - (5.0f64 / 3.0).sqrt()).abs() < 1e-15);
+        // One value: a mean, no spread (undefined, not 0).
+        let one = Estimate::of_counts(1, 7, 49).unwrap();
+        assert_eq!((one.mean, one.std, one.se), (7.0, None, None));
         assert_eq!(Estimate::of_counts(0, 0, 0), None);
         // Constant values: exactly zero spread.
-        assert_eq!(Estimate::of_counts(1000, 3000, 9000).unwrap().std, 0.0);
+        assert_eq!(
+            Estimate::of_counts(1000, 3000, 9000).unwrap().std,
+            Some(0.0)
+        );
     }
 
     #[test]
     fn proportions() {
         let p = Proportion::binomial(1, 4);
         assert_eq!(p.value, 0.25);
-        assert!((p.se - (0.1875f64 / 4.0).sqrt()).abs() < 1e-15);
+        assert!((p.se.unwrap() - (0.1875f64 / 4.0).sqrt()).abs() < 1e-15);
         // Every particle accepted at its first candidate: p = 1 exactly, no error.
         let q = Proportion::per_trials(10, 10, 10);
-        assert_eq!((q.value, q.se), (1.0, 0.0));
+        assert_eq!((q.value, q.se), (1.0, Some(0.0)));
+        // A single trial: a value, no error.
+        assert_eq!(Proportion::binomial(1, 1).se, None);
+        assert_eq!(Proportion::per_trials(1, 2, 4).se, None);
     }
 }

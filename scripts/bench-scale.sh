@@ -17,50 +17,32 @@ if [ -z "${REBOUND_BIN:-}" ]; then
 fi
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT
-cat > "$W/scene.toml" <<'TOML'
-name = "bench-scale"
-seed = 1
-[wall]
-delta_xi_deg = 2.5
-delta_zeta_deg = 7.5
-[incidence]
-alpha_deg = [-12.5]
-beta_deg = [0.0]
-[particles]
-count = 100000
-[collision]
-model = "elastic"
-TOML
-
-# measure LABEL CMD... : one run; appends "wall_s cpu_s rss_kib" to $W/t-LABEL
-measure() {
+. scripts/bench-lib.sh
+scene_case "$W/scene.toml"
+# run LABEL CMD... : one run; appends "wall_s cpu_s rss_kib" to $W/t-LABEL
+run() {
   local label=$1
   shift
-  /usr/bin/time -v "$@" > "$W/$label.log" 2> "$W/$label.time" || { cat "$W/$label.time" >&2; exit 1; }
-  awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, p, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + p[i]; w = s}
-              /User time/ {u = $2} /System time/ {y = $2}
-              /Maximum resident set size/ {r = $2}
-              END {print w, u + y, r}' "$W/$label.time" >> "$W/t-$label"
+  measure "$W/t-$label" "$@"
 }
-median() { sort -n | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 col() { cut -d' ' -f"$2" "$W/t-$1" | median; }
 
 for _ in $(seq "$REPS"); do
   for n in 10000000 100000000; do
-    measure "sm$n" "$REBOUND_BIN" stochastic --case "$W/scene.toml" --particles "$n" --out "$W/sm$n"
+    run "sm$n" "$REBOUND_BIN" stochastic --case "$W/scene.toml" --particles "$n" --out "$W/sm$n"
   done
   for n in 100000 10000000; do
-    measure "ds$n" "$REBOUND_BIN" deterministic --case "$W/scene.toml" --particles "$n" --out "$W/ds$n"
+    run "ds$n" "$REBOUND_BIN" deterministic --case "$W/scene.toml" --particles "$n" --out "$W/ds$n"
     grep -E '^particles_per_s' "$W/ds$n/run.toml" | awk '{print $3}' >> "$W/ds$n.rate"
   done
   # One process against four shards one after another plus the merge (CPU seconds).
   for model in stochastic deterministic; do
     n=10000000
-    measure "one-$model" "$REBOUND_BIN" "$model" --case "$W/scene.toml" --particles "$n" --out "$W/one-$model"
+    run "one-$model" "$REBOUND_BIN" "$model" --case "$W/scene.toml" --particles "$n" --out "$W/one-$model"
     for k in 1 2 3 4; do
-      measure "shard-$model" "$REBOUND_BIN" "$model" --case "$W/scene.toml" --particles "$n" --shard "$k/4" --out "$W/s$k-$model"
+      run "shard-$model" "$REBOUND_BIN" "$model" --case "$W/scene.toml" --particles "$n" --shard "$k/4" --out "$W/s$k-$model"
     done
-    measure "merge-$model" "$REBOUND_BIN" merge --out "$W/merged-$model" "$W"/s{1,2,3,4}-"$model"
+    run "merge-$model" "$REBOUND_BIN" merge --out "$W/merged-$model" "$W"/s{1,2,3,4}-"$model"
     cmp "$W/one-$model/summary.csv" "$W/merged-$model/summary.csv"
     cmp "$W/one-$model/pdfs.csv" "$W/merged-$model/pdfs.csv"
     # CPU of this repetition's 4 shards and merge (last 5 lines).

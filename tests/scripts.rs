@@ -131,3 +131,52 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         "a stage did not run:\n{report}"
     );
 }
+
+/// The README's performance table is what `scripts/bench-readme.sh` prints (issue 33): the
+/// same header, every row's "what" and target in the script's own format strings, and the
+/// date-and-CPU line under it, so anyone can refresh it and its figures are same-run ratios.
+#[test]
+fn the_readme_performance_table_is_what_bench_readme_prints() {
+    let readme = std::fs::read_to_string(repo_root().join("README.md")).unwrap();
+    let script = std::fs::read_to_string(repo_root().join("scripts/bench-readme.sh")).unwrap();
+    let section = readme
+        .split("\n## Performance\n")
+        .nth(1)
+        .and_then(|s| s.split("\n## ").next())
+        .expect("README has a Performance section");
+    let table: Vec<&str> = section.lines().filter(|l| l.starts_with('|')).collect();
+    let header = "| what | ratio, same run | absolute, this run | target |";
+    assert_eq!(table.first(), Some(&header), "the README's table header");
+    assert!(
+        script.contains(&format!("echo \"{header}\"")),
+        "the script's header"
+    );
+    assert!(table.len() >= 4, "{table:?}");
+    for row in &table[2..] {
+        let cells: Vec<&str> = row.trim_matches('|').split(" | ").map(str::trim).collect();
+        assert_eq!(cells.len(), 4, "{row}");
+        assert!(cells[1].contains('×'), "not a ratio: {row}");
+        for cell in [cells[0], cells[3]] {
+            assert!(
+                script.contains(&format!("| {cell} |")),
+                "`{cell}` is not a row scripts/bench-readme.sh prints"
+            );
+        }
+    }
+    let measured = section
+        .lines()
+        .find(|l| l.starts_with("Measured "))
+        .expect("a `Measured DATE, CPU, cores` line under the table");
+    let date = &measured["Measured ".len()..][..10];
+    assert!(
+        date.as_bytes()
+            .iter()
+            .enumerate()
+            .all(|(i, b)| if i == 4 || i == 7 {
+                *b == b'-'
+            } else {
+                b.is_ascii_digit()
+            }),
+        "{measured}"
+    );
+}

@@ -10,7 +10,7 @@
 
 use roughwall::error::{Error, Result};
 use roughwall::tally::condition::{
-    BlockRecord, ConditionTally, Counters, TallySpec, LOST_REASONS, NM,
+    BlockRecord, ConditionTally, Counters, RealisationCounts, TallySpec, LOST_REASONS, NM,
 };
 use roughwall::tally::engine::{Shard, BLOCK_SIZE};
 use roughwall::tally::moments::Moments;
@@ -21,7 +21,8 @@ use std::path::Path;
 pub use crate::output::out_dir::PARTIAL_FILE;
 pub use crate::output::sha256_hex;
 const FORMAT: &str = "rebound partial tally";
-const FORMAT_VERSION: i64 = 1;
+/// Version 2: block records and integer tallies per surface realisation.
+const FORMAT_VERSION: i64 = 2;
 const CHECKSUM_PREFIX: &str = "# sha256 ";
 
 /// A partial tally's text: `body` followed by its checksum line (`# sha256 ` and the SHA-256
@@ -108,8 +109,13 @@ struct ConditionFile {
     histograms: Vec<Vec<i64>>,
     /// Fig. 12 curves (deterministic): totals, hits and fixed-point model sums.
     curves: Vec<CurveFile>,
-    /// Per block: index, then `n mean m2` per quantity (floats as hex bit patterns).
+    /// Per block: index, then `n mean m2` per quantity (floats as hex bit patterns), then
+    /// the same per surface realisation (with `[deterministic] surfaces` > 1).
     records: Vec<String>,
+    /// Per surface realisation (with `[deterministic] surfaces` > 1): followed histories,
+    /// single-collision ones, Σ collisions.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    realisation_counts: Vec<Vec<i64>>,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -133,7 +139,7 @@ pub struct Partial {
 
 fn record_text(r: &BlockRecord) -> String {
     let mut s = r.block.to_string();
-    for m in &r.moments {
+    for m in r.moments.iter().chain(r.by_realisation.iter().flatten()) {
         s.push_str(&format!(
             " {} {:x} {:x}",
             m.n,
@@ -144,18 +150,28 @@ fn record_text(r: &BlockRecord) -> String {
     s
 }
 
-fn parse_record(s: &str) -> Option<BlockRecord> {
+/// A block record of a tally over `realisations` surface realisations (one: no
+/// per-realisation moments).
+fn parse_record(s: &str, realisations: u32) -> Option<BlockRecord> {
     let mut it = s.split_ascii_whitespace();
     let block = it.next()?.parse().ok()?;
-    let mut moments = [Moments::default(); NM];
-    for m in moments.iter_mut() {
-        m.n = it.next()?.parse().ok()?;
-        m.mean = f64::from_bits(u64::from_str_radix(it.next()?, 16).ok()?);
-        m.m2 = f64::from_bits(u64::from_str_radix(it.next()?, 16).ok()?);
-    }
-    it.next()
-        .is_none()
-        .then_some(BlockRecord { block, moments })
+    let mut read = || -> Option<[Moments; NM]> {
+        let mut moments = [Moments::default(); NM];
+        for m in moments.iter_mut() {
+            m.n = it.next()?.parse().ok()?;
+            m.mean = f64::from_bits(u64::from_str_radix(it.next()?, 16).ok()?);
+            m.m2 = f64::from_bits(u64::from_str_radix(it.next()?, 16).ok()?);
+        }
+        Some(moments)
+    };
+    let moments = read()?;
+    let per = if realisations > 1 { realisations } else { 0 };
+    let by_realisation = (0..per).map(|_| read()).collect::<Option<Vec<_>>>()?;
+    it.next().is_none().then_some(BlockRecord {
+        block,
+        moments,
+        by_realisation,
+    })
 }
 
 fn int(x: u64) -> i64 {
@@ -205,6 +221,11 @@ impl Partial {
                         .collect(),
                     curves: p.p_out.into_iter().chain(p.p_first).map(curve).collect(),
                     records: p.records.iter().map(record_text).collect(),
+                    realisation_counts: p
+                        .realisation_counts
+                        .iter()
+                        .map(|c| vec![int(c.followed), int(c.single), int(c.collisions)])
+                        .collect(),
                 }
             })
             .collect();
@@ -371,8 +392,27 @@ impl PartialFile {
                     }
                 }
                 for s in &c.records {
-                    p.records
-                        .push(parse_record(s).ok_or_else(|| bad("malformed block record"))?);
+                    p.records.push(
+                        parse_record(s, spec.realisations)
+                            .ok_or_else(|| bad("malformed block record"))?,
+                    );
+                }
+                if c.realisation_counts.len() != p.realisation_counts.len() {
+                    return Err(bad(&format!(
+                        "integer tallies of {} surface realisations, the case has {}",
+                        c.realisation_counts.len(),
+                        spec.realisations
+                    )));
+                }
+                for (a, stored) in p.realisation_counts.iter_mut().zip(&c.realisation_counts) {
+                    let [followed, single, collisions] = stored[..] else {
+                        return Err(bad("malformed realisation tally"));
+                    };
+                    *a = RealisationCounts {
+                        followed: u(followed)?,
+                        single: u(single)?,
+                        collisions: u(collisions)?,
+                    };
                 }
             }
             let listed: Vec<u64> = c.blocks.iter().map(|&b| u(b)).collect::<Result<_>>()?;
@@ -403,18 +443,32 @@ impl PartialFile {
 }
 
 /// Whether a restored tally adds up: every block record's moments finite with `0 ≤ n ≤ block
-/// size` and `M2 ≥ 0`; the particles counted equal the records' followed ones plus the lost;
-/// each angle histogram holds as many values as the records of its quantity; single-collision
-/// histories at most the followed ones.
+/// size` and `M2 ≥ 0`, and per realisation counts that add up to the block's; the particles
+/// counted equal the records' followed ones plus the lost; each angle histogram holds as many
+/// values as the records of its quantity; single-collision histories at most the followed
+/// ones; the per-realisation integer tallies add up to the condition's.
 fn consistent(t: &ConditionTally) -> std::result::Result<(), String> {
     let p = t.parts();
     for r in p.records {
-        for (q, m) in r.moments.iter().enumerate() {
-            if m.n > BLOCK_SIZE || !m.mean.is_finite() || !m.m2.is_finite() || m.m2 < 0.0 {
-                return Err(format!(
-                    "block {} has impossible moments for quantity {q} (n {}, mean {}, M2 {})",
-                    r.block, m.n, m.mean, m.m2
-                ));
+        for m in std::iter::once(&r.moments).chain(&r.by_realisation) {
+            for (q, m) in m.iter().enumerate() {
+                if m.n > BLOCK_SIZE || !m.mean.is_finite() || !m.m2.is_finite() || m.m2 < 0.0 {
+                    return Err(format!(
+                        "block {} has impossible moments for quantity {q} (n {}, mean {}, M2 {})",
+                        r.block, m.n, m.mean, m.m2
+                    ));
+                }
+            }
+        }
+        if !r.by_realisation.is_empty() {
+            for q in 0..NM {
+                let sum: u64 = r.by_realisation.iter().map(|m| m[q].n).sum();
+                if sum != r.moments[q].n {
+                    return Err(format!(
+                        "block {} counts {} values of quantity {q}, its realisations {sum}",
+                        r.block, r.moments[q].n
+                    ));
+                }
             }
         }
     }
@@ -443,6 +497,22 @@ fn consistent(t: &ConditionTally) -> std::result::Result<(), String> {
             p.counters.single
         ));
     }
+    if !p.realisation_counts.is_empty() {
+        let sum =
+            |f: fn(&RealisationCounts) -> u64| -> u64 { p.realisation_counts.iter().map(f).sum() };
+        let (f, s, c) = (
+            sum(|c| c.followed),
+            sum(|c| c.single),
+            sum(|c| c.collisions),
+        );
+        let k = p.counters;
+        if f != followed || s != k.single || c != k.collisions {
+            return Err(format!(
+                "its realisations follow {f} histories with {s} single and {c} collisions, the condition {followed}, {} and {}",
+                k.single, k.collisions
+            ));
+        }
+    }
     Ok(())
 }
 
@@ -467,8 +537,19 @@ mod tests {
             mean: -0.0,
             m2: 0.0,
         };
-        let r = BlockRecord { block: 42, moments };
-        let back = parse_record(&record_text(&r)).unwrap();
+        let r = BlockRecord {
+            block: 42,
+            moments,
+            by_realisation: vec![moments, [Moments::default(); NM]],
+        };
+        let back = parse_record(&record_text(&r), 2).unwrap();
+        assert_eq!(back.by_realisation.len(), 2);
+        assert_eq!(
+            back.by_realisation[0][0].mean.to_bits(),
+            moments[0].mean.to_bits()
+        );
+        assert!(parse_record(&record_text(&r), 1).is_none());
+        assert!(parse_record(&record_text(&r), 3).is_none());
         assert_eq!(back.block, 42);
         for (a, b) in back.moments.iter().zip(&r.moments) {
             assert_eq!(
@@ -476,7 +557,7 @@ mod tests {
                 (b.n, b.mean.to_bits(), b.m2.to_bits())
             );
         }
-        assert!(parse_record("1 2 3").is_none());
-        assert!(parse_record(&(record_text(&r) + " 9")).is_none());
+        assert!(parse_record("1 2 3", 1).is_none());
+        assert!(parse_record(&(record_text(&r) + " 9"), 2).is_none());
     }
 }

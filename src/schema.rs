@@ -72,8 +72,10 @@ pub const PDFS_HEADER: [&str; 7] = [
 ];
 
 /// Columns of `moments.csv`: exact (unbinned) count, mean, standard deviation and
-/// standard error of the mean of every tallied quantity.
-pub const MOMENTS_HEADER: [&str; 7] = [
+/// standard error of the mean of every tallied quantity, then the standard error the values
+/// would have if they were independent (`se_histories`: equal to `se` but over several
+/// surface realisations, where `se` includes the spread between them).
+pub const MOMENTS_HEADER: [&str; 8] = [
     "alpha_in_deg",
     "beta_in_deg",
     "quantity",
@@ -81,7 +83,11 @@ pub const MOMENTS_HEADER: [&str; 7] = [
     "mean",
     "std",
     "se",
+    "se_histories",
 ];
+
+/// The columns of `moments.csv` a reader needs (the first version's).
+pub const MOMENTS_REQUIRED: usize = 7;
 
 /// The columns a reader needs (the first version's; later ones are optional).
 pub const SUMMARY_REQUIRED: usize = 20;
@@ -196,6 +202,7 @@ pub fn tables(results: &[ConditionResult]) -> [CsvTable; 3] {
                 f(e.mean),
                 e.std.map(f).unwrap_or_default(),
                 e.se.map(f).unwrap_or_default(),
+                e.se_histories.map(f).unwrap_or_default(),
             ]);
         }
     }
@@ -273,7 +280,7 @@ pub fn read_run(dir: &Path, flag: &str) -> Result<RunTables> {
     let summary = Rows::read_output(&sp, &SUMMARY_HEADER[..SUMMARY_REQUIRED]).map_err(named)?;
     let pdfs = Rows::read_output(&pp, &PDFS_HEADER[..PDFS_REQUIRED]).map_err(named)?;
     let moments = if mp.is_file() {
-        Some(Rows::read_output(&mp, &MOMENTS_HEADER).map_err(named)?)
+        Some(Rows::read_output(&mp, &MOMENTS_HEADER[..MOMENTS_REQUIRED]).map_err(named)?)
     } else {
         None
     };
@@ -308,11 +315,17 @@ pub fn read_run(dir: &Path, flag: &str) -> Result<RunTables> {
     }
     for row in moments.iter().flat_map(|m| &m.rows) {
         let n = number(cell(row, "n"), &mp, "n").map_err(named)?;
+        let se = optional_number(cell(row, "se"), &mp, "se").map_err(named)?;
         let e = Estimate {
             n: n.max(0.0) as u64,
             mean: number(cell(row, "mean"), &mp, "mean").map_err(named)?,
             std: optional_number(cell(row, "std"), &mp, "std").map_err(named)?,
-            se: optional_number(cell(row, "se"), &mp, "se").map_err(named)?,
+            se,
+            // Written before the column existed: one surface, the same error.
+            se_histories: match row.get("se_histories") {
+                Some(s) => optional_number(s, &mp, "se_histories").map_err(named)?,
+                None => se,
+            },
         };
         out.estimates.insert(
             (

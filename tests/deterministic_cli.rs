@@ -385,3 +385,91 @@ fn the_triangulation_key_reaches_the_tracker() {
         assert!((u - a).abs() < 0.01, "measured deviations {measured:?}");
     }
 }
+
+/// Issue 33: the standard error of a surface ensemble covers the spread between
+/// ensembles. On a wall whose realisations differ strongly (4 correlation lengths a side,
+/// so each surface has quirks of its own), independent ensembles of 16 surfaces (seeds
+/// 1–24) scatter in mean α⁺ as the `se` each reports says, where the histories' own error
+/// (`se_histories`, what `se` was before) is several times too small; and `compare`
+/// between two ensembles forms its z from `se`.
+#[test]
+fn ensemble_standard_error_covers_the_spread_between_ensembles() {
+    let dir = Dir::new();
+    let case = case_with(
+        dir.path(),
+        &[
+            (
+                "side_per_corr_length = 20.0",
+                "side_per_corr_length = 4.0\nsurfaces = 16",
+            ),
+            ("beta_deg = [0.0, 60.0]", "beta_deg = [0.0]"),
+            ("count = 2000", "count = 64000"),
+        ],
+    );
+    let runs: Vec<(PathBuf, [f64; 3])> = (1..=24)
+        .map(|seed| {
+            let out = run_case(
+                "deterministic",
+                &case,
+                &dir.join(format!("seed{seed}")),
+                &["--seed", &seed.to_string()],
+            );
+            let csv = Csv::read(&out.join("moments.csv"));
+            let r = csv
+                .records()
+                .find(|r| &r["quantity"] == "alpha_out")
+                .expect("alpha_out in moments.csv");
+            (out, [r.num("mean"), r.num("se"), r.num("se_histories")])
+        })
+        .collect();
+    let means: Vec<f64> = runs.iter().map(|r| r.1[0]).collect();
+    let m = means.iter().sum::<f64>() / means.len() as f64;
+    let spread =
+        (means.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (means.len() - 1) as f64).sqrt();
+    let rms =
+        |k: usize| (runs.iter().map(|r| r.1[k] * r.1[k]).sum::<f64>() / runs.len() as f64).sqrt();
+    let (se, se_histories) = (rms(1), rms(2));
+    // 23 degrees of freedom: the spread is known to about ±15 %.
+    assert!(
+        (0.6..1.6).contains(&(spread / se)),
+        "spread of ensemble means {spread}°, RMS ensemble SE {se}°"
+    );
+    assert!(
+        se_histories < spread / 2.0,
+        "the histories' own SE {se_histories}° already covers the spread {spread}°: the wall does not test the ensemble SE"
+    );
+    for r in &runs {
+        assert!(r.1[1] >= r.1[2], "se below se_histories: {:?}", r.1);
+    }
+    // `compare` between the two most different ensembles: z from the ensemble errors.
+    let lo = (0..runs.len())
+        .min_by(|&a, &b| means[a].total_cmp(&means[b]))
+        .unwrap();
+    let hi = (0..runs.len())
+        .max_by(|&a, &b| means[a].total_cmp(&means[b]))
+        .unwrap();
+    let out = dir.join("compare");
+    let o = rebound(&[
+        "compare",
+        "--a",
+        runs[lo].0.to_str().unwrap(),
+        "--b",
+        runs[hi].0.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let csv = Csv::read(&out.join("comparison.csv"));
+    let row = csv
+        .records()
+        .find(|r| &r["quantity"] == "alpha_out")
+        .unwrap();
+    let (a, b) = (runs[lo].1, runs[hi].1);
+    let z = (b[0] - a[0]) / (a[1] * a[1] + b[1] * b[1]).sqrt();
+    assert!(
+        (row.num("z") - z).abs() < 1e-3 * z.abs().max(1.0),
+        "{row:?} vs {z}"
+    );
+    let z_histories = (b[0] - a[0]) / (a[2] * a[2] + b[2] * b[2]).sqrt();
+    assert!(z_histories > 2.0 * z, "{z_histories} vs {z}");
+}

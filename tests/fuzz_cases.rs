@@ -1149,14 +1149,14 @@ const TEXT_COLUMNS: [&str; 2] = ["model", "quantity"];
 /// - `pdfs.csv`: `se` of the model curves `gamma_model` and `p_single_model` only;
 /// - `force_sweep.csv`: `contact_time_s` for `hu2021` and for U_N = 0 only;
 /// - a standard deviation or standard error of a single value ("undefined for this run"):
-///   `std`, `se` of a `moments.csv` row with `n = 1`, `std_*`, `se_*` of a `summary.csv` row
+///   `std`, `se`, `se_histories` of a `moments.csv` row with `n = 1`, `std_*`, `se_*` of a `summary.csv` row
 ///   with one particle;
 /// - `moments.csv`, `accuracy.csv`, `dynamic_convergence.csv`, `surface_summary.csv`,
 ///   `normal_angles.csv` and any other CSV: nowhere else.
 fn empty_allowed(cmd: Cmd, file: &str, col: &str, row: &dyn Fn(&str) -> String) -> bool {
     let spread = col.starts_with("std_") || col.starts_with("se_");
     match file {
-        "moments.csv" => matches!(col, "std" | "se") && row("n") == "1",
+        "moments.csv" => matches!(col, "std" | "se" | "se_histories") && row("n") == "1",
         "summary.csv" if spread && row("particles") == "1" => true,
         "summary.csv" => match cmd {
             Cmd::Stochastic => STOCHASTIC_NA.contains(&col),

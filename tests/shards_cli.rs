@@ -172,9 +172,14 @@ fn summary_has_standard_errors_that_match_the_spread() {
             "n",
             "mean",
             "std",
-            "se"
+            "se",
+            "se_histories"
         ]
     );
+    // One surface (the stochastic model): the error of independent values.
+    for row in &m.rows {
+        assert_eq!(m.cell(row, "se"), m.cell(row, "se_histories"), "{row:?}");
+    }
     assert!(m
         .rows
         .iter()
@@ -538,6 +543,72 @@ fn an_edited_tally_with_a_recomputed_checksum_is_refused() {
         r.refused("an edited or corrupted tally");
         r.refused(needle);
         r.refused(&file.display().to_string());
+        assert!(!o.exists(), "a refused merge wrote output");
+    }
+}
+
+/// With several surface realisations the partial tally carries each realisation's moments
+/// and counts (for the ensemble standard errors); an edited one must add up too: a
+/// realisation's count of values that no longer sums to its block's, or integer tallies
+/// that no longer sum to the condition's, is refused naming the shard.
+#[test]
+fn an_edited_realisation_tally_is_refused() {
+    let tmp = Dir::new();
+    let case = write_case(
+        tmp.path(),
+        "c.toml",
+        "name = \"t\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n[incidence]\n\
+         alpha_deg = [-12.5]\nbeta_deg = [0.0]\n[particles]\ncount = 2000\n[collision]\n\
+         model = \"elastic\"\n[deterministic]\nside_per_corr_length = 10.0\nsurfaces = 2\n",
+    );
+    let shard = out(tmp.path(), "s1");
+    run_case("deterministic", &case, &shard, &["--shard", "1/1"]);
+    let file = shard.join("partial.toml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let body = &text[..text.trim_end().rfind('\n').unwrap() + 1];
+    let merge = || {
+        let o = out(tmp.path(), "merged");
+        (
+            rebound(&[
+                "merge",
+                "--out",
+                o.to_str().unwrap(),
+                shard.to_str().unwrap(),
+            ]),
+            o,
+        )
+    };
+    let (r, o) = merge();
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    std::fs::remove_dir_all(&o).unwrap();
+    // The record's first per-realisation triple follows the block index and 15 triples.
+    let start = body.find("records = [\"").unwrap() + "records = [\"".len();
+    let tokens: Vec<&str> = body[start..].split(' ').take(47).collect();
+    let prefix = tokens[..46].join(" ");
+    let n: u64 = tokens[46].parse().unwrap();
+    let moved = body.replacen(
+        &format!("{prefix} {n} "),
+        &format!("{prefix} {} ", n + 1),
+        1,
+    );
+    // The first realisation's followed histories, one more.
+    let at = body.find("realisation_counts = [[").unwrap() + "realisation_counts = [[".len();
+    let followed: &str = body[at..].split(',').next().unwrap();
+    let counts = format!(
+        "{}{}{}",
+        &body[..at],
+        followed.parse::<u64>().unwrap() + 1,
+        &body[at + followed.len()..]
+    );
+    for (edited, needle) in [
+        (moved, "its realisations"),
+        (counts, "its realisations follow"),
+    ] {
+        assert_ne!(edited, body);
+        std::fs::write(&file, sealed(&edited)).unwrap();
+        let (r, o) = merge();
+        r.refused("an edited or corrupted tally");
+        r.refused(needle);
         assert!(!o.exists(), "a refused merge wrote output");
     }
 }

@@ -233,7 +233,10 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
     let specs = scene
         .conditions
         .iter()
-        .map(|c| tally_spec(&dev, *c, scene.bin_width_deg, setup.erosion.as_ref()))
+        .map(|c| {
+            tally_spec(&dev, *c, scene.bin_width_deg, setup.erosion.as_ref())
+                .with_realisations(options.surfaces)
+        })
         .collect();
     Ok(Prepared {
         scene,

@@ -404,7 +404,7 @@ pub mod headers {
     /// `pdfs.csv`.
     pub const PDFS: &str = "alpha_in_deg,beta_in_deg,quantity,bin_lo,bin_hi,value,se";
     /// `moments.csv`.
-    pub const MOMENTS: &str = "alpha_in_deg,beta_in_deg,quantity,n,mean,std,se";
+    pub const MOMENTS: &str = "alpha_in_deg,beta_in_deg,quantity,n,mean,std,se,se_histories";
     /// `comparison.csv` of `compare`.
     pub const COMPARISON: &str =
         "alpha_in_deg,beta_in_deg,quantity,ks,l1,mean_a,mean_b,std_a,std_b,se_mean_a,se_mean_b,z";

@@ -13,8 +13,8 @@ use crate::erosion::ErosionSetup;
 use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw, SpinLaw};
 use crate::rng;
 use crate::tally::{
-    Bin, BlockTally, ConditionResult, ConditionTally, ErosionOutcome, ModelKind, Outcome, Quantity,
-    TallySpec, BLOCK_SIZE,
+    condition::realisation_of, Bin, BlockTally, ConditionResult, ConditionTally, ErosionOutcome,
+    ModelKind, Outcome, Quantity, TallySpec, BLOCK_SIZE,
 };
 use crate::wall::Deviations;
 use rand::Rng;
@@ -69,7 +69,7 @@ impl<'a> Realisations<'a> {
     /// The realisation history `i` bounces on.
     #[inline]
     pub fn for_history(&self, i: u64) -> &Tracker<'a> {
-        &self.trackers[(i % self.trackers.len() as u64) as usize]
+        &self.trackers[realisation_of(i, self.trackers.len() as u32)]
     }
 
     /// How many realisations.
@@ -297,7 +297,8 @@ fn fill_block_eroding(
     }
 }
 
-/// The tally specification of a condition of this model.
+/// The tally specification of a condition of this model, on one surface (more:
+/// [`TallySpec::with_realisations`]).
 pub fn tally_spec(
     wall: &Deviations,
     cond: IncidentCondition,
@@ -310,6 +311,7 @@ pub fn tally_spec(
         bin_width_deg,
         model: ModelKind::Deterministic,
         erosion_particle_mass_kg: erosion.map(|e| e.particle_mass_kg),
+        realisations: 1,
     }
 }
 

@@ -188,6 +188,7 @@ pub fn tally_spec(
         bin_width_deg,
         model: ModelKind::Stochastic,
         erosion_particle_mass_kg: erosion.map(|e| e.particle_mass_kg),
+        realisations: 1,
     }
 }
 

@@ -7,11 +7,15 @@
 //! over threads, shards or machines gives the same bits as one process.
 
 use super::histogram::{Histogram, RatioCurve};
-use super::moments::{Moments, ShiftedSums};
+use super::moments::{ensemble_se, Moments, ShiftedSums};
 use super::quantity::Quantity;
 use super::results::{ConditionResult, ErosionSummary, Estimate, Pdf, Proportion, Summary};
 use crate::incidence::IncidentCondition;
 use crate::wall::{conditional_gamma_star, rotated_moments, Deviations};
+
+/// Particles per block: the unit of work, of reproducibility and of the stopping rule
+/// (block `b` of a condition holds its particles `b · BLOCK_SIZE` onwards).
+pub const BLOCK_SIZE: u64 = 1 << 16;
 
 /// Which model fills the tally: decides the model-specific columns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -95,6 +99,54 @@ pub struct TallySpec {
     pub model: ModelKind,
     /// The particle mass (kg) when the case tallies erosion; `None` without `[erosion]`.
     pub erosion_particle_mass_kg: Option<f64>,
+    /// Surface realisations the histories are spread over (`[deterministic] surfaces`;
+    /// history `i` on realisation [`realisation_of`]`(i, N)`): 1 for one surface and for the
+    /// stochastic model. With more than one, the standard error of every mean includes the
+    /// spread between realisations ([`ensemble_se`]).
+    pub realisations: u32,
+}
+
+impl TallySpec {
+    /// The same tally over `n` surface realisations (0 is taken as 1).
+    pub fn with_realisations(self, n: u32) -> TallySpec {
+        TallySpec {
+            realisations: n.max(1),
+            ..self
+        }
+    }
+
+    /// Whether means are tallied per realisation too (more than one).
+    fn clustered(&self) -> bool {
+        self.realisations > 1
+    }
+}
+
+/// The realisation history `history` of a condition bounces on, of `realisations`:
+/// `history mod N`. Depends on the history alone, so every block samples every realisation
+/// and a run is the same for any thread count or shard split.
+#[inline]
+pub fn realisation_of(history: u64, realisations: u32) -> usize {
+    (history % realisations.max(1) as u64) as usize
+}
+
+/// The integer tallies of one surface realisation, for the ensemble standard errors of
+/// `p_single` and the mean collision count (deterministic, more than one realisation).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RealisationCounts {
+    /// Histories followed on this realisation.
+    pub followed: u64,
+    /// Of them, histories with exactly one collision.
+    pub single: u64,
+    /// Σ collisions over them.
+    pub collisions: u64,
+}
+
+impl RealisationCounts {
+    fn add(&mut self, o: &RealisationCounts) {
+        self.followed += o.followed;
+        self.single += o.single;
+        self.collisions += o.collisions;
+    }
 }
 
 /// The quantities with moments, in record order (also the histogram order, but for the last).
@@ -225,13 +277,15 @@ impl Counters {
 }
 
 /// One block's moments, kept so that blocks can be folded in order later.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct BlockRecord {
     /// The block's index within its condition (particles `block · BLOCK_SIZE` onwards).
     pub block: u64,
     /// The block's moments of each quantity in record order (angles in degrees), [`NM`] of
     /// them.
     pub moments: [Moments; NM],
+    /// The same per surface realisation, in realisation order (empty on one surface).
+    pub by_realisation: Vec<[Moments; NM]>,
 }
 
 /// The accumulators one worker fills for one block of particles, in particle order.
@@ -239,6 +293,13 @@ pub struct BlockRecord {
 pub struct BlockTally {
     block: u64,
     sums: [ShiftedSums; NM],
+    /// Per realisation (empty on one surface): the sums of each quantity, and counts.
+    by_realisation: Vec<[ShiftedSums; NM]>,
+    realisation_counts: Vec<RealisationCounts>,
+    realisations: u32,
+    /// The index of the next history pushed: histories arrive in order from the block's
+    /// first, `block · BLOCK_SIZE`, followed or lost.
+    next_history: u64,
     hists: Vec<Histogram>,
     /// Fig. 12 curves (deterministic): by the final `α⁺` (from 0°) and by the first `α⁺`.
     p_out: Option<RatioCurve>,
@@ -266,9 +327,18 @@ impl BlockTally {
     /// Empty accumulators for block `block` of a condition.
     pub fn new(spec: &TallySpec, block: u64) -> BlockTally {
         let (p_out, p_first) = ratio_curves(spec);
+        let per = if spec.clustered() {
+            spec.realisations as usize
+        } else {
+            0
+        };
         BlockTally {
             block,
             sums: [ShiftedSums::default(); NM],
+            by_realisation: vec![[ShiftedSums::default(); NM]; per],
+            realisation_counts: vec![RealisationCounts::default(); per],
+            realisations: spec.realisations,
+            next_history: block * BLOCK_SIZE,
             hists: histograms(spec),
             p_out,
             p_first,
@@ -282,44 +352,67 @@ impl BlockTally {
         self.block
     }
 
+    /// The realisation of the next history, `None` on one surface; advances to the next.
     #[inline]
-    fn angle(&mut self, i: usize, rad: f64) {
+    fn next_realisation(&mut self) -> Option<usize> {
+        let i = self.next_history;
+        self.next_history += 1;
+        (!self.by_realisation.is_empty()).then(|| realisation_of(i, self.realisations))
+    }
+
+    #[inline]
+    fn value(&mut self, r: Option<usize>, i: usize, x: f64) {
+        self.sums[i].push(x);
+        if let Some(r) = r {
+            self.by_realisation[r][i].push(x);
+        }
+    }
+
+    #[inline]
+    fn angle(&mut self, r: Option<usize>, i: usize, rad: f64) {
         let deg = rad.to_degrees();
-        self.sums[i].push(deg);
+        self.value(r, i, deg);
         self.hists[i].push(deg);
     }
 
     /// Tallies one followed particle.
     pub fn push(&mut self, o: &Outcome) {
+        let r = self.next_realisation();
         self.counters.particles += 1;
-        self.angle(ALPHA_OUT, o.alpha_out);
-        self.angle(1, o.alpha_out_xy);
-        self.angle(2, o.beta_out);
-        self.angle(DBETA, o.dbeta);
+        self.angle(r, ALPHA_OUT, o.alpha_out);
+        self.angle(r, 1, o.alpha_out_xy);
+        self.angle(r, 2, o.beta_out);
+        self.angle(r, DBETA, o.dbeta);
         if let Some(d) = o.dbeta_first {
-            self.angle(4, d);
+            self.angle(r, 4, d);
         }
-        self.angle(5, o.xi_first);
-        self.angle(6, o.zeta_first);
-        self.angle(7, o.gamma_first);
-        self.angle(8, o.gamma_star_first);
+        self.angle(r, 5, o.xi_first);
+        self.angle(r, 6, o.zeta_first);
+        self.angle(r, 7, o.gamma_first);
+        self.angle(r, 8, o.gamma_star_first);
         if let Some(a) = o.alpha_first {
-            self.angle(ALPHA_FIRST, a);
+            self.angle(r, ALPHA_FIRST, a);
         }
         let slices = self.slices;
         for (k, &(centre, half)) in slices.iter().enumerate() {
             if (o.gamma_first - centre).abs() <= half {
-                self.angle(SLICE_0 + k, o.gamma_star_first);
+                self.angle(r, SLICE_0 + k, o.gamma_star_first);
             }
         }
-        self.sums[SPEED_RATIO].push(o.speed_ratio);
+        self.value(r, SPEED_RATIO, o.speed_ratio);
         if let Some(e) = o.erosion {
-            self.sums[EROSION].push(e.per_mass);
-            if let Some(r) = e.rejected_per_mass {
-                self.sums[EROSION_REJECTED].push(r);
+            self.value(r, EROSION, e.per_mass);
+            if let Some(x) = e.rejected_per_mass {
+                self.value(r, EROSION_REJECTED, x);
             }
         }
         if let Some(c) = o.collisions {
+            if let Some(r) = r {
+                let rc = &mut self.realisation_counts[r];
+                rc.followed += 1;
+                rc.single += (c == 1) as u64;
+                rc.collisions += c as u64;
+            }
             let k = &mut self.counters;
             k.collisions += c as u64;
             k.collisions_sq += (c as u128) * (c as u128);
@@ -348,6 +441,7 @@ impl BlockTally {
     /// Counts a history that could not be followed (deterministic; `reason` indexes
     /// `deterministic::LostReason`).
     pub fn push_lost(&mut self, reason: usize) {
+        self.next_realisation();
         self.counters.particles += 1;
         self.counters.lost[reason.min(LOST_REASONS - 1)] += 1;
     }
@@ -373,14 +467,23 @@ pub struct ConditionTally {
     /// Integer counters summed over the blocks absorbed and tallies added.
     pub counters: Counters,
     records: Vec<BlockRecord>,
+    /// Integer tallies per realisation (empty on one surface), summed.
+    realisation_counts: Vec<RealisationCounts>,
     /// Moments of the records absorbed so far, folded in absorption order.
     running: [Moments; NM],
+    /// The same per realisation (empty on one surface).
+    running_by_realisation: Vec<[Moments; NM]>,
 }
 
 impl ConditionTally {
     /// An empty tally.
     pub fn new(spec: TallySpec) -> ConditionTally {
         let (p_out, p_first) = ratio_curves(&spec);
+        let per = if spec.clustered() {
+            spec.realisations as usize
+        } else {
+            0
+        };
         ConditionTally {
             hists: histograms(&spec),
             spec,
@@ -388,7 +491,9 @@ impl ConditionTally {
             p_first,
             counters: Counters::default(),
             records: Vec::new(),
+            realisation_counts: vec![RealisationCounts::default(); per],
             running: [Moments::default(); NM],
+            running_by_realisation: vec![[Moments::default(); NM]; per],
         }
     }
 
@@ -405,12 +510,29 @@ impl ConditionTally {
             a.add(h);
         }
         self.counters.add(&b.counters);
+        for (a, c) in self
+            .realisation_counts
+            .iter_mut()
+            .zip(&b.realisation_counts)
+        {
+            a.add(c);
+        }
         let record = BlockRecord {
             block: b.block,
             moments: b.sums.map(|s| s.moments()),
+            by_realisation: b
+                .by_realisation
+                .iter()
+                .map(|sums| sums.map(|s| s.moments()))
+                .collect(),
         };
-        for (r, m) in self.running.iter_mut().zip(&record.moments) {
-            r.merge(m);
+        fold(&mut self.running, &record.moments);
+        for (run, m) in self
+            .running_by_realisation
+            .iter_mut()
+            .zip(&record.by_realisation)
+        {
+            fold(run, m);
         }
         self.records.push(record);
     }
@@ -433,9 +555,15 @@ impl ConditionTally {
             a.add(h);
         }
         self.counters.add(&other.counters);
+        for (a, c) in self
+            .realisation_counts
+            .iter_mut()
+            .zip(&other.realisation_counts)
+        {
+            a.add(c);
+        }
         self.records.extend_from_slice(&other.records);
-        self.records.sort_by_key(|r| r.block);
-        self.running = self.moments();
+        self.refold();
         Ok(())
     }
 
@@ -446,23 +574,39 @@ impl ConditionTally {
         b
     }
 
-    /// The moments of every quantity, folded over the blocks in block order.
-    pub fn moments(&self) -> [Moments; NM] {
+    fn sorted_records(&self) -> Vec<&BlockRecord> {
         let mut sorted: Vec<&BlockRecord> = self.records.iter().collect();
         sorted.sort_by_key(|r| r.block);
+        sorted
+    }
+
+    /// The moments of every quantity, folded over the blocks in block order.
+    pub fn moments(&self) -> [Moments; NM] {
         let mut m = [Moments::default(); NM];
-        for r in sorted {
-            for (a, b) in m.iter_mut().zip(&r.moments) {
-                a.merge(b);
+        for r in self.sorted_records() {
+            fold(&mut m, &r.moments);
+        }
+        m
+    }
+
+    /// The moments of every quantity on each surface realisation, folded over the blocks
+    /// in block order (empty on one surface).
+    pub fn moments_by_realisation(&self) -> Vec<[Moments; NM]> {
+        let mut m = vec![[Moments::default(); NM]; self.running_by_realisation.len()];
+        for r in self.sorted_records() {
+            for (a, b) in m.iter_mut().zip(&r.by_realisation) {
+                fold(a, b);
             }
         }
         m
     }
 
     /// Standard errors (degrees) of the running mean `α⁺` and mean `β⁺ − β⁻`, the
-    /// quantities the stopping rule watches; `None` before two particles were followed.
+    /// quantities the stopping rule watches, with the spread between surface realisations
+    /// ([`ensemble_se`]); `None` before two particles were followed.
     pub fn running_se(&self) -> Option<(f64, f64)> {
-        Some((self.running[ALPHA_OUT].se()?, self.running[DBETA].se()?))
+        let se = |i: usize| quantity_se(&self.running, &self.running_by_realisation, i);
+        Some((se(ALPHA_OUT)?, se(DBETA)?))
     }
 
     /// Histories followed so far.
@@ -473,16 +617,37 @@ impl ConditionTally {
     /// The condition's summary, PDFs and moments.
     pub fn result(&self) -> ConditionResult {
         let moments = self.moments();
+        let by_realisation = self.moments_by_realisation();
+        let estimate = |i: usize| -> Option<Estimate> {
+            Some(Estimate::of(&moments[i])?.with_se(quantity_se(&moments, &by_realisation, i)))
+        };
         let est = |q: Quantity| -> Option<Estimate> {
-            let i = MOMENT_QUANTITIES.iter().position(|&m| m == q)?;
-            Estimate::of(&moments[i])
+            estimate(MOMENT_QUANTITIES.iter().position(|&m| m == q)?)
         };
         let k = &self.counters;
         let followed = moments[ALPHA_OUT].n;
+        // The integer tallies' ensemble errors: each realisation's fraction or mean count.
+        let counts_se = |value: f64, se: Option<f64>, of: fn(&RealisationCounts) -> u64| {
+            ensemble_se(
+                followed,
+                value,
+                se,
+                self.realisation_counts
+                    .iter()
+                    .map(|c| (c.followed, of(c) as f64 / c.followed.max(1) as f64)),
+            )
+        };
         let (p_single, collisions, max_collisions, lost) = match self.spec.model {
             ModelKind::Deterministic => (
-                (followed > 0).then(|| Proportion::binomial(k.single, followed)),
-                Estimate::of_counts(followed, k.collisions as u128, k.collisions_sq),
+                (followed > 0).then(|| {
+                    let p = Proportion::binomial(k.single, followed);
+                    Proportion {
+                        se: counts_se(p.value, p.se, |c| c.single),
+                        ..p
+                    }
+                }),
+                Estimate::of_counts(followed, k.collisions as u128, k.collisions_sq)
+                    .map(|e| e.with_se(counts_se(e.mean, e.se, |c| c.collisions))),
                 (followed > 0).then_some(k.max_collisions),
                 Some(k.lost_total()),
             ),
@@ -552,8 +717,8 @@ impl ConditionTally {
         }
         let mut estimates: Vec<(Quantity, Estimate)> = MOMENT_QUANTITIES
             .iter()
-            .zip(&moments)
-            .filter_map(|(q, m)| Estimate::of(m).map(|e| (*q, e)))
+            .enumerate()
+            .filter_map(|(i, q)| estimate(i).map(|e| (*q, e)))
             .collect();
         if let Some(c) = summary.collisions {
             estimates.push((Quantity::Collisions, c));
@@ -573,6 +738,7 @@ impl ConditionTally {
             p_first: self.p_first.as_ref(),
             counters: &self.counters,
             records: &self.records,
+            realisation_counts: &self.realisation_counts,
         }
     }
 
@@ -584,6 +750,7 @@ impl ConditionTally {
             p_first: self.p_first.as_mut(),
             counters: &mut self.counters,
             records: &mut self.records,
+            realisation_counts: &mut self.realisation_counts,
         }
     }
 
@@ -591,7 +758,27 @@ impl ConditionTally {
     pub fn refold(&mut self) {
         self.records.sort_by_key(|r| r.block);
         self.running = self.moments();
+        self.running_by_realisation = self.moments_by_realisation();
     }
+}
+
+/// Folds one block's moments into running moments (Chan et al. 1979, Eq. 2.1b).
+fn fold(running: &mut [Moments; NM], block: &[Moments; NM]) {
+    for (a, b) in running.iter_mut().zip(block) {
+        a.merge(b);
+    }
+}
+
+/// The standard error of the mean of quantity `i`: the histories' own, or with more than
+/// one realisation the ensemble error ([`ensemble_se`]).
+fn quantity_se(total: &[Moments; NM], by_realisation: &[[Moments; NM]], i: usize) -> Option<f64> {
+    let m = &total[i];
+    ensemble_se(
+        m.n,
+        m.mean,
+        m.se(),
+        by_realisation.iter().map(|r| (r[i].n, r[i].mean)),
+    )
 }
 
 /// The state of a [`ConditionTally`], borrowed to write a partial tally file
@@ -609,6 +796,8 @@ pub struct TallyParts<'a> {
     pub counters: &'a Counters,
     /// The block records absorbed, each block's moments.
     pub records: &'a [BlockRecord],
+    /// The integer tallies per realisation (empty on one surface).
+    pub realisation_counts: &'a [RealisationCounts],
 }
 
 /// The state of a [`ConditionTally`], borrowed mutably to restore a partial tally file into
@@ -625,6 +814,9 @@ pub struct TallyPartsMut<'a> {
     pub counters: &'a mut Counters,
     /// The block records.
     pub records: &'a mut Vec<BlockRecord>,
+    /// The integer tallies per realisation, one per realisation of the spec (empty on one
+    /// surface).
+    pub realisation_counts: &'a mut Vec<RealisationCounts>,
 }
 
 #[cfg(test)]
@@ -641,6 +833,7 @@ mod tests {
             bin_width_deg: 1.0,
             model,
             erosion_particle_mass_kg: None,
+            realisations: 1,
         }
     }
 
@@ -681,6 +874,58 @@ mod tests {
         assert_eq!(even.result(), all.result());
         assert_eq!(even.blocks(), vec![0, 1, 2]);
         assert_eq!(even.add(&odd), Err(1));
+    }
+
+    /// Two realisations whose histories differ (even histories: α⁺ of `outcome`, odd ones
+    /// 10° more, and one collision more): every mean's standard error is the spread of the
+    /// two realisation means, the stopping rule watches the same error, and shards still
+    /// merge to the same bits.
+    #[test]
+    fn realisations_that_differ_widen_every_standard_error() {
+        let s = spec(ModelKind::Deterministic).with_realisations(2);
+        let shifted = |i: u64| {
+            let mut o = outcome(i);
+            if i % 2 == 1 {
+                o.alpha_out += 10f64.to_radians();
+                o.collisions = o.collisions.map(|c| c + 1);
+            }
+            o
+        };
+        let run = |blocks: &[u64]| {
+            let mut t = ConditionTally::new(s);
+            for &b in blocks {
+                let mut bt = BlockTally::new(&s, b);
+                let first = b * BLOCK_SIZE;
+                for i in first..first + 1000 {
+                    if i % 97 == 0 {
+                        bt.push_lost(0);
+                    } else {
+                        bt.push(&shifted(i));
+                    }
+                }
+                t.absorb(bt);
+            }
+            t
+        };
+        let all = run(&[0, 1]);
+        let r = all.result();
+        let a = r.summary.alpha_out.unwrap();
+        // Two realisations 10° apart with equal shares: G/(G−1) Σ (1/2)² (±5°)² = 25 deg².
+        assert!((a.se.unwrap() - 5.0).abs() < 0.1, "{a:?}");
+        assert!(a.se_histories.unwrap() < 0.25, "{a:?}");
+        assert_eq!(all.running_se().unwrap().0, a.se.unwrap());
+        let c = r.summary.collisions.unwrap();
+        assert!(c.se.unwrap() > 0.45 && c.se.unwrap() > 5.0 * c.se_histories.unwrap());
+        // A quantity the realisations share keeps (about) its own error.
+        let g = r.summary.gamma.unwrap();
+        assert_eq!(g.se, g.se_histories);
+        let mut odd = run(&[1]);
+        odd.add(&run(&[0])).unwrap();
+        assert_eq!(odd.result(), r);
+        // One realisation: the error of independent values, as before.
+        let one = tally(spec(ModelKind::Deterministic), &[(0, 0..1000)]).result();
+        let e = one.summary.alpha_out.unwrap();
+        assert_eq!(e.se, e.se_histories);
     }
 
     #[test]

@@ -31,8 +31,7 @@ pub struct Silent;
 
 impl Progress for Silent {}
 
-/// Particles per block: the unit of work, of reproducibility and of the stopping rule.
-pub const BLOCK_SIZE: u64 = 1 << 16;
+pub use super::condition::BLOCK_SIZE;
 
 /// Shard `index` (1-based) of `count`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -308,6 +307,7 @@ mod tests {
             bin_width_deg: 1.0,
             model: ModelKind::Stochastic,
             erosion_particle_mass_kg: None,
+            realisations: 1,
         };
         Plan {
             specs: vec![spec(-10.0), spec(-20.0)],

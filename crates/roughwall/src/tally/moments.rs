@@ -69,6 +69,47 @@ impl Moments {
     }
 }
 
+/// Standard error of a mean over histories that share surface realisations: `n` values
+/// with mean `mean` and independent-value standard error `se_histories` (`std/√n`), spread
+/// over clusters (realisations) whose `(n_r, mean_r)` are given.
+///
+/// Histories on one realisation share its quirks, so they are not independent; the
+/// cluster-robust (sandwich) variance of a mean over `G` clusters (Cameron & Miller 2015,
+/// *A practitioner's guide to cluster-robust inference*, J. Human Resources 50(2), Eq. 11
+/// with the small-`G` factor `G/(G − 1)` of their Sec. IV.C; the same batch-means idea as
+/// OpenMC's tally statistics, with a realisation as the batch) is
+///
+/// `V = G/(G − 1) · Σ_r (n_r/n)² (mean_r − mean)²`,
+///
+/// which holds the spread between realisations and the histories' own spread. The result
+/// is `√max(se_histories², V)`: with realisations that are at least as alike within as
+/// between (intra-cluster correlation ≥ 0, Kish's design effect ≥ 1), the true variance is
+/// never below the independent-value one, and with few realisations `V` alone is noisy.
+/// Fewer than two non-empty clusters: `se_histories` (one surface has no between-surface
+/// spread to measure; the error is then conditional on that surface).
+pub fn ensemble_se(
+    n: u64,
+    mean: f64,
+    se_histories: Option<f64>,
+    clusters: impl IntoIterator<Item = (u64, f64)>,
+) -> Option<f64> {
+    let se = se_histories?;
+    let (mut g, mut v) = (0u64, 0.0f64);
+    for (n_r, mean_r) in clusters {
+        if n_r == 0 {
+            continue;
+        }
+        let w = n_r as f64 / n as f64;
+        v += w * w * (mean_r - mean) * (mean_r - mean);
+        g += 1;
+    }
+    if g < 2 {
+        return Some(se);
+    }
+    let v = v * g as f64 / (g - 1) as f64;
+    Some(se.max(v.sqrt()))
+}
+
 /// Sums of `x − shift` and `(x − shift)²` with `shift` the first value pushed.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ShiftedSums {
@@ -162,6 +203,67 @@ mod tests {
         e.merge(&m);
         e.merge(&Moments::default());
         assert_eq!(e, m);
+    }
+
+    /// Two clusters of constant values: all the spread is between them, and the clustered
+    /// error is the spread of two cluster means, far above the independent-value one.
+    #[test]
+    fn ensemble_error_of_clusters() {
+        // 500 values of 0 and 500 of 1: mean 0.5, std ≈ 0.5, se ≈ 0.0158.
+        let se = 0.5 * (1000.0f64 / 999.0).sqrt() / 1000f64.sqrt();
+        let e = ensemble_se(1000, 0.5, Some(se), [(500, 0.0), (500, 1.0)]).unwrap();
+        // G/(G−1) Σ (1/2)² (±1/2)² = 2 · 2 · 1/16 = 1/4: se 0.5.
+        assert!((e - 0.5).abs() < 1e-15, "{e}");
+        // Clusters that agree: the independent-value error is the floor.
+        let same = ensemble_se(1000, 0.5, Some(se), [(500, 0.5), (500, 0.5)]).unwrap();
+        assert_eq!(same, se);
+        // One cluster (or empty ones besides it): nothing between to measure.
+        assert_eq!(
+            ensemble_se(1000, 0.5, Some(se), [(1000, 0.5), (0, 9.0)]),
+            Some(se)
+        );
+        assert_eq!(ensemble_se(1, 0.5, None, [(1, 0.5)]), None);
+    }
+
+    /// The clustered error matches the spread of means over many independent ensembles of
+    /// a random-effects model (realisation effect of std 1, history noise of std 1).
+    #[test]
+    fn ensemble_error_matches_the_spread_between_ensembles() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(3);
+        let normal = |r: &mut rand_xoshiro::Xoshiro256PlusPlus| -> f64 {
+            r.sample(rand_distr::StandardNormal)
+        };
+        let (g, per) = (16usize, 200usize);
+        let (mut means, mut ses, mut naive) = (Vec::new(), Vec::new(), Vec::new());
+        for _ in 0..400 {
+            let mut total = Moments::default();
+            let mut clusters = Vec::new();
+            for _ in 0..g {
+                let effect = normal(&mut rng);
+                let mut s = ShiftedSums::default();
+                for _ in 0..per {
+                    s.push(effect + normal(&mut rng));
+                }
+                total.merge(&s.moments());
+                clusters.push((s.moments().n, s.moments().mean));
+            }
+            means.push(total.mean);
+            naive.push(total.se().unwrap());
+            ses.push(ensemble_se(total.n, total.mean, total.se(), clusters).unwrap());
+        }
+        let m = means.iter().sum::<f64>() / means.len() as f64;
+        let spread = (means.iter().map(|x| (x - m) * (x - m)).sum::<f64>()
+            / (means.len() - 1) as f64)
+            .sqrt();
+        let rms = |v: &[f64]| (v.iter().map(|x| x * x).sum::<f64>() / v.len() as f64).sqrt();
+        // True error √(1/16 + 1/3200) ≈ 0.251; the independent-value one ≈ 0.025.
+        assert!(
+            (rms(&ses) / spread - 1.0).abs() < 0.1,
+            "{} vs {spread}",
+            rms(&ses)
+        );
+        assert!(rms(&naive) < spread / 5.0);
     }
 
     #[test]

@@ -16,9 +16,14 @@ pub struct Estimate {
     /// Sample standard deviation (divisor `n − 1`), same unit; `None` for a single value
     /// (undefined, written as an empty cell).
     pub std: Option<f64>,
-    /// Standard error of the mean, `std/√n` (independent values), same unit; `None` for a
-    /// single value.
+    /// Standard error of the mean, same unit; `None` for a single value. `std/√n`, but
+    /// for histories spread over several surface realisations, where it includes the
+    /// spread between them (`moments::ensemble_se`).
     pub se: Option<f64>,
+    /// `std/√n`, the standard error if the values were independent: equal to `se` but
+    /// over several surface realisations, where `(se/se_histories)²` is the design effect
+    /// of sharing surfaces.
+    pub se_histories: Option<f64>,
 }
 
 impl Estimate {
@@ -29,7 +34,13 @@ impl Estimate {
             mean: m.mean()?,
             std: m.std(),
             se: m.se(),
+            se_histories: m.se(),
         })
+    }
+
+    /// The same estimate with standard error `se` (`se_histories` kept).
+    pub fn with_se(self, se: Option<f64>) -> Estimate {
+        Estimate { se, ..self }
     }
 
     /// The estimate of `c x` for a constant `c > 0`.
@@ -39,6 +50,7 @@ impl Estimate {
             mean: self.mean * c,
             std: self.std.map(|s| s * c),
             se: self.se.map(|s| s * c),
+            se_histories: self.se_histories.map(|s| s * c),
         }
     }
 
@@ -62,11 +74,13 @@ impl Estimate {
             }
         });
         let std = var.map(f64::sqrt);
+        let se = std.map(|s| s / (n as f64).sqrt());
         Some(Estimate {
             n,
             mean,
             std,
-            se: std.map(|s| s / (n as f64).sqrt()),
+            se,
+            se_histories: se,
         })
     }
 }

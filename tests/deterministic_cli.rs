@@ -473,3 +473,38 @@ fn ensemble_standard_error_covers_the_spread_between_ensembles() {
     let z_histories = (b[0] - a[0]) / (a[2] * a[2] + b[2] * b[2]).sqrt();
     assert!(z_histories > 2.0 * z, "{z_histories} vs {z}");
 }
+
+/// Over several surfaces a target error has a floor that particles cannot lower: the
+/// warning for a target not reached says which key does lower it.
+#[test]
+fn an_unreached_target_over_surfaces_names_the_surfaces() {
+    let dir = Dir::new();
+    let case = case_with(
+        dir.path(),
+        &[
+            (
+                "side_per_corr_length = 20.0",
+                "side_per_corr_length = 4.0\nsurfaces = 4",
+            ),
+            ("beta_deg = [0.0, 60.0]", "beta_deg = [0.0]"),
+        ],
+    );
+    let out = dir.join("out");
+    let o = rebound(&[
+        "deterministic",
+        "--case",
+        case.to_str().unwrap(),
+        "--target-se",
+        "0.001",
+        "--particles",
+        "70000",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    assert!(
+        o.stderr.contains("was not reached") && o.stderr.contains("over 4 surfaces"),
+        "{}",
+        o.stderr
+    );
+}

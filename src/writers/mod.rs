@@ -121,8 +121,15 @@ pub fn target_warnings(
                 .running_se()
                 .map(|(a, b)| format!("{}° and {}°", fmt_num(a), fmt_num(b)))
                 .unwrap_or_else(|| "undefined".into());
+            // Over several surfaces the error has a floor that particles cannot lower.
+            let surfaces = match t.spec.realisations {
+                n if n > 1 => format!(
+                    "; over {n} surfaces the error includes their spread, which only more `[deterministic] surfaces` lowers"
+                ),
+                _ => String::new(),
+            };
             Warning(format!(
-                "α⁻ = {}°, β⁻ = {}°: the target standard error {target}° was not reached in {} particles (the count caps a target: `--particles`, `[particles] count`); standard errors of mean α⁺ and mean β⁺ − β⁻ {se}",
+                "α⁻ = {}°, β⁻ = {}°: the target standard error {target}° was not reached in {} particles (the count caps a target: `--particles`, `[particles] count`); standard errors of mean α⁺ and mean β⁺ − β⁻ {se}{surfaces}",
                 fmt_num(c.alpha_in_deg()),
                 fmt_num(c.beta_in_deg()),
                 t.counters.particles,

@@ -2,12 +2,13 @@
 //!
 //! The package version (`CARGO_PKG_VERSION`) does not change from commit to commit, so on its
 //! own it cannot tell two builds apart. This script hashes what produces the results — every
-//! `.rs` file of `src/` (the application) and `crates/roughwall/src/` (the library), and
-//! both manifests and `Cargo.lock`, as sorted relative paths with their contents (each
-//! length-prefixed) — with 64-bit FNV-1a, and exports the 16 hex digits as
-//! `ROUGHWALL_SOURCE_DIGEST`. Partial tallies record `version+src.DIGEST` and `rebound merge`
-//! refuses shards of another build. No dependency: FNV-1a is a few lines and needs to tell
-//! builds apart, not resist an adversary (the partial tally's checksum is SHA-256).
+//! `.rs` file of `src/` (the application), `crates/roughwall/src/` (the library) and
+//! `crates/topography/src/` (the scan readers), and the three manifests and `Cargo.lock`, as
+//! sorted relative paths with their contents (each length-prefixed) — with 64-bit FNV-1a, and
+//! exports the 16 hex digits as `ROUGHWALL_SOURCE_DIGEST`. Partial tallies record
+//! `version+src.DIGEST` and `rebound merge` refuses shards of another build. No dependency:
+//! FNV-1a is a few lines and needs to tell builds apart, not resist an adversary (the partial
+//! tally's checksum is SHA-256).
 
 use std::path::{Path, PathBuf};
 
@@ -43,10 +44,12 @@ fn main() {
     let mut files = Vec::new();
     rust_files(&root.join("src"), &mut files);
     rust_files(&root.join("crates/roughwall/src"), &mut files);
+    rust_files(&root.join("crates/topography/src"), &mut files);
     for name in [
         "Cargo.toml",
         "Cargo.lock",
         "crates/roughwall/Cargo.toml",
+        "crates/topography/Cargo.toml",
         "crates/roughwall/src/calibrated/aniso-escape.csv",
     ] {
         let path = root.join(name);

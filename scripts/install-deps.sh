@@ -12,6 +12,8 @@
 #   Python packages (pip, into the virtual environment $REBOUND_VENV, default <repo>/.venv):
 #     pysand==2.0.0                 DNV RP-O501 erosion reference
 #     numpy                         the NumPy rsgeng2D of scripts/bench-surface-numpy.sh
+#     surfacetopography==1.27.1     the reference reader of the instrument scans that
+#                                   crates/topography reads (tests/real_systems/surfacetopography.rs)
 #
 # The Rust toolchain (cargo, rustc) and a C compiler are assumed: `cargo test --workspace`
 # needs nothing else.
@@ -23,7 +25,7 @@ say() { echo "install-deps: $*" >&2; }
 die() { echo "install-deps: $*" >&2; exit 1; }
 
 apt_packages=(gfortran code-saturne openfoam slurmctld slurmd slurm-client munge iproute2 util-linux)
-pip_packages=("pysand==2.0.0" numpy)
+pip_packages=("pysand==2.0.0" numpy "surfacetopography==1.27.1")
 venv=${REBOUND_VENV:-$root/.venv}
 
 # ---- Debian packages --------------------------------------------------------------------

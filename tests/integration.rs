@@ -33,13 +33,14 @@ mod surface_cli;
 mod wall_messages;
 
 /// With `autotests = false`, a test file that is neither a `[[test]]` target of its crate's
-/// `Cargo.toml` nor a module of one would silently never run. Checked here for both crates
+/// `Cargo.toml` nor a module of one would silently never run. Checked here for the three crates
 /// of the workspace: their `tests/*.rs` and the files beside a target's `main.rs`.
 #[test]
 fn every_test_file_is_a_test_target_or_a_module_of_one() {
     for krate in [
         common::repo_root().to_path_buf(),
         common::repo_root().join("crates/roughwall"),
+        common::repo_root().join("crates/topography"),
     ] {
         let manifest = std::fs::read_to_string(krate.join("Cargo.toml")).unwrap();
         let targets: Vec<&str> = manifest

@@ -1,6 +1,7 @@
 //! The tests against real systems that no one here wrote: code_saturne running the C
 //! library at every wall hit, OpenFOAM's and pysand's erosion laws, a Slurm cluster running
-//! shards, and the Fortran example built with gfortran. They need those tools, which
+//! shards, the Fortran example built with gfortran, and SurfaceTopography reading the
+//! instrument scans that `crates/topography` reads. They need those tools, which
 //! `scripts/install-deps.sh` installs; they run only when asked for:
 //!
 //! ```sh
@@ -19,6 +20,7 @@ mod code_saturne;
 mod erosion_references;
 mod fortran;
 mod slurm;
+mod surfacetopography;
 
 /// Fails, naming the install step, unless every command of `tools` is on the `PATH` or in
 /// `/usr/sbin`, `/sbin` (where Debian puts daemons such as `slurmctld`, off a non-root

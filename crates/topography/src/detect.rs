@@ -1,0 +1,129 @@
+//! Which format a file is: its first bytes (zip for X3P, `DIGITAL SURF`, the GSF magic line,
+//! MetroPro's magic numbers, OPD's `Directory`), then its extension (`.plu` has no magic), then,
+//! for text, its header lines.
+
+use crate::error::{quote, ErrorKind, Problem, Result};
+use crate::text::parse_numbers;
+use crate::{gsf, gwyddion_text, metropro, opd, phase_text, sur, Format};
+use std::io::Read;
+use std::path::Path;
+
+/// How much of the file detection looks at.
+const HEAD: usize = 64 << 10;
+
+pub(crate) fn detect(path: &Path) -> Result<Format> {
+    let mut head = Vec::with_capacity(HEAD);
+    std::fs::File::open(path)
+        .and_then(|f| f.take(HEAD as u64).read_to_end(&mut head))
+        .map_err(|e| Problem::io(&e))?;
+    if let Some(f) = by_magic(&head) {
+        return Ok(f);
+    }
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    match ext.as_str() {
+        "x3p" => return Ok(Format::X3p),
+        "sur" => return Ok(Format::Sur),
+        "gsf" => return Ok(Format::Gsf),
+        "opd" => return Ok(Format::Opd),
+        "plu" | "apx" => return Ok(Format::Plu),
+        _ => {}
+    }
+    if let Some(f) = by_text(&head) {
+        return Ok(f);
+    }
+    Err(Problem::new(
+        ErrorKind::UnknownFormat,
+        format!(
+            "neither the first bytes nor the extension {} name a format read here; allowed: \
+             X3P (.x3p), Digital Surf (.sur), Gwyddion Simple Field (.gsf), Gwyddion text \
+             export, phase-map text (h= w= pixel size=), Zygo MetroPro (.dat), Wyko (.opd), \
+             Sensofar (.plu); a plain matrix or x y z text through read_matrix or read_xyz",
+            quote(&format!(".{ext}"))
+        ),
+    ))
+}
+
+/// The format whose magic bytes start `head`.
+pub(crate) fn by_magic(head: &[u8]) -> Option<Format> {
+    if head.starts_with(b"PK\x03\x04") {
+        Some(Format::X3p)
+    } else if head.starts_with(sur::MAGIC) {
+        Some(Format::Sur)
+    } else if head.starts_with(gsf::MAGIC) {
+        Some(Format::Gsf)
+    } else if metropro::MAGICS.iter().any(|m| head.starts_with(m)) {
+        Some(Format::MetroPro)
+    } else if head.get(2..2 + opd::MAGIC.len()) == Some(opd::MAGIC) {
+        Some(Format::Opd)
+    } else {
+        None
+    }
+}
+
+/// A text format, from the lines of `head` before its first row of numbers: Gwyddion's or the
+/// phase-map header, x y z columns, or a plain matrix. `None` for binary content.
+fn by_text(head: &[u8]) -> Option<Format> {
+    if head.is_empty() || head.contains(&0) {
+        return None;
+    }
+    let text = String::from_utf8_lossy(head);
+    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+    let mut header = Vec::new();
+    let mut rows = Vec::new();
+    for line in lines.by_ref() {
+        match parse_numbers(line) {
+            Some(row) => {
+                rows.push(row);
+                break;
+            }
+            None => header.push(line),
+        }
+    }
+    rows.extend(lines.take(64).filter_map(parse_numbers));
+    let first = rows.first()?;
+    if header
+        .iter()
+        .any(|l| l.starts_with('#') && l.contains("Lateral units"))
+        && first.len() == 3
+    {
+        return Some(Format::Xyz);
+    }
+    if header.iter().any(|l| gwyddion_text::is_header_line(l)) {
+        return Some(Format::GwyddionText);
+    }
+    if header.iter().any(|l| phase_text::is_header_line(l)) {
+        return Some(Format::PhaseText);
+    }
+    if header.iter().any(|l| !l.starts_with('#')) {
+        return None;
+    }
+    // Without a header: x y z columns repeat a position along one axis from row to row.
+    let repeats = |c: usize| rows.windows(2).any(|w| w[0].get(c) == w[1].get(c));
+    if first.len() == 3 && rows.len() > 2 && (repeats(0) || repeats(1)) {
+        Some(Format::Xyz)
+    } else {
+        Some(Format::Matrix)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_formats_are_told_apart_by_their_headers() {
+        let gwy = b"# Channel: Z\n# Width: 1 um\n# Height: 1 um\n# Value units: m\n1 2 3\n4 5 6\n";
+        assert_eq!(by_text(gwy), Some(Format::GwyddionText));
+        let phase =
+            b"h=2 w=3\npixel size=1e-6 m\nheight conversion factor (-> m)=1e-8\n1 2 3\n4 5 6\n";
+        assert_eq!(by_text(phase), Some(Format::PhaseText));
+        assert_eq!(by_text(b"0 0 1\n0 1 1\n1 0 2\n1 1 2\n"), Some(Format::Xyz));
+        assert_eq!(by_text(b"1 2 3\n4 5 6\n7 8 9\n"), Some(Format::Matrix));
+        assert_eq!(by_text(b"1 2 3 4\n5 6 7 8\n"), Some(Format::Matrix));
+        assert_eq!(by_text(b"hello\nworld\n"), None);
+        assert_eq!(by_text(b"\x00\x01\x02"), None);
+    }
+}

@@ -1,0 +1,338 @@
+//! ISO 25178-72 X3P (XML 3D surface profile; ISO 5436-2 file format, openGPS
+//! <https://sourceforge.net/p/open-gps/mwiki/X3p/>): a zip archive holding `main.xml`, the
+//! point data it names (`Record3/DataLink/PointDataLink`, usually `bindata/data.bin`), an
+//! optional validity bit mask (`ValidPointsLink`, usually `bindata/valid.bin`) and
+//! `md5checksum.hex`, the MD5 of `main.xml`.
+//!
+//! Read: a surface (`FeatureType` SUR) on regular X and Y axes (`AxisType` I, with an
+//! `Increment` in metres), heights on an absolute Z axis (`AxisType` A) of data type I (i16),
+//! L (i32), F (f32) or D (f64), little-endian, x fast (`SizeX` points per row, `SizeY` rows,
+//! `SizeZ` 1); a height is `raw × Increment + Offset` of CZ (both optional). The validity
+//! mask holds one bit per point, least significant bit first, 1 = valid; NaN in F or D data is
+//! also missing. The MD5 of `main.xml` (in `md5checksum.hex`), of the point data
+//! (`MD5ChecksumPointData`) and of the mask (`MD5ChecksumValidPoints`), where the file gives
+//! them, must match; `md5checksum.hex` is read as `md5sum` writes it (`HEX *NAME`) and checks
+//! the file it names (SurfaceTopography's writer names the point data there). This is the reading
+//! of SurfaceTopography 1.27.1's `IO/X3P.py` (signed I and L, as the openGPS library and
+//! Gwyddion's `opengps.c`), with the checksums verified. Explicit axes (`AxisType` A or
+//! incremental with a list of coordinates), point lists inline in the XML (`DataList`) and
+//! profiles or point clouds are refused.
+
+use crate::error::{quote, ErrorKind, Problem, Result};
+use crate::grid::{check_data_len, check_pixel, check_shape};
+use crate::xml;
+use crate::{Format, Topography};
+use md5::{Digest, Md5};
+use std::io::{BufReader, Read, Seek};
+use std::path::Path;
+
+/// The largest `main.xml` read (real ones are a few kB).
+const MAX_XML: u64 = 16 << 20;
+
+pub(crate) fn read(path: &Path) -> Result<Topography> {
+    let file = std::fs::File::open(path).map_err(|e| Problem::io(&e))?;
+    let mut zip = zip::ZipArchive::new(BufReader::new(file)).map_err(|e| {
+        Problem::corrupt(format!(
+            "not a readable zip archive ({e}); an X3P file is a zip of main.xml and the point data"
+        ))
+    })?;
+    let main = entry(&mut zip, "main.xml", Size::AtMost(MAX_XML))?.ok_or_else(|| {
+        Problem::corrupt(
+            "the zip archive has no main.xml; an X3P file is a zip of main.xml and the point data",
+        )
+    })?;
+    let mut info = Vec::new();
+    // `HEX *NAME` as md5sum writes it; ISO 5436-2 names main.xml, SurfaceTopography's writer
+    // names the point data: the file it names is the one checked.
+    let sum_file = entry(&mut zip, "md5checksum.hex", Size::AtMost(4096))?;
+    let sum_file = sum_file.map(|b| String::from_utf8_lossy(&b).into_owned());
+    let sum_target = sum_file.as_deref().map(|s| {
+        s.split_whitespace()
+            .nth(1)
+            .map_or("main.xml", |n| n.trim_start_matches('*'))
+            .to_string()
+    });
+    if let (Some(sum), Some("main.xml")) = (&sum_file, sum_target.as_deref()) {
+        verify(&main, sum.as_bytes(), "main.xml", "md5checksum.hex")?;
+        info.push(("main.xml MD5".to_string(), "verified".to_string()));
+    }
+    let text =
+        std::str::from_utf8(&main).map_err(|_| Problem::corrupt("main.xml is not UTF-8 text"))?;
+    let root = xml::parse(text, "main.xml")?;
+    let need = |path: &[&str]| -> Result<&str> {
+        root.text_at(path).ok_or_else(|| {
+            Problem::corrupt(format!(
+                "main.xml has no {}; an X3P surface states Record1 (axes) and Record3 (grid and data link)",
+                path.join("/")
+            ))
+        })
+    };
+    let feature = need(&["Record1", "FeatureType"])?;
+    if feature != "SUR" {
+        return Err(Problem::unsupported(format!(
+            "FeatureType is {}; a surface (SUR) is read, not a profile (PRF) or point cloud (PCL)",
+            quote(feature)
+        )));
+    }
+    for axis in ["CX", "CY"] {
+        let t = need(&["Record1", "Axes", axis, "AxisType"])?;
+        if t != "I" {
+            return Err(Problem::unsupported(format!(
+                "{axis} AxisType is {}; only regular axes (AxisType I, with an Increment) are \
+                 read for X and Y, not listed coordinates",
+                quote(t)
+            )));
+        }
+    }
+    let z_type = need(&["Record1", "Axes", "CZ", "AxisType"])?;
+    if z_type != "A" {
+        return Err(Problem::unsupported(format!(
+            "CZ AxisType is {}; heights on an absolute axis (A) are read",
+            quote(z_type)
+        )));
+    }
+    let number = |path: &[&str]| -> Result<Option<f64>> {
+        match root.text_at(path) {
+            None => Ok(None),
+            Some(s) => s.parse().map(Some).map_err(|_| {
+                Problem::corrupt(format!("{} = {} is not a number", path.join("/"), quote(s)))
+            }),
+        }
+    };
+    let increment = |axis: &str| -> Result<f64> {
+        number(&["Record1", "Axes", axis, "Increment"])?.ok_or_else(|| {
+            Problem::no_units(format!(
+                "{axis} has no Increment: the pixel size is unknown"
+            ))
+        })
+    };
+    let (dx, dy) = (increment("CX")?, increment("CY")?);
+    let z_inc = number(&["Record1", "Axes", "CZ", "Increment"])?.unwrap_or(1.0);
+    let z_off = number(&["Record1", "Axes", "CZ", "Offset"])?.unwrap_or(0.0);
+    let data_type = need(&["Record1", "Axes", "CZ", "DataType"])?;
+    let size = match data_type {
+        "I" => 2,
+        "L" => 4,
+        "F" => 4,
+        "D" => 8,
+        other => {
+            return Err(Problem::unsupported(format!(
+                "CZ DataType is {}; I (16-bit integer), L (32-bit integer), F (float) and D \
+                 (double) are read",
+                quote(other)
+            )))
+        }
+    };
+    let dim = |name: &str| -> Result<i64> {
+        let s = need(&["Record3", "MatrixDimension", name])?;
+        s.parse().map_err(|_| {
+            Problem::corrupt(format!(
+                "MatrixDimension {name} = {} is not a whole number",
+                quote(s)
+            ))
+        })
+    };
+    let (nx, ny, nz) = (dim("SizeX")?, dim("SizeY")?, dim("SizeZ")?);
+    if nz != 1 {
+        return Err(Problem::unsupported(format!(
+            "SizeZ is {nz}; one layer of heights (SizeZ 1) is read"
+        )));
+    }
+    let points = check_shape(nx, ny)?;
+    let link = root.at(&["Record3", "DataLink"]).ok_or_else(|| {
+        Problem::unsupported(
+            "main.xml has no DataLink: points listed in the XML (DataList) are not read; the \
+             points must be a binary file in the archive",
+        )
+    })?;
+    let data_name = link.text_at(&["PointDataLink"]).ok_or_else(|| {
+        Problem::corrupt("DataLink has no PointDataLink naming the point data file")
+    })?;
+    let need_bytes = points as u64 * size as u64;
+    let raw = entry(&mut zip, data_name, Size::Exactly(need_bytes))?.ok_or_else(|| {
+        Problem::corrupt(format!(
+            "the archive has no {} that PointDataLink names",
+            quote(data_name)
+        ))
+    })?;
+    check_data_len(
+        points,
+        size,
+        raw.len(),
+        &format!("X3P point data ({data_type})"),
+    )?;
+    if let Some(sum) = link.text_at(&["MD5ChecksumPointData"]) {
+        verify(&raw, sum.as_bytes(), data_name, "MD5ChecksumPointData")?;
+        info.push(("point data MD5".to_string(), "verified".to_string()));
+    }
+    match (&sum_file, sum_target.as_deref()) {
+        (Some(sum), Some(name)) if name == data_name => {
+            verify(&raw, sum.as_bytes(), data_name, "md5checksum.hex")?;
+        }
+        (Some(_), Some("main.xml")) => {}
+        (Some(_), Some(name)) => info.push((
+            "md5checksum.hex".to_string(),
+            format!("names {name}, not checked"),
+        )),
+        _ => info.push(("md5checksum.hex".to_string(), "absent".to_string())),
+    }
+    let mask_bytes = (points as u64).div_ceil(8);
+    let valid_name = link
+        .text_at(&["ValidPointsLink"])
+        .unwrap_or("bindata/valid.bin");
+    let valid = entry(&mut zip, valid_name, Size::Exactly(mask_bytes))?;
+    if let (Some(v), Some(sum)) = (&valid, link.text_at(&["MD5ChecksumValidPoints"])) {
+        verify(v, sum.as_bytes(), valid_name, "MD5ChecksumValidPoints")?;
+    }
+    if valid.is_none() && link.child("ValidPointsLink").is_some() {
+        return Err(Problem::corrupt(format!(
+            "the archive has no {} that ValidPointsLink names",
+            quote(valid_name)
+        )));
+    }
+    let value = |k: usize| -> f64 {
+        let b = &raw[k * size..(k + 1) * size];
+        match size {
+            2 => i16::from_le_bytes([b[0], b[1]]) as f64,
+            8 => f64::from_le_bytes(b.try_into().unwrap_or([0; 8])),
+            _ if data_type == "L" => i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            _ => f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+        }
+    };
+    let heights_m = (0..points)
+        .map(|k| {
+            let ok = valid.as_ref().is_none_or(|v| v[k / 8] >> (k % 8) & 1 == 1);
+            let h = value(k) * z_inc + z_off;
+            if ok && h.is_finite() {
+                h
+            } else {
+                f64::NAN
+            }
+        })
+        .collect();
+    for (key, path) in [
+        ("date", &["Record2", "Date"][..]),
+        ("vendor", &["Record2", "Instrument", "Manufacturer"]),
+        ("instrument", &["Record2", "Instrument", "Model"]),
+        ("serial", &["Record2", "Instrument", "Serial"]),
+        ("version", &["Record2", "Instrument", "Version"]),
+        ("calibration date", &["Record2", "CalibrationDate"]),
+        ("probing system", &["Record2", "ProbingSystem", "Type"]),
+        ("probe", &["Record2", "ProbingSystem", "Identification"]),
+        ("comment", &["Record2", "Comment"]),
+        ("x offset (m)", &["Record1", "Axes", "CX", "Offset"]),
+        ("y offset (m)", &["Record1", "Axes", "CY", "Offset"]),
+        ("data type", &["Record1", "Axes", "CZ", "DataType"]),
+    ] {
+        if let Some(v) = root.text_at(path).filter(|v| !v.is_empty()) {
+            info.push((key.to_string(), v.to_string()));
+        }
+    }
+    if valid.is_some() {
+        info.push(("validity mask".to_string(), valid_name.to_string()));
+    }
+    Ok(Topography {
+        nx: nx as usize,
+        ny: ny as usize,
+        dx_m: check_pixel(dx, "x")?,
+        dy_m: check_pixel(dy, "y")?,
+        heights_m,
+        format: Format::X3p,
+        info,
+    })
+}
+
+/// The size an archive member must have.
+enum Size {
+    AtMost(u64),
+    Exactly(u64),
+}
+
+/// The bytes of the member `name`, `None` when the archive has none; its declared size is
+/// checked before reading, and its content must match it.
+fn entry<R: Read + Seek>(
+    zip: &mut zip::ZipArchive<R>,
+    name: &str,
+    size: Size,
+) -> Result<Option<Vec<u8>>> {
+    let mut f = match zip.by_name(name) {
+        Ok(f) => f,
+        Err(zip::result::ZipError::FileNotFound) => return Ok(None),
+        Err(e) => {
+            return Err(Problem::corrupt(format!(
+                "the zip member {} cannot be read: {e}",
+                quote(name)
+            )))
+        }
+    };
+    let declared = f.size();
+    let limit = match size {
+        Size::AtMost(max) if declared > max => {
+            return Err(Problem::new(
+                ErrorKind::TooLarge,
+                format!(
+                    "{} is {declared} bytes; at most {max} are read",
+                    quote(name)
+                ),
+            ))
+        }
+        Size::Exactly(n) if declared != n => {
+            let kind = if declared < n {
+                ErrorKind::Truncated
+            } else {
+                ErrorKind::Corrupt
+            };
+            return Err(Problem::new(
+                kind,
+                format!(
+                    "{} holds {declared} bytes but main.xml's grid and data type need {n}",
+                    quote(name)
+                ),
+            ));
+        }
+        Size::AtMost(_) | Size::Exactly(_) => declared,
+    };
+    let mut out = Vec::with_capacity(limit as usize);
+    (&mut f)
+        .take(limit + 1)
+        .read_to_end(&mut out)
+        .map_err(|e| Problem::corrupt(format!("the zip member {} is damaged: {e}", quote(name))))?;
+    if out.len() as u64 != declared {
+        return Err(Problem::truncated(format!(
+            "the zip member {} declares {declared} bytes but holds {}",
+            quote(name),
+            out.len()
+        )));
+    }
+    Ok(Some(out))
+}
+
+/// Checks that the MD5 of `data` is the 32 hex digits at the start of `stored`.
+fn verify(data: &[u8], stored: &[u8], name: &str, source: &str) -> Result<()> {
+    let stored = String::from_utf8_lossy(stored);
+    let want = stored
+        .split_whitespace()
+        .next()
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    let got: String = Md5::digest(data)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect();
+    if want.len() != 32 || !want.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return Err(Problem::corrupt(format!(
+            "{source} holds {}, not an MD5 checksum (32 hexadecimal digits)",
+            quote(&stored)
+        )));
+    }
+    if want != got {
+        return Err(Problem::new(
+            ErrorKind::Checksum,
+            format!(
+                "the MD5 checksum of {} is {got} but {source} says {want}: the file is damaged",
+                quote(name)
+            ),
+        ));
+    }
+    Ok(())
+}

@@ -9,7 +9,9 @@ matrix). Each dump, OUTDIR/<file name>.dump, is text lines `key value` up to the
 then nx * ny little-endian float64 heights in metres, row-major (index iy * nx + ix), NaN where
 SurfaceTopography masks the point. Keys: version, nx, ny, unit, unit_m (metres per
 unit; 1 when the file has no unit), sx_m, sy_m (physical sizes in metres), dx_m, dy_m.
-SurfaceTopography's arrays are indexed [x, y]: the dump writes their transpose.
+SurfaceTopography's arrays are indexed [x, y]: the dump writes their transpose. Keys sq_m and
+sdq: Sq (rms_height_from_area, metres) and Sdq (rms_gradient) of the scan less its
+least-squares plane (detrend_mode "height"); "nan" where SurfaceTopography cannot compute them.
 
 --write-x3p reads SRC and writes it to OUT as X3P with SurfaceTopography's writer, heights of
 data type DTYPE (I, L: 16-, 32-bit integers with increment and offset; F, D: floats) and its
@@ -38,6 +40,12 @@ def dump(path, outdir, physical_sizes=None, unit=None):
     mask = np.ma.getmaskarray(h)
     heights = np.where(mask, np.nan, np.ma.getdata(h).astype(np.float64) * unit_m)
     assert heights.shape == (nx, ny), heights.shape
+    try:
+        levelled = t.detrend(detrend_mode="height")
+        sq = float(levelled.rms_height_from_area()) * unit_m
+        sdq = float(levelled.rms_gradient())
+    except Exception:  # e.g. too few points for a plane
+        sq = sdq = float("nan")
     lines = [
         f"version {SurfaceTopography.__version__}",
         f"nx {nx}",
@@ -48,6 +56,8 @@ def dump(path, outdir, physical_sizes=None, unit=None):
         f"sy_m {sy * unit_m!r}",
         f"dx_m {sx * unit_m / nx!r}",
         f"dy_m {sy * unit_m / ny!r}",
+        f"sq_m {sq!r}",
+        f"sdq {sdq!r}",
         "end",
     ]
     out = os.path.join(outdir, os.path.basename(path) + ".dump")

@@ -1,0 +1,183 @@
+//! A measured wall: a profilometer, confocal or AFM scan, levelled and characterised in the
+//! terms the models use (issue 29, "your own wall").
+//!
+//! Unlike a generated surface ([`super::HeightField`]) a scan is not periodic and may miss
+//! points (masked or unmeasured: NaN here). Every statistic is taken over the valid points,
+//! or over the triangles and differences whose nodes are all valid, and partial sums are
+//! formed row by row and added in row order, so the results do not depend on the thread
+//! count.
+//!
+//! * [`levelling`]: least-squares polynomial form removal (plane and up to cubic).
+//! * [`parameters`]: ISO 25178-2 height and gradient parameters (Sq, Ssk, Sku, Sdq).
+//! * [`lay`]: the lay direction and the normal-angle deviations along and across it, the
+//!   `Δξ`, `Δζ` of Radenkovic & Simonin 2021 (Eq. 15) measured on the scan's triangles.
+
+pub mod lay;
+pub mod levelling;
+pub mod parameters;
+
+use crate::error::{Error, Result};
+
+/// Largest scan accepted (points): 2²⁸, 2 GiB of heights.
+pub const MAX_POINTS: usize = 1 << 28;
+
+/// A measured height field in the scan's own axes: `nx × ny` points of spacings `dx`, `dy`
+/// (metres), row-major with `x` fastest (`heights[iy * nx + ix]`, point `(ix, iy)` at
+/// `(ix·dx, iy·dy)`), heights along the outward normal; not periodic; a NaN height is a
+/// missing point. In the models' frame (docs/physics.md §1: `y` is the wall normal) the
+/// scan's `x` is `x` and its `y` is `−z`, which keeps the handedness: a direction at angle
+/// `φ` from the scan's `x` towards its `y` is the models' `x*` of `β* = φ`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScanField {
+    /// Points along `x`.
+    pub nx: usize,
+    /// Points along `y`.
+    pub ny: usize,
+    /// Spacing along `x` (m).
+    pub dx: f64,
+    /// Spacing along `y` (m).
+    pub dy: f64,
+    /// Heights (m); NaN where the instrument measured nothing.
+    pub heights: Vec<f64>,
+}
+
+impl ScanField {
+    /// Checks the grid: at least 2 × 2 points, at most [`MAX_POINTS`], positive finite
+    /// spacings, `nx · ny` heights of which at least three are valid, none infinite.
+    pub fn new(nx: usize, ny: usize, dx: f64, dy: f64, heights: Vec<f64>) -> Result<ScanField> {
+        let points = nx.checked_mul(ny).filter(|&n| n <= MAX_POINTS);
+        if nx < 2 || ny < 2 || points.is_none() {
+            return Err(Error::Input(format!(
+                "scan of {nx} × {ny} points: allowed 2 × 2 up to {MAX_POINTS} points"
+            )));
+        }
+        for (key, d) in [("x", dx), ("y", dy)] {
+            if !(d.is_finite() && d > 0.0) {
+                return Err(Error::invalid(
+                    &format!("scan spacing along {key} (m)"),
+                    d,
+                    "a finite length > 0",
+                ));
+            }
+        }
+        if heights.len() != nx * ny {
+            return Err(Error::Input(format!(
+                "scan of {nx} × {ny} points holds {} heights",
+                heights.len()
+            )));
+        }
+        if heights.iter().any(|h| h.is_infinite()) {
+            return Err(Error::Input(
+                "scan has an infinite height: allowed finite heights, NaN for a missing point"
+                    .into(),
+            ));
+        }
+        let f = ScanField {
+            nx,
+            ny,
+            dx,
+            dy,
+            heights,
+        };
+        if f.valid_count() < 3 {
+            return Err(Error::Input(format!(
+                "scan of {nx} × {ny} points has {} valid points: at least 3 are needed",
+                f.valid_count()
+            )));
+        }
+        Ok(f)
+    }
+
+    /// Height at `(ix, iy)`, `None` where missing.
+    #[inline]
+    pub fn at(&self, ix: usize, iy: usize) -> Option<f64> {
+        let h = self.heights[iy * self.nx + ix];
+        (!h.is_nan()).then_some(h)
+    }
+
+    /// Points with a height.
+    pub fn valid_count(&self) -> usize {
+        self.heights.iter().filter(|h| !h.is_nan()).count()
+    }
+
+    /// The rows of heights, `ny` slices of `nx`.
+    pub(crate) fn rows(&self) -> std::slice::Chunks<'_, f64> {
+        self.heights.chunks(self.nx)
+    }
+}
+
+/// A scan levelled and characterised: what `rebound scan` writes and the wall card holds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Characterisation {
+    /// The scan with its form removed.
+    pub levelled: ScanField,
+    /// Degree of the form removed (1: plane).
+    pub degree: u32,
+    /// Height and gradient parameters of the levelled scan.
+    pub parameters: parameters::AreaParameters,
+    /// Lay and deviations; `None` without a cell of four valid corners.
+    pub lay: Option<lay::Lay>,
+}
+
+/// Levels `f` by its least-squares polynomial of total degree `degree` (1 … 3) and
+/// characterises what remains.
+pub fn characterise(f: &ScanField, degree: u32) -> Result<Characterisation> {
+    let (levelled, _) = levelling::level(f, degree)?;
+    let parameters = parameters::area_parameters(&levelled);
+    let lay = lay::lay(&levelled);
+    Ok(Characterisation {
+        levelled,
+        degree,
+        parameters,
+        lay,
+    })
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    /// A plane `a + b x + c z` plus a sinusoid, with one missing point.
+    pub(crate) fn tilted(nx: usize, ny: usize) -> ScanField {
+        let (dx, dy) = (1e-6, 2e-6);
+        let mut h = Vec::with_capacity(nx * ny);
+        for iy in 0..ny {
+            for ix in 0..nx {
+                let (x, z) = (ix as f64 * dx, iy as f64 * dy);
+                h.push(3e-6 + 0.01 * x - 0.02 * z + 1e-7 * (x / 7e-6).sin());
+            }
+        }
+        h[nx + 1] = f64::NAN;
+        ScanField::new(nx, ny, dx, dy, h).unwrap()
+    }
+
+    /// A tilted sinusoid along x: the tilt goes, the texture stays, and its grooves (along
+    /// y) are the lay.
+    #[test]
+    fn characterise_levels_then_measures() {
+        let c = characterise(&tilted(200, 50), 1).unwrap();
+        let p = c.parameters;
+        assert!(p.mean_m.abs() < 1e-18);
+        // Sinusoid of amplitude 1e-7 m less its best plane: Sq close to 1e-7/√2.
+        assert!((p.sq_m / (1e-7 / 2f64.sqrt()) - 1.0).abs() < 0.05, "{p:?}");
+        let lay = c.lay.unwrap();
+        assert!(
+            (lay.angle.abs() - std::f64::consts::FRAC_PI_2).abs() < 1e-6,
+            "{lay:?}"
+        );
+        assert!(lay.delta_zeta > 1e3 * lay.delta_xi.max(1e-300), "{lay:?}");
+    }
+
+    #[test]
+    fn bad_grids_are_refused_in_one_line() {
+        let e = |r: Result<ScanField>| r.unwrap_err().to_string();
+        assert!(e(ScanField::new(1, 1, 1.0, 1.0, vec![0.0])).contains("1 × 1"));
+        assert!(e(ScanField::new(1 << 20, 1 << 20, 1.0, 1.0, vec![])).contains("up to"));
+        assert!(e(ScanField::new(2, 2, 0.0, 1.0, vec![0.0; 4])).contains("spacing along x"));
+        assert!(e(ScanField::new(2, 2, 1.0, 1.0, vec![f64::NAN; 4])).contains("0 valid"));
+        assert!(e(ScanField::new(2, 2, 1.0, 1.0, vec![0.0; 3])).contains("holds 3"));
+        let inf = vec![0.0, 1.0, f64::INFINITY, 0.0];
+        assert!(e(ScanField::new(2, 2, 1.0, 1.0, inf)).contains("infinite"));
+        assert_eq!(tilted(8, 5).valid_count(), 39);
+    }
+}

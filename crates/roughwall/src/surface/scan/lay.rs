@@ -99,6 +99,12 @@ fn row_sums<const K: usize>(
 /// The lay of a scan and the deviations along and across it; `None` without a triangle
 /// (no cell with four valid corners).
 pub fn lay(f: &ScanField) -> Option<Lay> {
+    lay_at(f, lay_angle(f)?)
+}
+
+/// The lay's angle `φ` (rad, in `(−π/2, π/2]`): the direction along which the triangle
+/// normals' component varies least; `None` with fewer than two triangles.
+pub fn lay_angle(f: &ScanField) -> Option<f64> {
     // Pass 1: the covariance of (a, b).
     let [n, sa, sb, saa, sbb, sab] = row_sums::<6>(f, |a, b, s| {
         s[0] += 1.0;
@@ -120,6 +126,22 @@ pub fn lay(f: &ScanField) -> Option<Lay> {
     if angle > std::f64::consts::FRAC_PI_2 {
         angle -= std::f64::consts::PI;
     }
+    Some(angle)
+}
+
+/// The deviations along and across the direction `angle` (rad, from the scan's `x` towards
+/// its `y`; [`lay_angle`] for the scan's own lay, or the lay of another surface, e.g. the
+/// scan a sphere's centre surface came from); `None` with fewer than two triangles.
+pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
+    let [n, sa, sb] = row_sums::<3>(f, |a, b, s| {
+        s[0] += 1.0;
+        s[1] += a;
+        s[2] += b;
+    });
+    if n < 2.0 {
+        return None;
+    }
+    let (ma, mb) = (sa / n, sb / n);
     let (c, s) = (angle.cos(), angle.sin());
     // Pass 2: moments of ξ' = −asin(n·l), ζ' = −asin(n·t), and of the scan axes, each
     // about the angle of the mean normal (so that a tilted scan loses no precision).

@@ -11,7 +11,13 @@
 //! * [`parameters`]: ISO 25178-2 height and gradient parameters (Sq, Ssk, Sku, Sdq).
 //! * [`lay`]: the lay direction and the normal-angle deviations along and across it, the
 //!   `Δξ`, `Δζ` of Radenkovic & Simonin 2021 (Eq. 15) measured on the scan's triangles.
+//! * [`correlation`]: the autocorrelation along and across the lay, and the correlation
+//!   lengths.
+//! * [`centre_surface`]: the surface a sphere's centre rides on, for the deviations a
+//!   particle of each diameter sees.
 
+pub mod centre_surface;
+pub mod correlation;
 pub mod lay;
 pub mod levelling;
 pub mod parameters;
@@ -117,6 +123,8 @@ pub struct Characterisation {
     pub parameters: parameters::AreaParameters,
     /// Lay and deviations; `None` without a cell of four valid corners.
     pub lay: Option<lay::Lay>,
+    /// Autocorrelation along and across the lay (along the scan's `x` without a lay).
+    pub correlation: correlation::Correlation,
 }
 
 /// Levels `f` by its least-squares polynomial of total degree `degree` (1 … 3) and
@@ -125,11 +133,13 @@ pub fn characterise(f: &ScanField, degree: u32) -> Result<Characterisation> {
     let (levelled, _) = levelling::level(f, degree)?;
     let parameters = parameters::area_parameters(&levelled);
     let lay = lay::lay(&levelled);
+    let correlation = correlation::correlation(&levelled, lay.map_or(0.0, |l| l.angle));
     Ok(Characterisation {
         levelled,
         degree,
         parameters,
         lay,
+        correlation,
     })
 }
 

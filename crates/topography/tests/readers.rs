@@ -6,4 +6,5 @@
 //! `tests/integration.rs` fails until it is.
 
 mod errors;
+mod mutations;
 mod real_files;

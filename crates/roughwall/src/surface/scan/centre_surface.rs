@@ -276,9 +276,15 @@ mod tests {
         for (s, p) in seen.iter().zip(&periodic) {
             let l = s.lay.unwrap();
             assert!((l.delta_xi / p.delta_xi - 1.0).abs() < 0.05, "{s:?} {p:?}");
-            assert!((l.delta_zeta / p.delta_zeta - 1.0).abs() < 0.05, "{s:?} {p:?}");
+            assert!(
+                (l.delta_zeta / p.delta_zeta - 1.0).abs() < 0.05,
+                "{s:?} {p:?}"
+            );
         }
-        let z: Vec<f64> = seen[..3].iter().map(|s| s.lay.unwrap().delta_zeta).collect();
+        let z: Vec<f64> = seen[..3]
+            .iter()
+            .map(|s| s.lay.unwrap().delta_zeta)
+            .collect();
         assert!(z[0] > z[1] && z[1] > z[2], "{z:?}");
         assert!(seen[1].exact_fraction < 1.0 && seen[1].exact_fraction > 0.5);
         assert_eq!((seen[3].lay, seen[3].exact_fraction), (None, 0.0));

@@ -52,9 +52,7 @@ fn bilinear(f: &ScanField, u: f64, v: f64) -> Option<f64> {
     let h10 = f.at(i + 1, j)?;
     let h01 = f.at(i, j + 1)?;
     let h11 = f.at(i + 1, j + 1)?;
-    Some(
-        (1.0 - fv) * ((1.0 - fu) * h00 + fu * h10) + fv * ((1.0 - fu) * h01 + fu * h11),
-    )
+    Some((1.0 - fv) * ((1.0 - fu) * h00 + fu * h10) + fv * ((1.0 - fu) * h01 + fu * h11))
 }
 
 /// `R(τ)` along the unit vector `(cx, cy)` at lag `tau` (m), over the sample points.
@@ -83,14 +81,18 @@ fn autocorrelation_at(f: &ScanField, stride: usize, cx: f64, cy: f64, tau: f64) 
 fn crossing(lags: &[f64], r: &[f64], level: f64) -> Option<f64> {
     (1..r.len()).find_map(|k| {
         let (a, b) = (r[k - 1], r[k]);
-        (a > level && b <= level).then(|| lags[k - 1] + (a - level) / (a - b) * (lags[k] - lags[k - 1]))
+        (a > level && b <= level)
+            .then(|| lags[k - 1] + (a - level) / (a - b) * (lags[k] - lags[k - 1]))
     })
 }
 
 /// The autocorrelation of `f` (levelled: mean 0) along `angle` and across it, out to twice
 /// the farther `1/e` crossing or a quarter of the scan's shorter side.
 pub fn correlation(f: &ScanField, angle: f64) -> Correlation {
-    let stride = ((f.nx * f.ny) as f64 / MAX_SAMPLES as f64).sqrt().ceil().max(1.0) as usize;
+    let stride = ((f.nx * f.ny) as f64 / MAX_SAMPLES as f64)
+        .sqrt()
+        .ceil()
+        .max(1.0) as usize;
     let step = f.dx.min(f.dy);
     let max_lag = 0.25 * (f.nx as f64 * f.dx).min(f.ny as f64 * f.dy);
     let (c, s) = (angle.cos(), angle.sin());
@@ -160,7 +162,11 @@ mod tests {
         assert!((b / cz - 1.0).abs() < 0.05, "{b} vs {cz}");
         let k = r.lags_m.iter().position(|&t| t >= 4e-6).unwrap();
         let gauss = (-(r.lags_m[k] / cz).powi(2)).exp();
-        assert!((r.across[k] - gauss).abs() < 0.03, "{} vs {gauss}", r.across[k]);
+        assert!(
+            (r.across[k] - gauss).abs() < 0.03,
+            "{} vs {gauss}",
+            r.across[k]
+        );
         // Turned by 90°: the lengths swap.
         let t = correlation(&scan, std::f64::consts::FRAC_PI_2);
         assert!((t.length_along_m.unwrap() - b).abs() < 1e-3 * b);
@@ -169,7 +175,9 @@ mod tests {
 
     #[test]
     fn bilinear_is_exact_on_a_plane_and_refuses_gaps() {
-        let mut h: Vec<f64> = (0..12).map(|i| (i % 4) as f64 + 10.0 * (i / 4) as f64).collect();
+        let mut h: Vec<f64> = (0..12)
+            .map(|i| (i % 4) as f64 + 10.0 * (i / 4) as f64)
+            .collect();
         let f = ScanField::new(4, 3, 1.0, 1.0, h.clone()).unwrap();
         assert_eq!(bilinear(&f, 1.5, 0.25), Some(1.5 + 2.5));
         assert_eq!(bilinear(&f, 3.0, 2.0), Some(23.0));

@@ -36,7 +36,7 @@ pub struct Correlation {
 /// Height at the fractional node position `(u, v)` (in grid steps), bilinear between four
 /// valid nodes; `None` off the scan or next to a missing point.
 #[inline]
-fn bilinear(f: &ScanField, u: f64, v: f64) -> Option<f64> {
+pub(crate) fn bilinear(f: &ScanField, u: f64, v: f64) -> Option<f64> {
     if u < 0.0 || v < 0.0 {
         return None;
     }

@@ -13,6 +13,8 @@
 //!   `Δξ`, `Δζ` of Radenkovic & Simonin 2021 (Eq. 15) measured on the scan's triangles.
 //! * [`correlation`]: the autocorrelation along and across the lay, and the correlation
 //!   lengths.
+//! * [`periodic`]: the scan turned to its lay, cropped and mirror-tiled into a periodic wall
+//!   the deterministic model bounces on.
 //! * [`centre_surface`]: the surface a sphere's centre rides on, for the deviations a
 //!   particle of each diameter sees.
 
@@ -21,6 +23,7 @@ pub mod correlation;
 pub mod lay;
 pub mod levelling;
 pub mod parameters;
+pub mod periodic;
 
 use crate::error::{Error, Result};
 

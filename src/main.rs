@@ -22,6 +22,7 @@ mod progress;
 mod report;
 mod run_context;
 mod runner;
+mod scan_wall;
 mod schema;
 mod writers;
 

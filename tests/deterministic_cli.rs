@@ -508,3 +508,57 @@ fn an_unreached_target_over_surfaces_names_the_surfaces() {
         o.stderr
     );
 }
+
+/// `--surface` with a measured scan (issue 29, part 4): the scan is levelled, turned to its
+/// lay, cropped and mirror-tiled; `run.toml` says how. A scan with missing points inside the
+/// rectangle, or a file that is no scan, is one line naming it, exit 2, nothing written.
+#[test]
+fn a_measured_scan_is_a_wall_to_bounce_on() {
+    let dir = Dir::new();
+    let case = case_with(
+        dir.path(),
+        &[
+            ("beta_deg = [0.0, 60.0]", "beta_deg = [0.0]"),
+            ("count = 2000", "count = 1000"),
+        ],
+    );
+    let scans = repo_root().join("tests/data/scans");
+    let out = dir.join("x3p");
+    let x3p = scans.join("x3p-2.x3p");
+    run_case(
+        "deterministic",
+        &case,
+        &out,
+        &["--surface", x3p.to_str().unwrap()],
+    );
+    let manifest = std::fs::read_to_string(out.join("run.toml")).unwrap();
+    let scan: toml::Table = toml::from_str::<toml::Table>(&manifest).unwrap()["scan"]
+        .as_table()
+        .unwrap()
+        .clone();
+    // The grooves of this scan run along its y: the lay is at about 87°.
+    let lay = scan["lay_deg"].as_float().unwrap();
+    assert!((80.0..=90.0).contains(&lay), "{scan:?}");
+    assert_eq!(scan["format"].as_str(), Some("x3p"));
+    let fraction = scan["rectangle_area_fraction"].as_float().unwrap();
+    assert!(fraction > 0.5 && fraction <= 1.0, "{scan:?}");
+    let summary = Csv::read(&out.join("summary.csv"));
+    assert_eq!(summary.records().count(), 1);
+    for (name, needle) in [
+        ("sur-2.sur", "needs a complete wall"),
+        ("ORIGIN.md", "ORIGIN.md"),
+    ] {
+        let o = dir.join(name);
+        rebound(&[
+            "deterministic",
+            "--case",
+            case.to_str().unwrap(),
+            "--surface",
+            scans.join(name).to_str().unwrap(),
+            "--out",
+            o.to_str().unwrap(),
+        ])
+        .refused(needle);
+        assert!(!o.exists());
+    }
+}

@@ -9,7 +9,9 @@ use crate::output::out_dir::{check_distinct, check_out};
 use crate::runner;
 use crate::writers::deterministic::{finish, sphere_table, surface_table};
 use roughwall::deterministic::fill_block;
-use roughwall::deterministic::scene::{build_surfaces, realisations, BuiltSurface, SphereDilation};
+use roughwall::deterministic::scene::{
+    build_surfaces, realisations, surface_from_field, BuiltSurface, SphereDilation,
+};
 use roughwall::error::Result;
 use roughwall::surface::HeightField;
 use roughwall::tally::engine::ConditionStats;
@@ -47,14 +49,29 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     }
     // Everything the user gave is checked; now the surfaces (the only slow input step).
     let sphere = p.options.sphere_diameter_m;
-    let built = build_surfaces(
-        p.surface.as_ref(),
-        file,
-        sphere,
-        ctx.seed,
-        p.options.triangulation,
-        p.options.surfaces,
-    )?;
+    let t0 = std::time::Instant::now();
+    let built = match file.map(crate::scan_wall::scan_wall).transpose()?.flatten() {
+        // A measured scan: its wall, turned to its lay and mirror-tiled.
+        Some((wall, table)) => {
+            p.notes.insert("scan".into(), toml::Value::Table(table));
+            let secs = t0.elapsed().as_secs_f64();
+            vec![surface_from_field(
+                wall,
+                "scan",
+                secs,
+                sphere,
+                p.options.triangulation,
+            )?]
+        }
+        None => build_surfaces(
+            p.surface.as_ref(),
+            file,
+            sphere,
+            ctx.seed,
+            p.options.triangulation,
+            p.options.surfaces,
+        )?,
+    };
     let fields: Vec<&HeightField> = built.iter().map(|b| &b.field).collect();
     // The realisations share the grid: one warning for all.
     warn(fields[0].triangulation_seam());

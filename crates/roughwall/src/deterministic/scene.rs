@@ -311,7 +311,7 @@ pub fn read_surface(path: &Path) -> Result<HeightField> {
 pub struct BuiltSurface {
     /// The surface the particle centre rides on (the dilated one for a sphere).
     pub field: HeightField,
-    /// `"file"`, `"case"` or `"auto"`.
+    /// `"file"`, `"scan"`, `"case"` or `"auto"`.
     pub source: &'static str,
     /// Time to read or generate the surface (s).
     pub generate_s: f64,
@@ -340,13 +340,32 @@ pub fn build_surface(
     triangulation: Triangulation,
 ) -> Result<BuiltSurface> {
     let t0 = std::time::Instant::now();
-    let (mut field, source) = match (file, plan) {
+    let (field, source) = match (file, plan) {
         (Some(path), _) => (read_surface(path)?, "file"),
         (None, Some(plan)) => (generate_surface(plan, seed, triangulation)?, plan.source()),
         (None, None) => return Err(Error::Internal("no surface plan".into())),
     };
+    surface_from_field(
+        field,
+        source,
+        t0.elapsed().as_secs_f64(),
+        sphere_diameter_m,
+        triangulation,
+    )
+}
+
+/// A surface made elsewhere (e.g. a measured scan turned into a periodic wall,
+/// [`crate::surface::scan::periodic::mirrored_wall`]) as the run's surface: split by
+/// `triangulation`, and for a sphere dilated to the surface its centre rides on.
+/// `source` names where it came from in the manifest; `generate_s` is the time it took.
+pub fn surface_from_field(
+    mut field: HeightField,
+    source: &'static str,
+    generate_s: f64,
+    sphere_diameter_m: Option<f64>,
+    triangulation: Triangulation,
+) -> Result<BuiltSurface> {
     field.triangulation = triangulation;
-    let generate_s = t0.elapsed().as_secs_f64();
     let Some(d) = sphere_diameter_m else {
         return Ok(BuiltSurface {
             field,

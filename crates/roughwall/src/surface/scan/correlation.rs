@@ -37,17 +37,16 @@ pub struct Correlation {
 /// valid nodes; `None` off the scan or next to a missing point.
 #[inline]
 pub(crate) fn bilinear(f: &ScanField, u: f64, v: f64) -> Option<f64> {
-    if u < 0.0 || v < 0.0 {
+    // Up to round-off beyond the last row or column (a position computed to land on it).
+    let (um, vm) = ((f.nx - 1) as f64, (f.ny - 1) as f64);
+    if !(u >= 0.0 && v >= 0.0 && u <= um * (1.0 + 1e-12) && v <= vm * (1.0 + 1e-12)) {
         return None;
     }
-    let (i, j) = (u.floor() as usize, v.floor() as usize);
-    let (fu, fv) = (u - i as f64, v - j as f64);
-    if i + 1 >= f.nx || j + 1 >= f.ny {
-        // Exactly on the last row or column.
-        return (i < f.nx && j < f.ny && fu == 0.0 && fv == 0.0)
-            .then(|| f.at(i, j))
-            .flatten();
-    }
+    let (i, j) = (
+        (u.floor() as usize).min(f.nx - 2),
+        (v.floor() as usize).min(f.ny - 2),
+    );
+    let (fu, fv) = ((u - i as f64).min(1.0), (v - j as f64).min(1.0));
     let h00 = f.at(i, j)?;
     let h10 = f.at(i + 1, j)?;
     let h01 = f.at(i, j + 1)?;

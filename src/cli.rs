@@ -61,6 +61,12 @@ pub enum Command {
         after_help = "Example: rebound calibrate --case calibration/aniso.toml --out /tmp/cal"
     )]
     Calibrate(CalibrateArgs),
+    /// Characterise a measured wall (a scan file) and write its wall card: the deviations
+    /// and lay the models take.
+    #[command(
+        after_help = "Example: rebound scan --scan wall.x3p --out results/wall/scan   (then paste [wall] of wall_card.toml into a case)"
+    )]
+    Scan(ScanArgs),
 }
 
 /// Options every simulation subcommand takes.
@@ -173,6 +179,16 @@ pub struct ForceSweepArgs {
 }
 
 #[derive(Args, Debug, Clone, Default)]
+pub struct ScanArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// The scan file (X3P, SUR, GSF, Gwyddion text, MetroPro, OPD, PLU, …); overrides the
+    /// case's `[scan] file`. Without `--case`, the run is named after the file.
+    #[arg(long, value_name = "FILE")]
+    pub scan: Option<PathBuf>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
 pub struct CompareArgs {
     /// First run's output directory (e.g. a deterministic run: "DS").
     #[arg(long, value_name = "DIR")]
@@ -210,6 +226,7 @@ impl Command {
             Command::Report(_) => "report",
             Command::Merge(_) => "merge",
             Command::Calibrate(_) => "calibrate",
+            Command::Scan(_) => "scan",
         }
     }
 }

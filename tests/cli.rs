@@ -26,7 +26,13 @@ fn zero_threads_is_rejected() {
 
 #[test]
 fn help_explains_every_common_option() {
-    for sub in ["surface", "deterministic", "stochastic", "force-sweep"] {
+    for sub in [
+        "surface",
+        "deterministic",
+        "stochastic",
+        "force-sweep",
+        "scan",
+    ] {
         let r = rebound(&[sub, "--help"]);
         assert_eq!(r.code, 0);
         for opt in ["--case", "--out", "--seed", "--threads"] {
@@ -132,6 +138,7 @@ fn every_command_help_shows_an_example() {
         "report",
         "merge",
         "calibrate",
+        "scan",
     ] {
         let r = rebound(&[sub, "--help"]);
         assert_eq!(r.code, 0);

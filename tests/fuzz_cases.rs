@@ -1,8 +1,10 @@
 //! Issue "Hard to break": a deterministic mutation fuzzer over every shipped case.
 //!
-//! Every `configs/cases/*.toml` is parsed as a TOML tree and shrunk so that a valid run is
-//! quick (sweeps of ≤ 2 points per axis, 256-node surfaces, `[deterministic]
-//! side_per_corr_length = 20` for the automatic surface). Then one thing at a time is mutated:
+//! Every `configs/cases/*.toml` and `configs/scans/*.toml` is parsed as a TOML tree and shrunk
+//! so that a valid run is quick (sweeps of ≤ 2 points per axis, 256-node surfaces,
+//! `[deterministic] side_per_corr_length = 20` for the automatic surface, a scan's file as an
+//! absolute path, a generated scan's wall on a 256-node grid). Then one thing at a time is
+//! mutated:
 //!
 //! - every key (also the keys of inline tables, and the documented keys a case leaves out)
 //!   gets 0, −1, ±1e308, 1e-300, 5e-324, −1e-9, NaN, ±inf, 2⁶³ − 1 (integer keys), strings
@@ -22,8 +24,9 @@
 //! A SplitMix64 stream with a fixed seed picks the command of `[incidence]` cases, the
 //! stacks, the sampled values and the run order: every run tries the same cases.
 //!
-//! Each case runs the command it is for (`[sweep]`/`[particle]` → `force-sweep`; `[stats]` or
-//! a `[surface]` grid → `surface`; `[incidence]` → `deterministic` or `stochastic`) with
+//! Each case runs the command it is for (`[scan]` → `scan`; `[sweep]`/`[particle]` →
+//! `force-sweep`; `[stats]` or a `[surface]` grid → `surface`; `[incidence]` →
+//! `deterministic` or `stochastic`) with
 //! `--threads 2` (and `--particles 200`), its own `--out`, under `ulimit -v` and `ulimit -f`,
 //! stopped after `CPU_CAP_S` seconds of CPU time (`ulimit -t`) or `WALL_CAP` of wall time,
 //! `WORKERS` cases at a time. Per case:
@@ -33,7 +36,8 @@
 //!   too) and nothing in `--out` (absent or empty);
 //! - status 0: the expected files exist, every CSV parses (rectangular, numbers where numbers
 //!   belong), no cell is NaN or infinite, and cells are empty only where docs/outputs.md says
-//!   "not applicable" ([`empty_allowed`]); `run.toml` parses.
+//!   "not applicable" or "undefined" ([`empty_allowed`]); `run.toml` (and `scan`'s
+//!   `wall_card.toml`) parses.
 //!
 //! When the same mutation (same command) comes up on several cases, the first decides for
 //! the others: if it timed out, they are reported as skipped rather than burning the time cap
@@ -124,6 +128,7 @@ enum Cmd {
     Deterministic,
     Stochastic,
     ForceSweep,
+    Scan,
 }
 
 impl Cmd {
@@ -133,6 +138,7 @@ impl Cmd {
             Cmd::Deterministic => "deterministic",
             Cmd::Stochastic => "stochastic",
             Cmd::ForceSweep => "force-sweep",
+            Cmd::Scan => "scan",
         }
     }
 
@@ -148,6 +154,7 @@ impl Cmd {
                 &["summary.csv", "pdfs.csv", "moments.csv", "run.toml"]
             }
             Cmd::ForceSweep => &["force_sweep.csv", "run.toml"],
+            Cmd::Scan => &["scan_summary.csv", "wall_card.toml", "run.toml"],
         }
     }
 }
@@ -160,10 +167,13 @@ enum Kind {
     Incidence,
     /// `[particle]`/`[sweep]`: `force-sweep`.
     Force,
+    /// `[scan]`: `scan`.
+    Scan,
 }
 
 /// A shipped case, shrunk.
 struct Base {
+    /// The case file under `configs/` (e.g. `cases/aniso.toml`).
     file: String,
     kind: Kind,
     table: Table,
@@ -226,6 +236,25 @@ fn documented(kind: Kind) -> Vec<(&'static str, &'static str, Value)> {
             ("surface", "delta_zeta_deg", f(7.5)),
             ("stats", "beta_star_deg", l(&[0.0, 90.0])),
         ]),
+        Kind::Scan => v.extend([
+            (
+                "scan",
+                "file",
+                s(&common::repo_root()
+                    .join("tests/data/scans/x3p-2.x3p")
+                    .display()
+                    .to_string()),
+            ),
+            ("scan", "format", s("auto")),
+            ("scan", "level_degree", i(2)),
+            ("scan", "pixel_um", l(&[1.0, 1.0])),
+            ("scan", "height_unit_um", f(1.0)),
+            ("surface", "length_um", f(256.0)),
+            ("surface", "nodes", i(256)),
+            ("surface", "rms_height_um", f(1.0)),
+            ("surface", "delta_xi_deg", f(2.5)),
+            ("surface", "delta_zeta_deg", f(7.5)),
+        ]),
         Kind::Force => v.extend([
             ("particle", "preset", s("glass")),
             ("particle", "density_kg_m3", f(2500.0)),
@@ -247,7 +276,9 @@ fn documented(kind: Kind) -> Vec<(&'static str, &'static str, Value)> {
 }
 
 fn classify(t: &Table) -> Kind {
-    if t.contains_key("sweep") || t.contains_key("particle") {
+    if t.contains_key("scan") {
+        Kind::Scan
+    } else if t.contains_key("sweep") || t.contains_key("particle") {
         Kind::Force
     } else if t.contains_key("incidence") {
         Kind::Incidence
@@ -273,15 +304,44 @@ fn num(v: &Value) -> Option<f64> {
     }
 }
 
-/// Shrinks a shipped case so that its valid runs take a fraction of a second.
-fn shrink(kind: Kind, t: &mut Table) -> Vec<String> {
+/// Shrinks a shipped case so that its valid runs take a fraction of a second (`dir`: the case
+/// file's directory, against which a scan's relative file is read).
+fn shrink(kind: Kind, t: &mut Table, dir: &Path) -> Vec<String> {
     let mut notes = Vec::new();
     match kind {
+        Kind::Scan => {
+            // The mutated case is written elsewhere: its scan file becomes absolute.
+            let file = section(t, "scan")
+                .get("file")
+                .and_then(Value::as_str)
+                .map(String::from);
+            if let Some(f) = file {
+                let abs = dir.join(&f).display().to_string();
+                section(t, "scan").insert("file".into(), Value::String(abs));
+                notes.push(format!("scan.file = {f} from configs/scans/"));
+            } else if let Some(Value::Table(mut w)) = t.remove("wall") {
+                // The generated wall, on a 256-node grid instead of the automatic 2400-node
+                // one: spacing c_L,min / 4, side 64 c_L,min (h = 1 µm, Eq. 15).
+                let d_max = ["delta_xi_deg", "delta_zeta_deg"]
+                    .iter()
+                    .filter_map(|k| w.get(*k).and_then(num))
+                    .fold(0.0, f64::max);
+                let c_min = 2f64.sqrt() / d_max.to_radians();
+                let l = 256.0 * c_min / 4.0;
+                w.insert("length_um".into(), Value::Float(l));
+                w.insert("nodes".into(), Value::Integer(256));
+                w.insert("rms_height_um".into(), Value::Float(1.0));
+                t.insert("surface".into(), Value::Table(w));
+                notes.push(format!(
+                    "[wall] → [surface] with nodes = 256, rms_height_um = 1, length_um = {l}"
+                ));
+            }
+        }
         Kind::Incidence => {
             section(t, "deterministic").insert("side_per_corr_length".into(), Value::Float(20.0));
             notes.push("deterministic.side_per_corr_length = 20".into());
             if t.get("surface").is_some_and(|s| s.get("nodes").is_some()) {
-                notes.extend(shrink(Kind::Surface, t));
+                notes.extend(shrink(Kind::Surface, t, dir));
             }
         }
         Kind::Surface => {
@@ -332,24 +392,32 @@ fn shrink(kind: Kind, t: &mut Table) -> Vec<String> {
     notes
 }
 
+/// The folders of `configs/` whose cases are fuzzed.
+const CASE_DIRS: [&str; 2] = ["cases", "scans"];
+
 fn load_bases() -> Vec<Base> {
-    let dir = common::repo_root().join("configs/cases");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
+    let mut files: Vec<(&str, PathBuf)> = Vec::new();
+    for sub in CASE_DIRS {
+        let dir = common::repo_root().join("configs").join(sub);
+        files.extend(
+            std::fs::read_dir(&dir)
+                .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+                .map(|p| (sub, p)),
+        );
+    }
     files.sort();
     files
         .into_iter()
-        .map(|p| {
+        .map(|(sub, p)| {
             let text = std::fs::read_to_string(&p).unwrap();
             let mut table: Table =
                 toml::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
             let kind = classify(&table);
-            let shrink = shrink(kind, &mut table);
+            let shrink = shrink(kind, &mut table, p.parent().unwrap());
             Base {
-                file: p.file_name().unwrap().to_string_lossy().into_owned(),
+                file: format!("{sub}/{}", p.file_name().unwrap().to_string_lossy()),
                 kind,
                 table,
                 shrink,
@@ -733,6 +801,8 @@ fn edges(path: &[String]) -> Vec<f64> {
         ("sweep", "step") => &[1e-9, 1e-4],
         ("sweep", "log_start" | "log_stop") => &[-300.0, 300.0, 308.3],
         ("sweep", "start" | "stop") => &[-1e-9, 90.000001],
+        ("scan", "level_degree") => &[0.0, 1.0, 3.0, 4.0],
+        ("scan", "pixel_um" | "height_unit_um") => &[1e-6, 0.99e-6, 1e6, 1.01e6],
         _ => &[],
     };
     v.to_vec()
@@ -883,6 +953,15 @@ fn warning_probes(base: &Base) -> Vec<(Mutation, Option<Cmd>)> {
                 Mutation::SetElem(k("stats.beta_star_deg"), 0, Val::Float(200.0)),
             ]);
         }
+        Kind::Scan => {
+            // A wall beside a scan file, or a generated wall beyond Eq. 6: a warning.
+            warnings.push((set("surface.delta_zeta_deg", Val::Float(10.0)), None));
+            errors.extend([
+                set("scan.level_degree", Val::Int(0)),
+                set("scan.format", Val::Str("fuzz".into())),
+                set("scan.pixel_um", Val::OneList),
+            ]);
+        }
         Kind::Force => {}
     }
     let mut out = Vec::new();
@@ -921,6 +1000,13 @@ fn option_mutations(cmd: Cmd) -> Vec<Mutation> {
     match cmd {
         Cmd::Stochastic => v.push(a(&["--threads", "100000"])),
         Cmd::Surface => v.push(a(&["--threads", "18446744073709551615"])),
+        Cmd::Scan => v.extend([
+            a(&["--scan", "/nonexistent/fuzz.x3p"]),
+            a(&["--scan", ""]),
+            a(&["--scan", "/dev/null"]),
+            a(&["--scan", "/"]),
+            a(&["--scan"]),
+        ]),
         _ => {}
     }
     if cmd.tally() {
@@ -981,6 +1067,7 @@ fn build_jobs(bases: &[Base], rng: &mut SplitMix64) -> Vec<Job> {
             Kind::Surface => &[Cmd::Surface],
             Kind::Incidence => &[Cmd::Deterministic, Cmd::Stochastic],
             Kind::Force => &[Cmd::ForceSweep],
+            Kind::Scan => &[Cmd::Scan],
         }
     };
     let mut optioned = BTreeSet::new();
@@ -1141,13 +1228,52 @@ const STOCHASTIC_NA: [&str; 7] = [
 const DETERMINISTIC_NA: [&str; 2] = ["erosion_per_mass_rejected", "se_erosion_per_mass_rejected"];
 
 /// Text columns; every other column holds numbers.
-const TEXT_COLUMNS: [&str; 2] = ["model", "quantity"];
+const TEXT_COLUMNS: [&str; 4] = ["model", "quantity", "file", "format"];
+
+/// Columns of `scan_summary.csv` that hold the lay's statistics (all empty without a lay).
+const SCAN_LAY: [&str; 10] = [
+    "lay_deg",
+    "delta_xi_deg",
+    "delta_zeta_deg",
+    "rho_xi_zeta",
+    "skewness_xi",
+    "skewness_zeta",
+    "kurtosis_xi",
+    "kurtosis_zeta",
+    "delta_scan_x_deg",
+    "delta_scan_y_deg",
+];
+
+/// Whether a cell is a number within `tiny` of 0.
+fn near_zero(cell: &str, tiny: f64) -> bool {
+    cell.parse::<f64>().is_ok_and(|x| x.abs() <= tiny)
+}
+
+/// Where `scan_summary.csv` may leave a cell empty (docs/outputs.md, "undefined"): `file` of a
+/// generated wall; Ssk and Sku of a scan levelled flat (Sq at round-off); the three Sdq
+/// together (no point with both forward neighbours); every lay column without a lay; the
+/// direction, correlation, skewness and kurtosis of an angle without spread.
+fn scan_empty_allowed(col: &str, row: &dyn Fn(&str) -> String) -> bool {
+    let flat = |c: &str| near_zero(&row(c), 1e-9);
+    match col {
+        "file" => row("format") == "generated",
+        "ssk" | "sku" => flat("sq_um"),
+        "sdq" | "sdq_x" | "sdq_y" => row("sdq").is_empty(),
+        _ if SCAN_LAY.contains(&col) && SCAN_LAY.iter().all(|c| row(c).is_empty()) => true,
+        "lay_deg" => flat("delta_xi_deg") && flat("delta_zeta_deg"),
+        "rho_xi_zeta" => flat("delta_xi_deg") || flat("delta_zeta_deg"),
+        "skewness_xi" | "kurtosis_xi" => flat("delta_xi_deg"),
+        "skewness_zeta" | "kurtosis_zeta" => flat("delta_zeta_deg"),
+        _ => false,
+    }
+}
 
 /// Where docs/outputs.md allows an empty cell ("not applicable to this model"):
 /// - `summary.csv` of `stochastic`: the collision and first-rebound columns (`STOCHASTIC_NA`);
 ///   `deterministic`'s: the rejected candidates' erosion columns (`DETERMINISTIC_NA`);
 /// - `pdfs.csv`: `se` of the model curves `gamma_model` and `p_single_model` only;
 /// - `force_sweep.csv`: `contact_time_s` for `hu2021` and for U_N = 0 only;
+/// - `scan_summary.csv`: what is undefined for the scan ([`scan_empty_allowed`]);
 /// - a standard deviation or standard error of a single value ("undefined for this run"):
 ///   `std`, `se`, `se_histories` of a `moments.csv` row with `n = 1`, `std_*`, `se_*` of a `summary.csv` row
 ///   with one particle;
@@ -1170,6 +1296,7 @@ fn empty_allowed(cmd: Cmd, file: &str, col: &str, row: &dyn Fn(&str) -> String) 
             col == "contact_time_s"
                 && (row("model") == "hu2021" || row("u_n_m_s").parse::<f64>() == Ok(0.0))
         }
+        "scan_summary.csv" => scan_empty_allowed(col, row),
         _ => false,
     }
 }
@@ -1252,6 +1379,7 @@ fn check_csv(cmd: Cmd, file: &str, path: &Path, f: &mut Findings) {
         "force_sweep.csv",
         "surface_summary.csv",
         "normal_angles.csv",
+        "scan_summary.csv",
     ];
     if rows == 0 && must_have_rows.contains(&file) {
         f.push(("output: empty table".into(), format!("{file}: no rows")));
@@ -1279,13 +1407,13 @@ fn check_success(cmd: Cmd, out: &Path) -> Findings {
             f.push(("output: temporary file left".into(), n.clone()));
         } else if n.ends_with(".csv") {
             check_csv(cmd, n, &p, &mut f);
-        } else if n == "run.toml" {
+        } else if n == "run.toml" || n == "wall_card.toml" {
             let ok = std::fs::read_to_string(&p)
                 .ok()
                 .and_then(|t| t.parse::<Table>().ok())
                 .is_some();
             if !ok {
-                f.push(("output: run.toml does not parse".into(), n.clone()));
+                f.push((format!("output: {n} does not parse"), n.clone()));
             }
         }
     }
@@ -1395,7 +1523,11 @@ fn every_mutated_case_exits_cleanly() {
     let t0 = Instant::now();
     let bin = common::rebound_bin().to_path_buf();
     let bases = load_bases();
-    assert!(!bases.is_empty(), "no shipped cases under configs/cases");
+    assert!(!bases.is_empty(), "no shipped cases under configs/");
+    assert!(
+        bases.iter().any(|b| b.kind == Kind::Scan),
+        "no scan case under configs/scans"
+    );
     let mut rng = SplitMix64(SEED);
     let mut jobs = build_jobs(&bases, &mut rng);
     let only = std::env::var("FUZZ_CASES_ONLY").ok();
@@ -1536,7 +1668,7 @@ fn every_mutated_case_exits_cleanly() {
                         *n += 1;
                         let p = saved_dir.join(format!("{:05}.toml", job.id));
                         let header = format!(
-                            "# fuzz_cases case {}: {} (from configs/cases/{}, shrunk: {})\n\
+                            "# fuzz_cases case {}: {} (from configs/{}, shrunk: {})\n\
                              # run: rebound {} --case {} --out OUT {}\n\
                              # ({}; under ulimit -v {MEM_KB})\n",
                             job.id,
@@ -1660,7 +1792,7 @@ fn every_mutated_case_exits_cleanly() {
                 let b = &bases[j.base];
                 writeln!(
                     rep,
-                    "  #{} configs/cases/{} [{}] {}",
+                    "  #{} configs/{} [{}] {}",
                     r.job,
                     b.file,
                     j.cmd.name(),
@@ -1865,6 +1997,54 @@ fn the_judge_flags_what_the_issue_forbids() {
     assert_eq!(
         cats(judge(f, &ran(Some(0), None, ""), &out)),
         ["output: empty table"]
+    );
+
+    // scan_summary.csv: empty where undefined only; the wall card must parse.
+    reset();
+    let s = Cmd::Scan;
+    let head = "file,format,sq_um,ssk,sku,sdq,sdq_x,sdq_y,lay_deg,delta_xi_deg,delta_zeta_deg,rho_xi_zeta,skewness_xi,kurtosis_xi,skewness_zeta,kurtosis_zeta\n";
+    write("wall_card.toml", "notes = []\n[wall]\ndelta_xi_deg = 2.5\n");
+    write(
+        "scan_summary.csv",
+        &format!("{head},generated,1,0.1,3,0.2,0.1,0.1,0.5,2.5,7.5,0.01,0.1,3,0.1,3\n"),
+    );
+    assert_eq!(cats(judge(s, &ran(Some(0), None, ""), &out)), ["ok"]);
+    // A plane: no shape, no lay direction; a scan without a lay or gradients.
+    write(
+        "scan_summary.csv",
+        &format!("{head}a.x3p,x3p,0,,,0,0,0,,0,0,,,,,\nb.x3p,x3p,1,0.1,3,,,,,,,,,,,\n"),
+    );
+    assert_eq!(cats(judge(s, &ran(Some(0), None, ""), &out)), ["ok"]);
+    // A file name is never empty for a file, a deviation never while the other is there,
+    // a shape never for an angle with spread (or without a known spread).
+    write(
+        "scan_summary.csv",
+        &format!("{head},x3p,1,0.1,3,0.2,0.1,0.1,0.5,,7.5,0.01,,3,0.1,3\n"),
+    );
+    assert_eq!(
+        cats(judge(s, &ran(Some(0), None, ""), &out)),
+        [
+            "output: empty cell",
+            "output: empty cell",
+            "output: empty cell"
+        ]
+    );
+    write(
+        "scan_summary.csv",
+        &format!("{head}a.x3p,x3p,1,0.1,3,0.2,0.1,0.1,0.5,2.5,7.5,0.01,0.1,3,,3\n"),
+    );
+    assert_eq!(
+        cats(judge(s, &ran(Some(0), None, ""), &out)),
+        ["output: empty cell"]
+    );
+    write(
+        "scan_summary.csv",
+        &format!("{head}a.x3p,x3p,1,0.1,3,0.2,0.1,0.1,0.5,2.5,7.5,0.01,0.1,3,0.1,3\n"),
+    );
+    write("wall_card.toml", "[wall\n");
+    assert_eq!(
+        cats(judge(s, &ran(Some(0), None, ""), &out)),
+        ["output: wall_card.toml does not parse"]
     );
 }
 

@@ -44,3 +44,7 @@ pub const FORCE_SWEEP: &str = include_str!("../../configs/cases/hu-fig6.toml");
 
 /// `calibrate`: the calibration of the shipped escape table.
 pub const CALIBRATE: &str = include_str!("../../configs/calibration/aniso.toml");
+
+/// `scan`: the self-check of the chain, the Sec. 3 wall (Δξ, Δζ) = (2.5°, 7.5°) generated
+/// and read as a scan.
+pub const SCAN: &str = include_str!("../../configs/scans/self-check.toml");

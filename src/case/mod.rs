@@ -3,8 +3,8 @@
 //! per section family with its validated SI view: `wall` (`[surface]`, `[wall]`, `[stats]`),
 //! `scene` (`[incidence]`, `[particles]`, `[output]`), `collision`, `stochastic` (and `[stochastic]`),
 //! `deterministic` (and `[deterministic]`), `erosion`, `force` (`[impactor]`, `[sweep]`),
-//! `values` (sweep ranges). `sections` says which command reads which section; `builtin`
-//! holds each command's built-in case.
+//! `scan` (`[scan]`, and the scan it names, read), `values` (sweep ranges). `sections` says
+//! which command reads which section; `builtin` holds each command's built-in case.
 
 pub mod builtin;
 pub mod collision;
@@ -12,6 +12,7 @@ pub mod deterministic;
 pub mod erosion;
 pub mod force;
 pub mod load;
+pub mod scan;
 pub mod scene;
 pub mod schema;
 pub mod sections;

@@ -45,6 +45,9 @@ pub struct Case {
     /// without it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub erosion: Option<ErosionSection>,
+    /// A measured wall (`scan`): the scan file and how to read and level it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scan: Option<ScanSection>,
 }
 
 /// `[surface]` or `[wall]`: either correlation lengths or normal-angle deviations per axis
@@ -201,6 +204,28 @@ pub struct DeterministicSection {
     /// realisation `i mod surfaces`): the ensemble a statistical wall model stands for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub surfaces: Option<i64>,
+}
+
+/// `[scan]` for `scan`: the scan of a wall (without `file`, the case's `[wall]` or `[surface]`
+/// is generated and read as a scan).
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ScanSection {
+    /// The scan file; a relative path is read from the case file's directory.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
+    /// `"auto"` (default: told by the file) or a `topography::Format` name.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub format: Option<String>,
+    /// Degree of the polynomial form removed, 1 (a plane, default) to 3.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub level_degree: Option<i64>,
+    /// Pixel sizes `[dx, dy]` (µm) of a plain matrix or of x-y-z text.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pixel_um: Option<Vec<f64>>,
+    /// Length of one height unit (µm) of a plain matrix or of x-y-z text.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub height_unit_um: Option<f64>,
 }
 
 /// `[impactor]` (formerly `[particle]`) for `force-sweep`: a material preset or explicit

@@ -11,9 +11,17 @@ use super::{Case, Warning};
 /// deterministic one): each reads, or at least checks, every scene section.
 const MONTE_CARLO: &[&str] = &["deterministic", "stochastic", "calibrate"];
 const SURFACE_AND_MONTE_CARLO: &[&str] = &["surface", "deterministic", "stochastic", "calibrate"];
+/// The wall: also `scan`, which generates it and reads it as a scan when it has no file.
+const WALL: &[&str] = &[
+    "surface",
+    "deterministic",
+    "stochastic",
+    "calibrate",
+    "scan",
+];
 
 /// Every section of the schema, in [`present`]'s order.
-const SECTION_NAMES: [&str; 13] = [
+const SECTION_NAMES: [&str; 14] = [
     "surface",
     "wall",
     "stats",
@@ -27,13 +35,14 @@ const SECTION_NAMES: [&str; 13] = [
     "impactor",
     "particle",
     "sweep",
+    "scan",
 ];
 
 /// Each section present in `case` with the commands that read it.
 fn present(case: &Case) -> Vec<(&'static str, &'static [&'static str])> {
     let sections: [(&str, bool, &[&str]); SECTION_NAMES.len()] = [
-        ("surface", case.surface.is_some(), SURFACE_AND_MONTE_CARLO),
-        ("wall", case.wall.is_some(), SURFACE_AND_MONTE_CARLO),
+        ("surface", case.surface.is_some(), WALL),
+        ("wall", case.wall.is_some(), WALL),
         ("stats", case.stats.is_some(), &["surface"]),
         ("incidence", case.incidence.is_some(), MONTE_CARLO),
         ("particles", case.particles.is_some(), MONTE_CARLO),
@@ -50,6 +59,7 @@ fn present(case: &Case) -> Vec<(&'static str, &'static [&'static str])> {
         ("impactor", case.impactor.is_some(), &["force-sweep"]),
         ("particle", case.particle.is_some(), &["force-sweep"]),
         ("sweep", case.sweep.is_some(), &["force-sweep"]),
+        ("scan", case.scan.is_some(), &["scan"]),
     ];
     debug_assert!(sections.iter().zip(SECTION_NAMES).all(|(s, n)| s.0 == n));
     sections
@@ -125,6 +135,24 @@ mod tests {
         assert_eq!(w.len(), 5, "{w:?}");
         assert!(!w.iter().any(|w| w.contains("[deterministic]")), "{w:?}");
         assert!(w[0].starts_with("section [incidence] is not read by `surface`: it is read by `deterministic`, `stochastic`, `calibrate` only"), "{w:?}");
+    }
+
+    #[test]
+    fn a_scan_case_and_a_scene_case_warn_about_each_other() {
+        // The card's [wall] pasted beside [scan]: the models warn about [scan]; `scan` reads
+        // [wall] (the wall it generates without a file) and warns itself when a file is given.
+        let case = "[scan]\nfile = \"a.x3p\"\n[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n";
+        assert_eq!(
+            warnings(case, "stochastic"),
+            ["section [scan] is not read by `stochastic`: it is read by `scan` only"]
+        );
+        assert!(warnings(case, "scan").is_empty());
+        let w = warnings("[incidence]\nalpha_deg = [-10.0]\n", "scan");
+        assert_eq!(w.len(), 1);
+        assert!(
+            w[0].starts_with("section [incidence] is not read by `scan`"),
+            "{w:?}"
+        );
     }
 
     #[test]

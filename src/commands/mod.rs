@@ -8,6 +8,7 @@ pub mod deterministic;
 pub mod force_sweep;
 pub mod merge;
 pub mod report;
+pub mod scan;
 pub mod stochastic;
 pub mod surface;
 
@@ -180,6 +181,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::ForceSweep(a) => a.common.threads,
         Command::Merge(a) => a.threads,
         Command::Calibrate(a) => a.common.threads,
+        Command::Scan(a) => a.common.threads,
         Command::Compare(_) | Command::Report(_) => None,
     };
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
@@ -239,5 +241,6 @@ fn dispatch(cli: &Cli) -> Result<Summary> {
         Command::Report(a) => report::run(a),
         Command::Merge(a) => merge::run(a),
         Command::Calibrate(a) => calibrate::run(a),
+        Command::Scan(a) => scan::run(a),
     }
 }

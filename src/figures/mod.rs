@@ -9,7 +9,7 @@
 //!   shared by `deterministic`, `stochastic` and `compare`.
 //! * One module per command: [`surface`] (height map, normal-angle PDFs, effective
 //!   roughness), [`deterministic`], [`stochastic`], [`compare`] (overlays of two runs),
-//!   [`force_sweep`].
+//!   [`force_sweep`], [`scan`] (a measured wall's height map and slope-angle PDFs).
 //! * [`png`]: the small indexed-colour PNG the height map embeds.
 //!
 //! A new figure of a command goes into that command's module, built from [`Plot`]s; the
@@ -20,6 +20,7 @@ pub mod deterministic;
 pub mod force_sweep;
 pub mod plot;
 pub mod png;
+pub mod scan;
 pub mod stochastic;
 pub mod surface;
 pub mod sweeps;

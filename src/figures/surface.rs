@@ -25,7 +25,7 @@ use std::path::Path;
 pub const MAX_CELLS: usize = 256;
 
 /// Viridis colour map, linearly interpolated between nine anchors.
-fn viridis(t: f64) -> [u8; 3] {
+pub(super) fn viridis(t: f64) -> [u8; 3] {
     const A: [[f64; 3]; 9] = [
         [68.0, 1.0, 84.0],
         [71.0, 44.0, 122.0],
@@ -74,11 +74,43 @@ pub fn height_map(path: &Path, f: &HeightField, title: &str) -> Result<()> {
         pixels.extend((0..w).map(|ix| level(node(ix, iz))));
     }
     let bar: Vec<u8> = (0..256).rev().map(|i| i as u8).collect();
-    let map_png = png_indexed(w, h, &pixels, &palette);
-    let bar_png = png_indexed(1, 256, &bar, &palette);
+    heat_map(
+        path,
+        title,
+        &HeatMap {
+            size: (w, h),
+            pixels: &pixels,
+            palette: &palette,
+            bar: &bar,
+            extent_um: (w as f64 * f.dx * 1e6, h as f64 * f.dz * 1e6),
+            range: (lo, hi),
+            axes: ("x (µm)", "z (µm)"),
+        },
+    )
+}
 
-    let (dx, dz) = (f.dx * 1e6, f.dz * 1e6);
-    let (width_um, height_um) = (w as f64 * dx, h as f64 * dz);
+/// A colour map drawn as one embedded image: `size.0 × size.1` palette indices, row 0 at the
+/// top, over `extent_um`, beside a colour bar (`bar`: its indices from top to bottom) labelled
+/// from `range.0` to `range.1`.
+pub(super) struct HeatMap<'a> {
+    pub size: (usize, usize),
+    pub pixels: &'a [u8],
+    pub palette: &'a [[u8; 3]],
+    pub bar: &'a [u8],
+    pub extent_um: (f64, f64),
+    pub range: (f64, f64),
+    /// Labels of the x and y axes.
+    pub axes: (&'a str, &'a str),
+}
+
+/// Writes `path`: `m` as indexed-colour PNGs inside an SVG whose axes and colour bar come from
+/// `plotters`.
+pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
+    let (w, h) = m.size;
+    let (lo, hi) = m.range;
+    let map_png = png_indexed(w, h, m.pixels, m.palette);
+    let bar_png = png_indexed(1, m.bar.len(), m.bar, m.palette);
+    let (width_um, height_um) = m.extent_um;
     let (cw, ch) = (640u32, 560u32);
     let mut svg = String::new();
     let (map_px, bar_px);
@@ -98,8 +130,8 @@ pub fn height_map(path: &Path, f: &HeightField, title: &str) -> Result<()> {
             .disable_mesh()
             .label_style(("sans-serif", 12))
             .axis_desc_style(("sans-serif", 13))
-            .x_desc("x (µm)")
-            .y_desc("z (µm)")
+            .x_desc(m.axes.0)
+            .y_desc(m.axes.1)
             .draw()
             .map_err(draw_err)?;
         map_px = chart.plotting_area().get_pixel_range();

@@ -5,9 +5,11 @@
 //!
 //! * [`deterministic`], [`stochastic`]: `finish` of a Monte Carlo run (and of `merge`).
 //! * [`surface`]: the tables of `rebound surface`.
+//! * [`scan`]: the summary, wall card and notes of `rebound scan`.
 
 pub mod deterministic;
 pub mod force_sweep;
+pub mod scan;
 pub mod stochastic;
 pub mod surface;
 

@@ -410,6 +410,8 @@ pub mod headers {
         "alpha_in_deg,beta_in_deg,quantity,ks,l1,mean_a,mean_b,std_a,std_b,se_mean_a,se_mean_b,z";
     /// `effective_roughness.csv` of `surface`.
     pub const EFFECTIVE: &str = "diameter_um,d_over_cl_x,d_over_cl_z,delta_xi_eff_deg,delta_zeta_eff_deg,delta_xi_ratio,delta_zeta_ratio,contact_fraction,sqrt_h_over_d_deg,delta_xi_eff_over_sqrt_h_over_d,delta_zeta_eff_over_sqrt_h_over_d";
+    /// `scan_summary.csv` of `scan`.
+    pub const SCAN_SUMMARY: &str = "file,format,nx,ny,dx_um,dy_um,valid_points,missing_fraction,level_degree,sq_um,ssk,sku,sdq,sdq_x,sdq_y,lay_deg,delta_xi_deg,delta_zeta_deg,rho_xi_zeta,skewness_xi,skewness_zeta,kurtosis_xi,kurtosis_zeta,delta_scan_x_deg,delta_scan_y_deg";
     /// `force_sweep.csv` of `force-sweep`.
     pub const FORCE_SWEEP: &str = "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s";
 }

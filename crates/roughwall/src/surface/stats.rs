@@ -31,7 +31,7 @@ pub struct Histogram {
 }
 
 impl Histogram {
-    fn new(half_range: f64, bins: usize) -> Self {
+    pub(crate) fn new(half_range: f64, bins: usize) -> Self {
         Self {
             half_range,
             counts: vec![0; bins],
@@ -40,7 +40,7 @@ impl Histogram {
     }
 
     #[inline]
-    fn add(&mut self, x: f64) {
+    pub(crate) fn add(&mut self, x: f64) {
         let n = self.counts.len();
         let u = (x + self.half_range) * (0.5 * n as f64 / self.half_range);
         if u >= 0.0 && u < n as f64 {
@@ -50,7 +50,7 @@ impl Histogram {
         }
     }
 
-    fn merge(&mut self, o: &Self) {
+    pub(crate) fn merge(&mut self, o: &Self) {
         for (a, b) in self.counts.iter_mut().zip(&o.counts) {
             *a += b;
         }

@@ -17,6 +17,7 @@
 //! and `rw_wall_params` take, with `β⁻` measured from the lay.
 
 use super::ScanField;
+use crate::surface::stats::{Histogram, HistogramSpec};
 use rayon::prelude::*;
 
 /// The lay and the normal-angle statistics along and across it.
@@ -187,6 +188,50 @@ pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
     })
 }
 
+/// Cell rows per partial histogram of [`angle_histograms`]: a fixed split, whatever the
+/// thread count.
+const HISTOGRAM_ROWS: usize = 64;
+
+/// Fixed-width histograms of `ξ' = −asin(n·l)` (along the direction `l = (cos φ, sin φ)`,
+/// `φ = angle` from the scan's `x` towards its `y`) and `ζ' = −asin(n·t)` (across it, `t =
+/// (−sin φ, cos φ)`) over the triangles [`lay`] measures, not centred: at `angle =`
+/// [`Lay::angle`] the samples whose standard deviations are [`Lay::delta_xi`] and
+/// [`Lay::delta_zeta`] (Radenkovic & Simonin 2021, Eq. 15), to be drawn against the normal
+/// law of Eqs. (12)–(13). `spec` gives the range `[−half_range, half_range)` (rad) and the
+/// bin count (at least 1); a sample outside it counts in [`Histogram::outside`]. Blocks of
+/// rows are binned apart and merged in row order: the same counts for any thread count.
+pub fn angle_histograms(f: &ScanField, angle: f64, spec: HistogramSpec) -> [Histogram; 2] {
+    let (c, s) = (angle.cos(), angle.sin());
+    let bins = spec.bins.max(1);
+    let cell_rows = f.ny - 1;
+    let blocks: Vec<[Histogram; 2]> = (0..cell_rows.div_ceil(HISTOGRAM_ROWS))
+        .into_par_iter()
+        .map(|b| {
+            let mut h = [
+                Histogram::new(spec.half_range, bins),
+                Histogram::new(spec.half_range, bins),
+            ];
+            let rows = b * HISTOGRAM_ROWS..((b + 1) * HISTOGRAM_ROWS).min(cell_rows);
+            for iy in rows {
+                row_normals(f, iy, |a, bb| {
+                    h[0].add(-(a * c + bb * s).clamp(-1.0, 1.0).asin());
+                    h[1].add(-(-a * s + bb * c).clamp(-1.0, 1.0).asin());
+                });
+            }
+            h
+        })
+        .collect();
+    let mut out = [
+        Histogram::new(spec.half_range, bins),
+        Histogram::new(spec.half_range, bins),
+    ];
+    for block in &blocks {
+        out[0].merge(&block[0]);
+        out[1].merge(&block[1]);
+    }
+    out
+}
+
 /// Mean, variance, skewness and kurtosis from the raw sums `Σx, Σx², Σx³, Σx⁴` of `n`
 /// values (skewness and kurtosis 0 for a constant). The angles are small and centred near
 /// 0, so forming central moments from raw ones loses little.
@@ -266,6 +311,84 @@ mod tests {
         );
         assert!((lt.delta_xi / l.delta_xi - 1.0).abs() < 0.02);
         assert!((lt.delta_zeta / l.delta_zeta - 1.0).abs() < 0.02);
+    }
+
+    /// The histograms of a generated wall hold every triangle, spread as the deviations
+    /// say, with the same counts for any thread count; a tilted plane fills one bin.
+    #[test]
+    fn angle_histograms_hold_every_triangle_whatever_the_threads() {
+        let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
+        let spec = SurfaceSpec {
+            length_m: 256.0 * c(7.5) / 8.0,
+            nodes: 256,
+            rms_height_m: 1e-6,
+            corr_length_x_m: Some(c(2.5)),
+            corr_length_z_m: Some(c(7.5)),
+        };
+        let g = generate(&spec, 5);
+        let mut h = g.heights.clone();
+        h[300] = f64::NAN;
+        let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, h).unwrap();
+        let l = lay(&scan).unwrap();
+        let hs = HistogramSpec {
+            half_range: 4.0 * l.delta_zeta,
+            bins: 100,
+        };
+        let in_pool = |threads: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| angle_histograms(&scan, l.angle, hs))
+        };
+        let [xi, zeta] = in_pool(1);
+        assert_eq!(in_pool(3), [xi.clone(), zeta.clone()]);
+        for (h, delta) in [(&xi, l.delta_xi), (&zeta, l.delta_zeta)] {
+            assert_eq!(h.counts.iter().sum::<u64>() + h.outside, l.triangles);
+            // The binned standard deviation (bin centres, about the binned mean) is the
+            // deviation up to the binning (1/12 of a bin width squared) and the tails.
+            let w = h.bin_width();
+            let n = l.triangles as f64;
+            let centre = |i: usize| -h.half_range + (i as f64 + 0.5) * w;
+            let m: f64 = h
+                .counts
+                .iter()
+                .enumerate()
+                .map(|(i, &k)| k as f64 * centre(i))
+                .sum::<f64>()
+                / n;
+            let v: f64 = h
+                .counts
+                .iter()
+                .enumerate()
+                .map(|(i, &k)| k as f64 * (centre(i) - m).powi(2))
+                .sum::<f64>()
+                / n;
+            assert!(
+                (v.sqrt() / delta - 1.0).abs() < 0.02,
+                "{} {delta}",
+                v.sqrt()
+            );
+        }
+        // Along the lay the spread is the smaller one: ξ' fills fewer bins.
+        let occupied = |h: &Histogram| h.counts.iter().filter(|&&k| k > 0).count();
+        assert!(occupied(&xi) < occupied(&zeta));
+        // A plane tilted along x: one normal, all of ξ' in one bin, ζ' in the middle one.
+        let plane: Vec<f64> = (0..40).map(|i| 0.015 * (i % 8) as f64).collect();
+        let p = ScanField::new(8, 5, 1.0, 1.0, plane).unwrap();
+        let [px, pz] = angle_histograms(
+            &p,
+            0.0,
+            HistogramSpec {
+                half_range: 0.1,
+                bins: 20,
+            },
+        );
+        assert_eq!(occupied(&px), 1);
+        assert_eq!(px.counts.iter().sum::<u64>(), 56);
+        // ξ' = −asin(n·x) = asin(0.015/√1.000225) ≈ 0.015 rad: bin 11 of 20 over ±0.1.
+        assert_eq!(px.counts[11], 56);
+        assert_eq!(pz.counts[10], 56);
     }
 
     /// A tilted plane has one normal: no spread, and missing corners drop their cells.

@@ -1,0 +1,210 @@
+//! `rebound scan`: a measured wall (or, without a file, the case's wall generated and read as
+//! a scan) levelled and characterised in the terms of the rough-wall models (issue 29).
+//!
+//! Outputs in `--out` (default `results/<case name>/scan/`):
+//! - `scan_summary.csv` — one row: the grid, Sq, Ssk, Sku, Sdq, the lay and the deviations
+//!   along and across it (columns `crate::writers::scan::SUMMARY_HEADER`);
+//! - `wall_card.toml` — `[wall]` ready to paste into a case, `[lay]`, `[scan]` and notes;
+//! - `height_map.svg` (the levelled scan) and `slope_angle_pdfs.svg` (`ξ'`, `ζ'` against the
+//!   normal law);
+//! - `run.toml`.
+//!
+//! The scan is read (every problem a one-line input error) before `--out` is begun; `--out`
+//! is written as a whole (`crate::output::out_dir`).
+
+use crate::case::builtin;
+use crate::case::scan::{generated_bytes, generated_scan, ReadScan, ScanSource};
+use crate::cli::ScanArgs;
+use crate::commands::{begin_out, context, warn, Summary, Wrote};
+use crate::figures;
+use crate::output::fmt_num;
+use crate::writers::scan::{manifest_table, notes, summary_table, wall_card, Source};
+use crate::writers::surface::round_ms;
+use roughwall::deterministic::scene::SurfacePlan;
+use roughwall::error::Result;
+use roughwall::surface::scan::characterise;
+use roughwall::surface::scan::lay::angle_histograms;
+use roughwall::surface::stats::HistogramSpec;
+use roughwall::warning::Warning;
+use std::path::Path;
+use std::time::Instant;
+
+/// Bins of the slope-angle histograms, over `±4` times the larger deviation.
+pub const HIST_BINS: usize = 100;
+
+/// The case of `rebound scan --scan FILE` without `--case`: named after the file (the default
+/// output `results/<file stem>/scan/`), or `scan` when the stem cannot name a directory.
+fn named_after(file: &Path) -> String {
+    let stem = file
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .filter(|s| crate::run_context::check_name(s).is_ok())
+        .unwrap_or_else(|| "scan".into());
+    format!("name = {}\n", toml::Value::String(stem))
+}
+
+/// The heights to characterise: a scan read, or a wall to generate.
+enum Input<'a> {
+    Read(ReadScan),
+    Generate(&'a SurfacePlan),
+}
+
+/// `[surface_choice]` of `run.toml` for a generated wall: where the grid comes from, the grid
+/// and the roughness.
+fn surface_choice(plan: &SurfacePlan) -> toml::Value {
+    let spec = plan.spec();
+    let mut t = toml::Table::new();
+    t.insert("source".into(), plan.source().into());
+    t.insert("nodes".into(), (spec.nodes as i64).into());
+    t.insert("length_um".into(), (spec.length_m * 1e6).into());
+    t.insert("spacing_um".into(), (spec.spacing_m() * 1e6).into());
+    t.insert("rms_height_um".into(), (spec.rms_height_m * 1e6).into());
+    for (k, c) in [
+        ("corr_length_x_um", spec.corr_length_x_m),
+        ("corr_length_z_um", spec.corr_length_z_m),
+    ] {
+        if let Some(c) = c {
+            t.insert(k.into(), (c * 1e6).into());
+        }
+    }
+    toml::Value::Table(t)
+}
+
+/// Runs the subcommand.
+pub fn run(args: &ScanArgs) -> Result<Summary> {
+    let default = match (&args.common.case, &args.scan) {
+        (None, Some(file)) => named_after(file),
+        _ => builtin::SCAN.to_string(),
+    };
+    let mut ctx = context(&args.common, "scan", &default)?;
+    // A relative `scan.file` is read from the case file's directory.
+    let case_dir = match &args.common.case {
+        Some(p) => crate::case::load::resolve_path(p)?
+            .parent()
+            .map(Path::to_path_buf),
+        None => None,
+    };
+    let mut warnings = Vec::new();
+    let setup = ctx
+        .case
+        .scan_setup(case_dir.as_deref(), args.scan.as_deref(), &mut warnings)?;
+    warn(warnings);
+
+    let t0 = Instant::now();
+    // A file is read (and refused) before `--out` is begun; a wall is generated after.
+    let (input, file) = match &setup.source {
+        ScanSource::File(f) => (Input::Read(f.read()?), f.shown.clone()),
+        ScanSource::Generated(plan) => {
+            let nodes = plan.spec().nodes;
+            let key = match ctx.case.surface.is_some() {
+                true => "surface.nodes",
+                false => "wall (the automatic grid's nodes)",
+            };
+            roughwall::memory::require(
+                key,
+                nodes,
+                generated_bytes(plan),
+                &format!("generating a {nodes} × {nodes} wall and levelling it"),
+            )?;
+            (Input::Generate(plan), String::new())
+        }
+    };
+    let out = begin_out(&ctx.out_dir)?;
+    let ReadScan {
+        field,
+        format,
+        info,
+    } = match input {
+        Input::Read(r) => r,
+        Input::Generate(plan) => {
+            ctx.manifest.set("surface_choice", surface_choice(plan));
+            generated_scan(plan, ctx.seed)?
+        }
+    };
+    let t_read = t0.elapsed().as_secs_f64();
+    let points = (field.nx * field.ny) as u64;
+    let c = characterise(&field, setup.level_degree)?;
+    drop(field);
+    let t_char = t0.elapsed().as_secs_f64() - t_read;
+
+    let src = Source {
+        file: &file,
+        format: &format,
+    };
+    let notes = notes(&c);
+    let dir = out.path().to_path_buf();
+    summary_table(&src, &c).write(&dir.join("scan_summary.csv"))?;
+    crate::output::write_atomic(
+        &dir.join("wall_card.toml"),
+        wall_card(&src, &c, &notes).as_bytes(),
+    )?;
+    figures::scan::height_map(&dir.join("height_map.svg"), &c.levelled, &ctx.case.name)?;
+    let mut figures = vec!["height_map.svg"];
+    if let Some(lay) = &c.lay {
+        let half = (4.0 * lay.delta_xi.max(lay.delta_zeta)).max(1f64.to_radians());
+        let hists = angle_histograms(
+            &c.levelled,
+            lay.angle,
+            HistogramSpec {
+                half_range: half,
+                bins: HIST_BINS,
+            },
+        );
+        figures::scan::angle_pdfs(&dir.join("slope_angle_pdfs.svg"), &hists, lay)?;
+        figures.push("slope_angle_pdfs.svg");
+    }
+    ctx.manifest.set(
+        "scan",
+        manifest_table(&src, &c, &info, c.lay.map(|l| l.triangles)),
+    );
+    ctx.manifest.set(
+        "notes",
+        toml::Value::Array(notes.iter().map(|n| n.clone().into()).collect()),
+    );
+    ctx.manifest.set(
+        "figures",
+        toml::Value::Array(figures.iter().map(|&f| f.into()).collect()),
+    );
+    let read_key = if file.is_empty() {
+        "generate_s"
+    } else {
+        "read_s"
+    };
+    ctx.manifest
+        .set_run(read_key, toml::Value::Float(round_ms(t_read)));
+    ctx.manifest
+        .set_run("characterise_s", toml::Value::Float(round_ms(t_char)));
+    ctx.manifest.write(&dir)?;
+    let dir = out.commit()?;
+    warn(notes.into_iter().map(Warning));
+
+    let mut work = format!(
+        "{} × {} {}",
+        c.levelled.nx,
+        c.levelled.ny,
+        if file.is_empty() {
+            "generated wall".to_string()
+        } else {
+            format!("scan ({format})")
+        }
+    );
+    if let Some(l) = &c.lay {
+        work += &format!(
+            ", lay {}°, (Δξ, Δζ) = ({}°, {}°)",
+            fmt_num(round_to(l.angle.to_degrees(), 2)),
+            fmt_num(round_to(l.delta_xi.to_degrees(), 3)),
+            fmt_num(round_to(l.delta_zeta.to_degrees(), 3))
+        );
+    }
+    Ok(Summary {
+        work,
+        rate: Some((points, "points")),
+        wrote: Wrote::Dir(dir),
+    })
+}
+
+/// `x` rounded to `digits` decimals.
+fn round_to(x: f64, digits: i32) -> f64 {
+    let p = 10f64.powi(digits);
+    (x * p).round() / p
+}

@@ -1,0 +1,424 @@
+//! The outputs of `rebound scan` (issue 29): `scan_summary.csv`, `wall_card.toml`, the
+//! notes on how far the wall is from what the models assume, and the `[scan]` table of
+//! `run.toml`.
+
+use crate::output::{fmt_num, fmt_opt, CsvTable};
+use roughwall::surface::scan::lay::Lay;
+use roughwall::surface::scan::Characterisation;
+use roughwall::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
+
+/// The columns of `scan_summary.csv`.
+pub const SUMMARY_HEADER: [&str; 25] = [
+    "file",
+    "format",
+    "nx",
+    "ny",
+    "dx_um",
+    "dy_um",
+    "valid_points",
+    "missing_fraction",
+    "level_degree",
+    "sq_um",
+    "ssk",
+    "sku",
+    "sdq",
+    "sdq_x",
+    "sdq_y",
+    "lay_deg",
+    "delta_xi_deg",
+    "delta_zeta_deg",
+    "rho_xi_zeta",
+    "skewness_xi",
+    "skewness_zeta",
+    "kurtosis_xi",
+    "kurtosis_zeta",
+    "delta_scan_x_deg",
+    "delta_scan_y_deg",
+];
+
+/// Below this spread (rad) an angle is constant: its shape (skewness, kurtosis, correlation)
+/// is undefined, as the library's `lay` takes it.
+const NO_SPREAD_RAD: f64 = 1e-12;
+
+/// Below this Sq (m), a femtometre, far below any instrument's resolution, the heights are
+/// the round-off of the levelling (a plane): their shape (Ssk, Sku) is undefined.
+const NO_SPREAD_M: f64 = 1e-15;
+
+/// Bounds of the notes: slopes far from Gaussian, missing points, small scans.
+pub const MAX_ABS_SKEWNESS: f64 = 0.5;
+pub const MAX_EXCESS_KURTOSIS: f64 = 1.0;
+pub const MAX_MISSING_FRACTION: f64 = 0.10;
+pub const MIN_SIDE_POINTS: usize = 100;
+
+/// What was characterised: the file as read (empty for a generated wall) and its format.
+pub struct Source<'a> {
+    pub file: &'a str,
+    pub format: &'a str,
+}
+
+/// The fraction of the scan's points that are missing.
+pub fn missing_fraction(c: &Characterisation) -> f64 {
+    let f = &c.levelled;
+    1.0 - c.parameters.valid_points as f64 / (f.nx * f.ny) as f64
+}
+
+/// The lay's statistics that are defined: `[ξ', ζ']` has a spread.
+fn spread(l: &Lay) -> [bool; 2] {
+    [l.delta_xi > NO_SPREAD_RAD, l.delta_zeta > NO_SPREAD_RAD]
+}
+
+/// `x` when `defined`, else an empty cell.
+fn cell(x: f64, defined: bool) -> String {
+    if defined {
+        fmt_num(x)
+    } else {
+        String::new()
+    }
+}
+
+/// `scan_summary.csv`: one row; an undefined value is an empty cell.
+pub fn summary_table(src: &Source, c: &Characterisation) -> CsvTable {
+    let f = &c.levelled;
+    let p = &c.parameters;
+    let mut row = vec![
+        src.file.to_string(),
+        src.format.to_string(),
+        f.nx.to_string(),
+        f.ny.to_string(),
+        fmt_num(f.dx * 1e6),
+        fmt_num(f.dy * 1e6),
+        p.valid_points.to_string(),
+        fmt_num(missing_fraction(c)),
+        c.degree.to_string(),
+        fmt_num(p.sq_m * 1e6),
+        cell(p.ssk, p.sq_m > NO_SPREAD_M),
+        cell(p.sku, p.sq_m > NO_SPREAD_M),
+        fmt_opt(p.sdq),
+        fmt_opt(p.sdq_x),
+        fmt_opt(p.sdq_y),
+    ];
+    match &c.lay {
+        Some(l) => {
+            let [sx, sz] = spread(l);
+            row.extend([
+                cell(l.angle.to_degrees(), sx || sz),
+                fmt_num(l.delta_xi.to_degrees()),
+                fmt_num(l.delta_zeta.to_degrees()),
+                cell(l.rho, sx && sz),
+                cell(l.skewness[0], sx),
+                cell(l.skewness[1], sz),
+                cell(l.kurtosis[0], sx),
+                cell(l.kurtosis[1], sz),
+                fmt_num(l.delta_scan_axes[0].to_degrees()),
+                fmt_num(l.delta_scan_axes[1].to_degrees()),
+            ]);
+        }
+        None => row.extend(std::iter::repeat_n(String::new(), 10)),
+    }
+    let mut t = CsvTable::new(&SUMMARY_HEADER);
+    t.push(row);
+    t
+}
+
+/// The notes of the wall card (and the run's warnings): where the wall is outside what the
+/// models assume, or the scan too small or too holed to trust.
+pub fn notes(c: &Characterisation) -> Vec<String> {
+    let mut out = Vec::new();
+    match &c.lay {
+        None => out.push(
+            "no cell of the scan has four valid corners: no lay and no deviations ([wall] and [lay] are left out)"
+                .to_string(),
+        ),
+        Some(l) => {
+            for (symbol, where_, d) in [
+                ("Δξ", "along the lay", l.delta_xi),
+                ("Δζ", "across the lay", l.delta_zeta),
+            ] {
+                let deg = d.to_degrees();
+                if deg > MAX_DEVIATION_DEG {
+                    out.push(format!(
+                        "{symbol} = {}° ({where_}) is beyond {MAX_DEVIATION_DEG}°: the wall models refuse it (they stop at {MAX_DEVIATION_DEG}°; the low-roughness approximation, Eq. 6, at ~{LOW_ROUGHNESS_LIMIT_DEG}°)",
+                        fmt_num(deg)
+                    ));
+                } else if deg > LOW_ROUGHNESS_LIMIT_DEG {
+                    out.push(format!(
+                        "{symbol} = {}° ({where_}) is beyond {LOW_ROUGHNESS_LIMIT_DEG}°, outside the low-roughness approximation (Eq. 6): the models' results are extrapolated",
+                        fmt_num(deg)
+                    ));
+                }
+            }
+            for (k, (angle, where_)) in [("ξ'", "along the lay"), ("ζ'", "across the lay")]
+                .into_iter()
+                .enumerate()
+            {
+                if !spread(l)[k] {
+                    continue;
+                }
+                let (sk, ku) = (l.skewness[k], l.kurtosis[k]);
+                let mut far = Vec::new();
+                if sk.abs() > MAX_ABS_SKEWNESS {
+                    far.push(format!("skewness {sk:.2} (|skewness| > {MAX_ABS_SKEWNESS})"));
+                }
+                if (ku - 3.0).abs() > MAX_EXCESS_KURTOSIS {
+                    far.push(format!("kurtosis {ku:.2} (|kurtosis − 3| > {MAX_EXCESS_KURTOSIS})"));
+                }
+                if !far.is_empty() {
+                    out.push(format!(
+                        "slopes far from Gaussian: {angle} ({where_}) has {}; Gaussian slopes have 0 and 3, and the models assume them",
+                        far.join(" and ")
+                    ));
+                }
+            }
+        }
+    }
+    let missing = missing_fraction(c);
+    if missing > MAX_MISSING_FRACTION {
+        out.push(format!(
+            "{:.1} % of the points are missing (more than {:.0} %): the statistics are those of the measured part",
+            100.0 * missing,
+            100.0 * MAX_MISSING_FRACTION
+        ));
+    }
+    let f = &c.levelled;
+    if f.nx < MIN_SIDE_POINTS || f.ny < MIN_SIDE_POINTS {
+        out.push(format!(
+            "a {} × {} scan has fewer than {MIN_SIDE_POINTS} × {MIN_SIDE_POINTS} points: its statistics are uncertain",
+            f.nx, f.ny
+        ));
+    }
+    out
+}
+
+/// A TOML string (quoted and escaped).
+fn toml_str(s: &str) -> String {
+    toml::Value::String(s.to_string()).to_string()
+}
+
+/// A TOML float with at most 7 significant digits (always with a `.` or an exponent).
+fn toml_float(x: f64) -> String {
+    let s = fmt_num(x);
+    if s.contains(['.', 'e', 'E']) {
+        s
+    } else {
+        format!("{s}.0")
+    }
+}
+
+/// `wall_card.toml`: `[wall]` ready to paste into a case, the lay, the scan and the notes,
+/// with comments saying how a case and the C library take them.
+pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String]) -> String {
+    let what = if src.file.is_empty() {
+        "the generated wall, a self-check of the chain (docs/models.md, \"Measured walls\")"
+            .to_string()
+    } else {
+        format!("the scan {}", toml_str(src.file))
+    };
+    let mut s = format!(
+        "# Wall card of {what}.\n\
+         # Written by `rebound scan`.\n\
+         #\n\
+         # Paste [wall] into a case file (`rebound stochastic --case ...`, `deterministic`): the\n\
+         # deviations are those along the lay (Δξ) and across it (Δζ), so the models' x runs along\n\
+         # the lay and β⁻ is measured from the lay ([lay] angle_deg gives it in the scan's axes).\n\
+         # For the C library: set rw_wall_params.delta_xi_deg and delta_zeta_deg to these values, and\n\
+         # rw_hit.lay to the lay direction (direction_scan_xy, in the scan's x and y) turned into\n\
+         # the CFD wall's axes.\n\
+         # Only [wall] goes into a case file: [lay], [scan] and notes describe the measurement.\n\n"
+    );
+    s += "notes = [";
+    if notes.is_empty() {
+        s += "]\n";
+    } else {
+        s += "\n";
+        for n in notes {
+            s += &format!("    {},\n", toml_str(n));
+        }
+        s += "]\n";
+    }
+    if let Some(l) = &c.lay {
+        s += &format!(
+            "\n[wall]\n\
+             delta_xi_deg = {}    # along the lay\n\
+             delta_zeta_deg = {}    # across the lay\n",
+            toml_float(l.delta_xi.to_degrees()),
+            toml_float(l.delta_zeta.to_degrees())
+        );
+        let [sx, sz] = spread(l);
+        if sx || sz {
+            s += &format!(
+                "\n[lay]\n\
+                 angle_deg = {}    # from the scan's x towards its y: the models' β* of the lay\n\
+                 direction_scan_xy = [{}, {}]    # unit vector along the lay, in the scan's x, y\n",
+                toml_float(l.angle.to_degrees()),
+                toml_float(l.angle.cos()),
+                toml_float(l.angle.sin())
+            );
+        }
+    }
+    let f = &c.levelled;
+    let p = &c.parameters;
+    s += "\n[scan]\n";
+    if !src.file.is_empty() {
+        s += &format!("file = {}\n", toml_str(src.file));
+    }
+    s += &format!(
+        "format = {}\n\
+         grid = [{}, {}]    # points along x, y\n\
+         pixel_um = [{}, {}]\n\
+         valid_fraction = {}\n\
+         level_degree = {}    # the polynomial form removed (1: a plane)\n\
+         sq_um = {}    # rms height of the levelled scan (ISO 25178-2 Sq)\n",
+        toml_str(src.format),
+        f.nx,
+        f.ny,
+        toml_float(f.dx * 1e6),
+        toml_float(f.dy * 1e6),
+        toml_float(1.0 - missing_fraction(c)),
+        c.degree,
+        toml_float(p.sq_m * 1e6),
+    );
+    if let Some(sdq) = p.sdq {
+        s += &format!(
+            "sdq = {}    # rms slope (ISO 25178-2 Sdq)\n",
+            toml_float(sdq)
+        );
+    }
+    s
+}
+
+/// The `[scan]` table of `run.toml`: what was read, the grid, the levelling, and what the
+/// file states beside the heights.
+pub fn manifest_table(
+    src: &Source,
+    c: &Characterisation,
+    info: &[(String, String)],
+    triangles: Option<u64>,
+) -> toml::Value {
+    let f = &c.levelled;
+    let mut t = toml::Table::new();
+    t.insert(
+        "source".into(),
+        if src.file.is_empty() {
+            "generated"
+        } else {
+            "file"
+        }
+        .into(),
+    );
+    if !src.file.is_empty() {
+        t.insert("file".into(), src.file.into());
+    }
+    t.insert("format".into(), src.format.into());
+    t.insert("nx".into(), (f.nx as i64).into());
+    t.insert("ny".into(), (f.ny as i64).into());
+    t.insert("dx_m".into(), f.dx.into());
+    t.insert("dy_m".into(), f.dy.into());
+    t.insert(
+        "valid_points".into(),
+        (c.parameters.valid_points as i64).into(),
+    );
+    t.insert("level_degree".into(), (c.degree as i64).into());
+    if let Some(n) = triangles {
+        t.insert("triangles".into(), (n as i64).into());
+    }
+    if !info.is_empty() {
+        let mut i = toml::Table::new();
+        for (k, v) in info {
+            i.entry(k.clone()).or_insert_with(|| v.clone().into());
+        }
+        t.insert("file_info".into(), toml::Value::Table(i));
+    }
+    toml::Value::Table(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use roughwall::surface::scan::{characterise, ScanField};
+
+    /// A sinusoid along x with its grooves along y, some points missing.
+    fn grooves(nx: usize, ny: usize) -> Characterisation {
+        let mut h: Vec<f64> = (0..nx * ny)
+            .map(|i| 1e-6 * ((i % nx) as f64 * 0.7).sin() + 1e-8 * ((i / nx) as f64 * 0.3).cos())
+            .collect();
+        h[3] = f64::NAN;
+        characterise(&ScanField::new(nx, ny, 1e-6, 2e-6, h).unwrap(), 1).unwrap()
+    }
+
+    #[test]
+    fn the_card_parses_and_its_wall_pastes_into_a_case() {
+        let c = grooves(40, 30);
+        let src = Source {
+            file: "dir/a \"b\".x3p",
+            format: "x3p",
+        };
+        let notes = notes(&c);
+        // Steep, far from Gaussian (a sinusoid), small.
+        assert!(notes.iter().any(|n| n.contains("beyond 20°")), "{notes:?}");
+        assert!(
+            notes.iter().any(|n| n.contains("far from Gaussian")),
+            "{notes:?}"
+        );
+        assert!(
+            notes.iter().any(|n| n.contains("40 × 30 scan")),
+            "{notes:?}"
+        );
+        assert!(!notes.iter().any(|n| n.contains("missing")), "{notes:?}");
+        let card = wall_card(&src, &c, &notes);
+        let t: toml::Table = card.parse().unwrap_or_else(|e| panic!("{e}\n{card}"));
+        assert_eq!(t["scan"]["file"].as_str(), Some("dir/a \"b\".x3p"));
+        assert_eq!(t["scan"]["grid"].as_array().unwrap().len(), 2);
+        assert_eq!(t["notes"].as_array().unwrap().len(), notes.len());
+        let lay = c.lay.unwrap();
+        let angle = t["lay"]["angle_deg"].as_float().unwrap();
+        assert!((angle - lay.angle.to_degrees()).abs() < 1e-5);
+        // The grooves run along y.
+        assert!((angle.abs() - 90.0).abs() < 1.0, "{angle}");
+        let wall = format!(
+            "name = \"pasted\"\n[wall]\n{}",
+            card.split("[wall]\n")
+                .nth(1)
+                .unwrap()
+                .split("\n[")
+                .next()
+                .unwrap()
+        );
+        let case = crate::case::parse(&wall, "pasted.toml").unwrap();
+        let w = case.wall.unwrap();
+        assert!((w.delta_xi_deg.unwrap() - lay.delta_xi.to_degrees()).abs() < 1e-4);
+        assert!((w.delta_zeta_deg.unwrap() - lay.delta_zeta.to_degrees()).abs() < 1e-4);
+    }
+
+    #[test]
+    fn undefined_values_are_empty_cells_never_nan() {
+        // A plane: no spread, so no lay direction, shape or correlation.
+        let h: Vec<f64> = (0..64).map(|i| 1e-9 * (i % 8) as f64).collect();
+        let c = characterise(&ScanField::new(8, 8, 1e-6, 1e-6, h).unwrap(), 1).unwrap();
+        let t = summary_table(
+            &Source {
+                file: "",
+                format: "generated",
+            },
+            &c,
+        );
+        let text = String::from_utf8(t.to_bytes()).unwrap();
+        assert!(!text.to_ascii_lowercase().contains("nan"), "{text}");
+        let row: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
+        assert_eq!(row.len(), SUMMARY_HEADER.len());
+        let col = |n: &str| row[SUMMARY_HEADER.iter().position(|h| *h == n).unwrap()];
+        assert_eq!(col("file"), "");
+        assert_eq!((col("lay_deg"), col("rho_xi_zeta")), ("", ""));
+        assert_eq!((col("ssk"), col("sku")), ("", ""));
+        assert!(col("delta_xi_deg").parse::<f64>().unwrap() < 1e-9);
+        let card = wall_card(
+            &Source {
+                file: "",
+                format: "generated",
+            },
+            &c,
+            &[],
+        );
+        let t: toml::Table = card.parse().unwrap();
+        assert!(t.get("lay").is_none() && t["scan"].get("file").is_none());
+    }
+}

@@ -1,0 +1,362 @@
+//! `rebound scan` end to end (issue 29, parts 2 and 5): the built-in self-check gives back the
+//! generated wall, a real scan gives what the library measures on it, a turned scan turns
+//! its lay, the wall card pastes into a case, bad input is one line, and the outputs do not
+//! depend on the thread count.
+
+use crate::common::*;
+use roughwall::surface::scan::{characterise, ScanField};
+use std::path::{Path, PathBuf};
+
+/// The files every run with a lay writes.
+const OUTPUTS: [&str; 5] = [
+    "scan_summary.csv",
+    "wall_card.toml",
+    "height_map.svg",
+    "slope_angle_pdfs.svg",
+    "run.toml",
+];
+
+/// The single row of `scan_summary.csv` in `out`, its header checked against the docs.
+fn summary(out: &Path) -> Csv {
+    let c = Csv::read(&out.join("scan_summary.csv"));
+    assert_eq!(c.header.join(","), headers::SCAN_SUMMARY);
+    assert_eq!(c.rows.len(), 1);
+    c
+}
+
+fn card(out: &Path) -> toml::Table {
+    let text = std::fs::read_to_string(out.join("wall_card.toml")).unwrap();
+    text.parse()
+        .unwrap_or_else(|e| panic!("wall_card.toml: {e}\n{text}"))
+}
+
+fn real_scan(name: &str) -> PathBuf {
+    repo_root().join("tests/data/scans").join(name)
+}
+
+/// What the library measures on a scan file, levelled by a plane.
+fn library(path: &Path) -> roughwall::surface::scan::Characterisation {
+    let t = topography::read(path).unwrap();
+    let f = ScanField::new(t.nx, t.ny, t.dx_m, t.dy_m, t.heights_m).unwrap();
+    characterise(&f, 1).unwrap()
+}
+
+/// `a` within `rel` of `b`.
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * b.abs()
+}
+
+/// Without `--case`: the Sec. 3 wall (2.5°, 7.5°) generated and read as a scan gives itself
+/// back, with the lay along the scan's x; the outputs are the same bytes for 1 and 2 threads.
+#[test]
+fn the_builtin_self_check_gives_back_the_generated_wall_for_any_thread_count() {
+    let dir = Dir::new();
+    let one = dir.join("one");
+    let two = dir.join("two");
+    let r = rebound(&["scan", "--threads", "1", "--out", one.to_str().unwrap()]).ok();
+    assert!(
+        r.stderr
+            .starts_with("scan: 2400 × 2400 generated wall, lay "),
+        "{}",
+        r.stderr
+    );
+    rebound(&["scan", "--threads", "2", "--out", two.to_str().unwrap()]).ok();
+    for f in OUTPUTS {
+        assert!(one.join(f).is_file(), "{f}");
+        if f != "run.toml" {
+            assert_eq!(
+                std::fs::read(one.join(f)).unwrap(),
+                std::fs::read(two.join(f)).unwrap(),
+                "{f} differs between --threads 1 and 2"
+            );
+        }
+    }
+    let c = summary(&one);
+    let row = c.row(0);
+    assert_eq!((&row["file"], &row["format"]), ("", "generated"));
+    assert_eq!((row.num("nx"), row.num("ny")), (2400.0, 2400.0));
+    // The triangles of one 100-c_L surface: within a few per cent of the generator's target.
+    assert!(close(row.num("delta_xi_deg"), 2.5, 0.04), "{row:?}");
+    assert!(close(row.num("delta_zeta_deg"), 7.5, 0.04), "{row:?}");
+    assert!(row.num("lay_deg").abs() < 1.0, "{row:?}");
+    // Gaussian slopes, the scan's own axes are the lay's.
+    for k in ["skewness_xi", "skewness_zeta"] {
+        assert!(row.num(k).abs() < 0.1, "{row:?}");
+    }
+    for k in ["kurtosis_xi", "kurtosis_zeta"] {
+        assert!((row.num(k) - 3.0).abs() < 0.2, "{row:?}");
+    }
+    assert!(close(
+        row.num("delta_scan_x_deg"),
+        row.num("delta_xi_deg"),
+        1e-3
+    ));
+    assert!(close(
+        row.num("delta_scan_y_deg"),
+        row.num("delta_zeta_deg"),
+        1e-3
+    ));
+    // The card says the same, and has nothing to warn about.
+    let t = card(&one);
+    assert_eq!(
+        t["wall"]["delta_xi_deg"].as_float(),
+        Some(row.num("delta_xi_deg"))
+    );
+    assert_eq!(
+        t["wall"]["delta_zeta_deg"].as_float(),
+        Some(row.num("delta_zeta_deg"))
+    );
+    assert_eq!(t["lay"]["angle_deg"].as_float(), Some(row.num("lay_deg")));
+    assert_eq!(t["notes"].as_array().map(Vec::len), Some(0));
+    let manifest = std::fs::read_to_string(one.join("run.toml")).unwrap();
+    assert!(manifest.contains("[surface_choice]") && manifest.contains("source = \"auto\""));
+    // The chain measures what `deterministic` measures on the same surface (same seed, same
+    // automatic grid, its triangles but for the periodic seam): 2.4846°, 7.3311° to the
+    // 4 decimals of its run.toml.
+    let det = dir.join("det");
+    run_case(
+        "deterministic",
+        &shipped_case("cases/aniso.toml"),
+        &det,
+        &["--particles", "1"],
+    );
+    let m: toml::Table = std::fs::read_to_string(det.join("run.toml"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    for (key, col) in [
+        ("measured_delta_xi_deg", "delta_xi_deg"),
+        ("measured_delta_zeta_deg", "delta_zeta_deg"),
+    ] {
+        let want = m["surface_choice"][key].as_float().unwrap();
+        assert!(
+            (row.num(col) - want).abs() < 2e-4,
+            "{col}: {row:?} vs {want}"
+        );
+    }
+}
+
+/// The shipped cases of two real scans: Sq, Sdq, the deviations and the lay are what
+/// `roughwall::surface::scan::characterise` gives for the same file, to the 7 digits of the
+/// CSV; the card's [wall] pastes into a stochastic case, which then runs on those deviations.
+#[test]
+fn a_real_scan_gives_what_the_library_measures_and_its_card_pastes_into_a_case() {
+    let dir = Dir::new();
+    for (case, file) in [
+        ("scans/x3p-2.toml", "x3p-2.x3p"),
+        ("scans/plu-1.toml", "plu-1.plu"),
+    ] {
+        let out = dir.join(file);
+        run_case("scan", &shipped_case(case), &out, &[]);
+        let c = summary(&out);
+        let row = c.row(0);
+        assert!(
+            row["file"].ends_with(&format!("tests/data/scans/{file}")),
+            "{row:?}"
+        );
+        assert!(!row["file"].contains(".."), "{row:?}");
+        let lib = library(&real_scan(file));
+        let p = lib.parameters;
+        let lay = lib.lay.unwrap();
+        for (col, want) in [
+            ("sq_um", p.sq_m * 1e6),
+            ("sdq", p.sdq.unwrap()),
+            ("sdq_x", p.sdq_x.unwrap()),
+            ("sdq_y", p.sdq_y.unwrap()),
+            ("ssk", p.ssk),
+            ("sku", p.sku),
+            ("delta_xi_deg", lay.delta_xi.to_degrees()),
+            ("delta_zeta_deg", lay.delta_zeta.to_degrees()),
+            ("lay_deg", lay.angle.to_degrees()),
+        ] {
+            assert!(
+                close(row.num(col), want, 1e-6),
+                "{file} {col}: {row:?} vs {want}"
+            );
+        }
+        assert_eq!(row.num("valid_points"), p.valid_points as f64);
+        for f in OUTPUTS {
+            assert!(out.join(f).is_file(), "{file}: {f}");
+        }
+        // Both real walls are far from Gaussian along the lay: the card says so.
+        let t = card(&out);
+        let notes: Vec<&str> = t["notes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|n| n.as_str().unwrap())
+            .collect();
+        assert!(
+            notes
+                .iter()
+                .any(|n| n.starts_with("slopes far from Gaussian: ξ'")),
+            "{notes:?}"
+        );
+        // Paste [wall] into a stochastic case: it runs with the card's deviations.
+        let text = std::fs::read_to_string(out.join("wall_card.toml")).unwrap();
+        let wall = text
+            .split("\n[wall]\n")
+            .nth(1)
+            .unwrap()
+            .split("\n[")
+            .next()
+            .unwrap();
+        let scene = dir.write_case(
+            &format!("{file}.toml"),
+            &format!(
+                "name = \"pasted\"\n[wall]\n{wall}\n[incidence]\nalpha_deg = [-10.0]\n[particles]\ncount = 2000\n"
+            ),
+        );
+        let sm = run_case("stochastic", &scene, &dir.join(format!("{file}-sm")), &[]);
+        let s = Csv::read(&sm.join("summary.csv"));
+        let r = s.row(0);
+        assert_eq!(&r["delta_xi_deg"], &row["delta_xi_deg"]);
+        assert_eq!(&r["delta_zeta_deg"], &row["delta_zeta_deg"]);
+    }
+}
+
+/// The same scan turned by +90° (written as a plain matrix: row `iy'` of the turned scan is
+/// column `iy'` of the original, read from its last row up) has its lay turned by 90° and the
+/// same deviations, Sq and Sdq; Sdq's components swap.
+#[test]
+fn a_scan_turned_by_90_degrees_turns_its_lay_and_keeps_its_deviations() {
+    let dir = Dir::new();
+    let t = topography::read(&real_scan("x3p-2.x3p")).unwrap();
+    let (nx, ny) = (t.nx, t.ny);
+    // Turned: (x, y) → (−y, x). New point (i, j) is the old point (j, ny − 1 − i).
+    let mut text = String::with_capacity(nx * ny * 24);
+    for j in 0..nx {
+        let row: Vec<String> = (0..ny)
+            .map(|i| format!("{:e}", t.heights_m[(ny - 1 - i) * nx + j] * 1e6))
+            .collect();
+        text += &row.join(" ");
+        text += "\n";
+    }
+    std::fs::write(dir.join("turned.txt"), text).unwrap();
+    let case = dir.write_case(
+        "turned.toml",
+        &format!(
+            "name = \"turned\"\n[scan]\nfile = \"turned.txt\"\nformat = \"matrix\"\npixel_um = [{:e}, {:e}]\nheight_unit_um = 1.0\n",
+            t.dy_m * 1e6,
+            t.dx_m * 1e6
+        ),
+    );
+    let turned = run_case("scan", &case, &dir.join("turned"), &[]);
+    let original = dir.join("original");
+    rebound(&[
+        "scan",
+        "--scan",
+        real_scan("x3p-2.x3p").to_str().unwrap(),
+        "--out",
+        original.to_str().unwrap(),
+    ])
+    .ok();
+    let (a, b) = (summary(&original), summary(&turned));
+    let (a, b) = (a.row(0), b.row(0));
+    assert_eq!(&b["format"], "matrix");
+    assert_eq!((b.num("nx"), b.num("ny")), (a.num("ny"), a.num("nx")));
+    // The lay (in (−90°, 90°]) turns by 90°, modulo 180°.
+    let turn = (b.num("lay_deg") - a.num("lay_deg")).rem_euclid(180.0);
+    // Measured: 89.996°.
+    assert!((turn - 90.0).abs() < 0.05, "{turn}: {a:?} {b:?}");
+    // The triangles differ (the diagonals turn with the grid) and the forward differences
+    // start from the other edge: the statistics agree to 10⁻⁵ (measured), not to the bit.
+    for col in ["delta_xi_deg", "delta_zeta_deg"] {
+        assert!(close(b.num(col), a.num(col), 1e-4), "{col}: {a:?} {b:?}");
+    }
+    assert!(close(b.num("sq_um"), a.num("sq_um"), 1e-6));
+    assert!(close(b.num("sdq"), a.num("sdq"), 1e-4));
+    assert!(close(b.num("sdq_x"), a.num("sdq_y"), 1e-4));
+    assert!(close(b.num("sdq_y"), a.num("sdq_x"), 1e-4));
+}
+
+/// `--scan FILE` without a case names the run after the file; a relative `scan.file` is read
+/// from the case file's directory, wherever the run starts.
+#[test]
+fn the_run_is_named_after_the_file_and_relative_paths_follow_the_case() {
+    let dir = Dir::new();
+    let plu = real_scan("plu-1.plu");
+    dir.command()
+        .args(["scan", "--scan", plu.to_str().unwrap()])
+        .run()
+        .ok();
+    assert!(dir.join("results/plu-1/scan/wall_card.toml").is_file());
+    std::fs::create_dir_all(dir.join("cases")).unwrap();
+    std::fs::create_dir_all(dir.join("data")).unwrap();
+    std::fs::copy(&plu, dir.join("data/wall.plu")).unwrap();
+    let case = dir.write_case(
+        "cases/wall.toml",
+        "name = \"wall\"\n[scan]\nfile = \"../data/wall.plu\"\nlevel_degree = 2\n",
+    );
+    let elsewhere = Dir::new();
+    elsewhere
+        .command()
+        .args(["scan", "--case", case.to_str().unwrap()])
+        .run()
+        .ok();
+    let out = elsewhere.join("results/wall/scan");
+    let row = summary(&out);
+    let row = row.row(0);
+    assert_eq!((&row["format"], &row["level_degree"]), ("plu", "2"));
+    assert!(row["file"].ends_with("data/wall.plu"), "{row:?}");
+}
+
+/// Bad input: one line naming the key (or the file), exit status 2, nothing in `--out`.
+#[test]
+fn bad_input_is_one_line_and_writes_nothing() {
+    let dir = Dir::new();
+    let x3p = real_scan("x3p-2.x3p");
+    let x3p = x3p.to_str().unwrap();
+    // A corrupt file: the first 100 kB of a real X3P, and bytes that are no zip at all.
+    let bytes = std::fs::read(x3p).unwrap();
+    std::fs::write(dir.join("truncated.x3p"), &bytes[..100_000]).unwrap();
+    std::fs::write(dir.join("junk.x3p"), b"this is not a scan").unwrap();
+    let cases = [
+        ("[scan]\nfile = \"no-such.x3p\"\n", "invalid `scan.file` = \"no-such.x3p\""),
+        (
+            &format!("[scan]\nfile = \"{x3p}\"\nformat = \"x3q\"\n"),
+            "invalid `scan.format` = \"x3q\": allowed \"auto\"",
+        ),
+        (
+            &format!("[scan]\nfile = \"{x3p}\"\nlevel_degree = 4\n"),
+            "invalid `scan.level_degree` = 4: allowed 1 (a plane), 2 or 3",
+        ),
+        (
+            &format!("[scan]\nfile = \"{x3p}\"\npixel_um = [0.1, 0.1]\n"),
+            "invalid `scan.pixel_um` = [0.1, 0.1]: allowed only with `scan.format` = \"matrix\" or \"xyz\"",
+        ),
+        (
+            &format!("[scan]\nfile = \"{x3p}\"\nformat = \"matrix\"\n"),
+            "`scan.format` = \"matrix\" needs `scan.pixel_um`",
+        ),
+        (
+            "[scan]\nfile = \"truncated.x3p\"\n",
+            "`scan.file`: ",
+        ),
+        ("[scan]\nfile = \"junk.x3p\"\n", "not a readable zip archive"),
+        (
+            "[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 0.0\n",
+            "no roughness along z",
+        ),
+        ("[scan]\nlevel_degree = 2\n", "no wall to generate"),
+    ];
+    for (i, (body, needle)) in cases.iter().enumerate() {
+        let case = dir.write_case(&format!("c{i}.toml"), &format!("name = \"bad\"\n{body}"));
+        refuse_case("scan", &case, dir.path(), needle);
+    }
+    for (file, needle) in [
+        ("no-such.x3p", "invalid `--scan` = "),
+        ("junk.x3p", "`--scan`: "),
+    ] {
+        let out = dir.join("never");
+        rebound(&[
+            "scan",
+            "--scan",
+            dir.join(file).to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .refused(needle);
+        assert!(!out.exists());
+    }
+}

@@ -208,22 +208,13 @@ pub fn seen_deviations(f: &ScanField, lay_angle: f64, diameters_m: &[f64]) -> Ve
 mod tests {
     use super::*;
     use crate::surface::dilation::dilate_paraboloid;
-    use crate::surface::{generate, SurfaceSpec};
 
     /// Inside the band the edges lose, the open dilation of a generated wall equals the
     /// periodic one of `surface::dilation` bit for bit; a missing point blanks its
     /// neighbourhood and nothing else.
     #[test]
     fn equals_the_periodic_dilation_away_from_edges_and_gaps() {
-        let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
-        let spec = SurfaceSpec {
-            length_m: 256.0 * c(7.5) / 8.0,
-            nodes: 256,
-            rms_height_m: 1e-6,
-            corr_length_x_m: Some(c(2.5)),
-            corr_length_z_m: Some(c(7.5)),
-        };
-        let g = generate(&spec, 5);
+        let g = crate::surface::scan::tests::sec3_wall(256, 5);
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, g.heights.clone()).unwrap();
         let d = 50e-6;
         let open = centre_surface(&scan, d);
@@ -259,15 +250,7 @@ mod tests {
     /// diameter, and a sphere wider than the scan sees nothing exact.
     #[test]
     fn seen_deviations_follow_the_periodic_ones() {
-        let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
-        let spec = SurfaceSpec {
-            length_m: 512.0 * c(7.5) / 8.0,
-            nodes: 512,
-            rms_height_m: 1e-6,
-            corr_length_x_m: Some(c(2.5)),
-            corr_length_z_m: Some(c(7.5)),
-        };
-        let g = generate(&spec, 9);
+        let g = crate::surface::scan::tests::sec3_wall(512, 9);
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, g.heights.clone()).unwrap();
         let angle = super::super::lay::lay_angle(&scan).unwrap();
         let ds = [0.0, 50e-6, 200e-6, 1.0];

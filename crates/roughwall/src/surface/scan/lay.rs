@@ -251,7 +251,6 @@ fn moments4(n: f64, s: &[f64]) -> (f64, f64, f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::{generate, SurfaceSpec};
 
     /// A generated Garcia–Stoll wall with its `x` along the grooves, read as a scan: the lay
     /// is the scan's `x`, the deviations those the generator measures; the same wall
@@ -260,15 +259,7 @@ mod tests {
     fn the_lay_of_a_generated_wall_is_its_smooth_axis() {
         // h = 1 µm, Δξ = 2.5°, Δζ = 7.5° (c_L = √2 h/Δ, Eq. 15), 8 nodes per c_Lz: a
         // surface of 64 c_Lz by 21 c_Lx.
-        let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
-        let spec = SurfaceSpec {
-            length_m: 512.0 * c(7.5) / 8.0,
-            nodes: 512,
-            rms_height_m: 1e-6,
-            corr_length_x_m: Some(c(2.5)),
-            corr_length_z_m: Some(c(7.5)),
-        };
-        let g = generate(&spec, 11);
+        let g = crate::surface::scan::tests::sec3_wall(512, 11);
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, g.heights.clone()).unwrap();
         let l = lay(&scan).unwrap();
         assert!(
@@ -317,15 +308,7 @@ mod tests {
     /// say, with the same counts for any thread count; a tilted plane fills one bin.
     #[test]
     fn angle_histograms_hold_every_triangle_whatever_the_threads() {
-        let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
-        let spec = SurfaceSpec {
-            length_m: 256.0 * c(7.5) / 8.0,
-            nodes: 256,
-            rms_height_m: 1e-6,
-            corr_length_x_m: Some(c(2.5)),
-            corr_length_z_m: Some(c(7.5)),
-        };
-        let g = generate(&spec, 5);
+        let g = crate::surface::scan::tests::sec3_wall(256, 5);
         let mut h = g.heights.clone();
         h[300] = f64::NAN;
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, h).unwrap();

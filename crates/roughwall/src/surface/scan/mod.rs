@@ -150,6 +150,20 @@ pub fn characterise(f: &ScanField, degree: u32) -> Result<Characterisation> {
 pub(crate) mod tests {
     use super::*;
 
+    /// The Sec. 3 wall (Δξ, Δζ) = (2.5°, 7.5°) with h = 1 µm (c_L = √2 h/Δ, Eq. 15) on
+    /// `nodes`² nodes, 8 per c_Lz: a surface of `nodes/8` c_Lz by `nodes/24` c_Lx.
+    pub(crate) fn sec3_wall(nodes: usize, seed: u64) -> crate::surface::HeightField {
+        let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
+        let spec = crate::surface::SurfaceSpec {
+            length_m: nodes as f64 * c(7.5) / 8.0,
+            nodes,
+            rms_height_m: 1e-6,
+            corr_length_x_m: Some(c(2.5)),
+            corr_length_z_m: Some(c(7.5)),
+        };
+        crate::surface::generate(&spec, seed)
+    }
+
     /// A plane `a + b x + c z` plus a sinusoid, with one missing point.
     pub(crate) fn tilted(nx: usize, ny: usize) -> ScanField {
         let (dx, dy) = (1e-6, 2e-6);

@@ -148,7 +148,6 @@ pub fn mirrored_wall(f: &ScanField, lay_angle: f64) -> Result<(HeightField, Mirr
 mod tests {
     use super::*;
     use crate::surface::scan::lay::lay;
-    use crate::surface::{generate, SurfaceSpec};
 
     #[test]
     fn the_inscribed_rectangle() {
@@ -168,15 +167,7 @@ mod tests {
     /// periodic and continuous, its lay along x, and its deviations those of the scan.
     #[test]
     fn a_turned_wall_comes_back_along_its_lay() {
-        let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
-        let spec = SurfaceSpec {
-            length_m: 512.0 * c(7.5) / 8.0,
-            nodes: 512,
-            rms_height_m: 1e-6,
-            corr_length_x_m: Some(c(2.5)),
-            corr_length_z_m: Some(c(7.5)),
-        };
-        let g = generate(&spec, 4);
+        let g = crate::surface::scan::tests::sec3_wall(512, 4);
         // Turn the periodic wall by φ = 30°: the scan's node (x, y) samples the wall at
         // u = x cos φ + y sin φ along its x and w = x sin φ − y cos φ along its z.
         let phi = 30f64.to_radians();

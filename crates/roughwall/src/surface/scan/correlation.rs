@@ -6,14 +6,15 @@
 //! `R(τ) = mean of h(p) h(p + τ l)` over sample points `p` of the scan with both heights
 //! valid, `l` the unit vector of the direction, `h(p + τ l)` interpolated bilinearly between
 //! the four nodes around it (all valid). Sample points are every `s`-th node along both
-//! axes, `s` chosen so that at most 2²⁰ are used: the memory is the scan's own, and the
+//! axes, `s` chosen so that at most 2¹⁸ are used: the memory is the scan's own, and the
 //! estimate's noise is far below that of the scan's finite size.
 
 use super::ScanField;
 use rayon::prelude::*;
 
-/// Sample points at most.
-const MAX_SAMPLES: usize = 1 << 20;
+/// Sample points at most: 2¹⁸ pairs per lag put the estimate's own noise well below the
+/// spread a finite scan has anyway (a 4096² scan is read every 8th point along each axis).
+const MAX_SAMPLES: usize = 1 << 18;
 
 /// The autocorrelation along and across a direction, normalised by its value at lag 0.
 #[derive(Clone, Debug, PartialEq)]

@@ -17,6 +17,8 @@
 //! and `rw_wall_params` take, with `β⁻` measured from the lay.
 
 use super::ScanField;
+// Branch-free asin, 1e-15 absolute: the per-triangle angles are the scan's hot loop.
+use crate::surface::stats::asin_fast;
 use crate::surface::stats::{Histogram, HistogramSpec};
 use rayon::prelude::*;
 
@@ -150,8 +152,8 @@ pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
     let zeta0 = -(-ma * s + mb * c).clamp(-1.0, 1.0).asin();
     let (xa0, yb0) = (-ma.clamp(-1.0, 1.0).asin(), -mb.clamp(-1.0, 1.0).asin());
     let m = row_sums::<13>(f, |a, b, acc| {
-        let xi = -(a * c + b * s).clamp(-1.0, 1.0).asin() - xi0;
-        let zeta = -(-a * s + b * c).clamp(-1.0, 1.0).asin() - zeta0;
+        let xi = -asin_fast((a * c + b * s).clamp(-1.0, 1.0)) - xi0;
+        let zeta = -asin_fast((-a * s + b * c).clamp(-1.0, 1.0)) - zeta0;
         acc[0] += xi;
         acc[1] += xi * xi;
         acc[2] += xi * xi * xi;
@@ -161,7 +163,7 @@ pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
         acc[6] += zeta * zeta * zeta;
         acc[7] += zeta * zeta * zeta * zeta;
         acc[8] += xi * zeta;
-        let (xa, yb) = (-a.asin() - xa0, -b.asin() - yb0);
+        let (xa, yb) = (-asin_fast(a) - xa0, -asin_fast(b) - yb0);
         acc[9] += xa;
         acc[10] += xa * xa;
         acc[11] += yb;
@@ -214,8 +216,8 @@ pub fn angle_histograms(f: &ScanField, angle: f64, spec: HistogramSpec) -> [Hist
             let rows = b * HISTOGRAM_ROWS..((b + 1) * HISTOGRAM_ROWS).min(cell_rows);
             for iy in rows {
                 row_normals(f, iy, |a, bb| {
-                    h[0].add(-(a * c + bb * s).clamp(-1.0, 1.0).asin());
-                    h[1].add(-(-a * s + bb * c).clamp(-1.0, 1.0).asin());
+                    h[0].add(-asin_fast((a * c + bb * s).clamp(-1.0, 1.0)));
+                    h[1].add(-asin_fast((-a * s + bb * c).clamp(-1.0, 1.0)));
                 });
             }
             h

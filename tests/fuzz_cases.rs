@@ -1264,6 +1264,8 @@ fn scan_empty_allowed(col: &str, row: &dyn Fn(&str) -> String) -> bool {
         "rho_xi_zeta" => flat("delta_xi_deg") || flat("delta_zeta_deg"),
         "skewness_xi" | "kurtosis_xi" => flat("delta_xi_deg"),
         "skewness_zeta" | "kurtosis_zeta" => flat("delta_zeta_deg"),
+        // The autocorrelation need not fall to 1/e within a quarter of a small scan.
+        "corr_length_along_um" | "corr_length_across_um" => true,
         _ => false,
     }
 }

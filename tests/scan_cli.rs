@@ -79,6 +79,36 @@ fn the_builtin_self_check_gives_back_the_generated_wall_for_any_thread_count() {
     assert!(close(row.num("delta_xi_deg"), 2.5, 0.04), "{row:?}");
     assert!(close(row.num("delta_zeta_deg"), 7.5, 0.04), "{row:?}");
     assert!(row.num("lay_deg").abs() < 1.0, "{row:?}");
+    // The generator's correlation lengths (run.toml [scan], c_L = √2 h/Δ), back from the
+    // autocorrelation's 1/e lags within a few per cent.
+    let manifest: toml::Table =
+        toml::from_str(&std::fs::read_to_string(one.join("run.toml")).unwrap()).unwrap();
+    let find = |key: &str| -> f64 {
+        fn walk(t: &toml::Table, key: &str) -> Option<f64> {
+            t.iter().find_map(|(k, v)| match v {
+                toml::Value::Float(x) if k == key => Some(*x),
+                toml::Value::Table(t) => walk(t, key),
+                _ => None,
+            })
+        }
+        walk(&manifest, key).unwrap_or_else(|| panic!("no {key} in run.toml"))
+    };
+    assert!(
+        close(
+            row.num("corr_length_along_um"),
+            find("corr_length_x_um"),
+            0.03
+        ),
+        "{row:?}"
+    );
+    assert!(
+        close(
+            row.num("corr_length_across_um"),
+            find("corr_length_z_um"),
+            0.03
+        ),
+        "{row:?}"
+    );
     // Gaussian slopes, the scan's own axes are the lay's.
     for k in ["skewness_xi", "skewness_zeta"] {
         assert!(row.num(k).abs() < 0.1, "{row:?}");

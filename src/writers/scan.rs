@@ -8,7 +8,7 @@ use roughwall::surface::scan::Characterisation;
 use roughwall::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 
 /// The columns of `scan_summary.csv`.
-pub const SUMMARY_HEADER: [&str; 25] = [
+pub const SUMMARY_HEADER: [&str; 27] = [
     "file",
     "format",
     "nx",
@@ -34,6 +34,8 @@ pub const SUMMARY_HEADER: [&str; 25] = [
     "kurtosis_zeta",
     "delta_scan_x_deg",
     "delta_scan_y_deg",
+    "corr_length_along_um",
+    "corr_length_across_um",
 ];
 
 /// Below this spread (rad) an angle is constant: its shape (skewness, kurtosis, correlation)
@@ -115,6 +117,13 @@ pub fn summary_table(src: &Source, c: &Characterisation) -> CsvTable {
         }
         None => row.extend(std::iter::repeat_n(String::new(), 10)),
     }
+    // The 1/e lengths of the autocorrelation along and across the lay (empty when it does
+    // not fall to 1/e within a quarter of the scan).
+    let um = |x: Option<f64>| x.map(|x| fmt_num(x * 1e6)).unwrap_or_default();
+    row.extend([
+        um(c.correlation.length_along_m),
+        um(c.correlation.length_across_m),
+    ]);
     let mut t = CsvTable::new(&SUMMARY_HEADER);
     t.push(row);
     t

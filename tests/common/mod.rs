@@ -411,7 +411,7 @@ pub mod headers {
     /// `effective_roughness.csv` of `surface`.
     pub const EFFECTIVE: &str = "diameter_um,d_over_cl_x,d_over_cl_z,delta_xi_eff_deg,delta_zeta_eff_deg,delta_xi_ratio,delta_zeta_ratio,contact_fraction,sqrt_h_over_d_deg,delta_xi_eff_over_sqrt_h_over_d,delta_zeta_eff_over_sqrt_h_over_d";
     /// `scan_summary.csv` of `scan`.
-    pub const SCAN_SUMMARY: &str = "file,format,nx,ny,dx_um,dy_um,valid_points,missing_fraction,level_degree,sq_um,ssk,sku,sdq,sdq_x,sdq_y,lay_deg,delta_xi_deg,delta_zeta_deg,rho_xi_zeta,skewness_xi,skewness_zeta,kurtosis_xi,kurtosis_zeta,delta_scan_x_deg,delta_scan_y_deg";
+    pub const SCAN_SUMMARY: &str = "file,format,nx,ny,dx_um,dy_um,valid_points,missing_fraction,level_degree,sq_um,ssk,sku,sdq,sdq_x,sdq_y,lay_deg,delta_xi_deg,delta_zeta_deg,rho_xi_zeta,skewness_xi,skewness_zeta,kurtosis_xi,kurtosis_zeta,delta_scan_x_deg,delta_scan_y_deg,corr_length_along_um,corr_length_across_um";
     /// `force_sweep.csv` of `force-sweep`.
     pub const FORCE_SWEEP: &str = "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s";
 }

@@ -8,11 +8,12 @@ use roughwall::surface::scan::{characterise, ScanField};
 use std::path::{Path, PathBuf};
 
 /// The files every run with a lay writes.
-const OUTPUTS: [&str; 5] = [
+const OUTPUTS: [&str; 6] = [
     "scan_summary.csv",
     "wall_card.toml",
     "height_map.svg",
     "slope_angle_pdfs.svg",
+    "autocorrelation.svg",
     "run.toml",
 ];
 

@@ -5,8 +5,8 @@
 //! - `scan_summary.csv` — one row: the grid, Sq, Ssk, Sku, Sdq, the lay and the deviations
 //!   along and across it (columns `crate::writers::scan::SUMMARY_HEADER`);
 //! - `wall_card.toml` — `[wall]` ready to paste into a case, `[lay]`, `[scan]` and notes;
-//! - `height_map.svg` (the levelled scan) and `slope_angle_pdfs.svg` (`ξ'`, `ζ'` against the
-//!   normal law);
+//! - `height_map.svg` (the levelled scan), `slope_angle_pdfs.svg` (`ξ'`, `ζ'` against the
+//!   normal law) and `autocorrelation.svg` (along and across the lay, with the `1/e` level);
 //! - `run.toml`.
 //!
 //! The scan is read (every problem a one-line input error) before `--out` is begun; `--out`
@@ -152,6 +152,10 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         );
         figures::scan::angle_pdfs(&dir.join("slope_angle_pdfs.svg"), &hists, lay)?;
         figures.push("slope_angle_pdfs.svg");
+    }
+    if c.correlation.lags_m.len() > 1 {
+        figures::scan::autocorrelation(&dir.join("autocorrelation.svg"), &c.correlation)?;
+        figures.push("autocorrelation.svg");
     }
     ctx.manifest.set(
         "scan",

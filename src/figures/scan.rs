@@ -8,10 +8,11 @@
 //!   Gaussian wall the models assume, Eqs. 12–13 of Radenkovic & Simonin 2021).
 
 use super::surface::{heat_map, viridis, HeatMap};
-use super::{plot_grid_svg, Kind, Plot, Series};
+use super::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 use crate::output::fmt_num;
 use rayon::prelude::*;
 use roughwall::error::Result;
+use roughwall::surface::scan::correlation::Correlation;
 use roughwall::surface::scan::lay::Lay;
 use roughwall::surface::scan::ScanField;
 use roughwall::surface::stats::Histogram;
@@ -173,6 +174,41 @@ pub fn angle_pdfs(path: &Path, hists: &[Histogram; 2], lay: &Lay) -> Result<()> 
         })
         .collect();
     plot_grid_svg(path, &plots, 2)
+}
+
+/// Writes `path`: the autocorrelation `R(τ)/R(0)` along and across the lay (`corr.angle`,
+/// drawn from the scan's x towards its y) against the lag in µm, with the `1/e` level whose
+/// crossings are the correlation lengths of `scan_summary.csv`.
+pub fn autocorrelation(path: &Path, corr: &Correlation) -> Result<()> {
+    let curve = |r: &[f64]| -> Vec<(f64, f64)> {
+        corr.lags_m
+            .iter()
+            .zip(r)
+            .filter(|(_, r)| r.is_finite())
+            .map(|(t, r)| (t * 1e6, *r))
+            .collect()
+    };
+    let last = corr.lags_m.last().copied().unwrap_or(0.0) * 1e6;
+    let plot = Plot {
+        title: format!(
+            "autocorrelation along the lay ({}° from the scan's x) and across it",
+            fmt_num((corr.angle.to_degrees() * 100.0).round() / 100.0)
+        ),
+        x_label: "lag (µm)".into(),
+        y_label: "R(τ)/R(0)".into(),
+        series: vec![
+            Series::new("along the lay", curve(&corr.along), Kind::Line),
+            Series::new("across the lay", curve(&corr.across), Kind::Line).with_color(1),
+            Series::new(
+                "1/e",
+                vec![(0.0, (-1f64).exp()), (last, (-1f64).exp())],
+                Kind::Dashed,
+            )
+            .with_color(2),
+        ],
+        ..Plot::default()
+    };
+    plot_svg(path, &plot)
 }
 
 #[cfg(test)]

@@ -75,9 +75,10 @@ impl Moments {
 ///
 /// Histories on one realisation share its quirks, so they are not independent; the
 /// cluster-robust (sandwich) variance of a mean over `G` clusters (Cameron & Miller 2015,
-/// *A practitioner's guide to cluster-robust inference*, J. Human Resources 50(2), Eq. 11
-/// with the small-`G` factor `G/(G − 1)` of their Sec. IV.C; the same batch-means idea as
-/// OpenMC's tally statistics, with a realisation as the batch) is
+/// *A practitioner's guide to cluster-robust inference*, J. Human Resources 50(2) 317–372:
+/// their CRVE of an OLS regression on a constant alone, with the "CR1" finite-cluster factor
+/// `G/(G − 1) · (N − 1)/(N − K)`, which is `G/(G − 1)` for `K = 1`; the same batch-means
+/// idea as OpenMC's tally statistics, with a realisation as the batch) is
 ///
 /// `V = G/(G − 1) · Σ_r (n_r/n)² (mean_r − mean)²`,
 ///

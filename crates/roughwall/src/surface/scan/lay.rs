@@ -102,13 +102,27 @@ fn row_sums<const K: usize>(
 /// The lay of a scan and the deviations along and across it; `None` without a triangle
 /// (no cell with four valid corners).
 pub fn lay(f: &ScanField) -> Option<Lay> {
-    lay_at(f, lay_angle(f)?)
+    // One pass gives both the angle and the mean normal the moments are taken about.
+    let (angle, mean) = angle_and_mean(f)?;
+    Some(moments_at(f, angle, mean))
 }
 
 /// The lay's angle `φ` (rad, in `(−π/2, π/2]`): the direction along which the triangle
 /// normals' component varies least; `None` with fewer than two triangles.
 pub fn lay_angle(f: &ScanField) -> Option<f64> {
-    // Pass 1: the covariance of (a, b).
+    angle_and_mean(f).map(|(angle, _)| angle)
+}
+
+/// The count and mean of the triangle normals' `(a, b)`.
+struct MeanNormal {
+    n: f64,
+    a: f64,
+    b: f64,
+}
+
+/// [`lay_angle`] and the mean normal, from one pass over the triangles.
+fn angle_and_mean(f: &ScanField) -> Option<(f64, MeanNormal)> {
+    // The covariance of (a, b).
     let [n, sa, sb, saa, sbb, sab] = row_sums::<6>(f, |a, b, s| {
         s[0] += 1.0;
         s[1] += a;
@@ -129,7 +143,7 @@ pub fn lay_angle(f: &ScanField) -> Option<f64> {
     if angle > std::f64::consts::FRAC_PI_2 {
         angle -= std::f64::consts::PI;
     }
-    Some(angle)
+    Some((angle, MeanNormal { n, a: ma, b: mb }))
 }
 
 /// The deviations along and across the direction `angle` (rad, from the scan's `x` towards
@@ -144,7 +158,21 @@ pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
     if n < 2.0 {
         return None;
     }
-    let (ma, mb) = (sa / n, sb / n);
+    Some(moments_at(
+        f,
+        angle,
+        MeanNormal {
+            n,
+            a: sa / n,
+            b: sb / n,
+        },
+    ))
+}
+
+/// The deviations along and across `angle`, about the mean normal `mean` (at least two
+/// triangles).
+fn moments_at(f: &ScanField, angle: f64, mean: MeanNormal) -> Lay {
+    let MeanNormal { n, a: ma, b: mb } = mean;
     let (c, s) = (angle.cos(), angle.sin());
     // Pass 2: moments of ξ' = −asin(n·l), ζ' = −asin(n·t), and of the scan axes, each
     // about the angle of the mean normal (so that a tilted scan loses no precision).
@@ -178,7 +206,7 @@ pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
     } else {
         0.0
     };
-    Some(Lay {
+    Lay {
         triangles: n as u64,
         angle,
         delta_xi: vxi.sqrt(),
@@ -187,7 +215,7 @@ pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
         skewness: [skx, skz],
         kurtosis: [kux, kuz],
         delta_scan_axes: [var(m[9], m[10]).sqrt(), var(m[11], m[12]).sqrt()],
-    })
+    }
 }
 
 /// Cell rows per partial histogram of [`angle_histograms`]: a fixed split, whatever the

@@ -33,25 +33,38 @@ pub struct AreaParameters {
 
 /// [`AreaParameters`] of a scan (level it first: [`super::levelling::level`]).
 pub fn area_parameters(f: &ScanField) -> AreaParameters {
-    // Row partial sums, added in row order: the same bits for any thread count.
-    let sums = |g: &(dyn Fn(f64) -> f64 + Sync)| -> f64 {
-        f.heights
+    // Row partial sums, added in row order: the same bits for any thread count. Two passes:
+    // the mean, then the three central moments together.
+    let sums = |g: &(dyn Fn(f64) -> [f64; 3] + Sync)| -> [f64; 3] {
+        let rows: Vec<[f64; 3]> = f
+            .heights
             .par_chunks(f.nx)
             .map(|row| {
                 row.iter()
                     .filter(|h| !h.is_nan())
-                    .map(|&h| g(h))
-                    .sum::<f64>()
+                    .fold([0.0; 3], |mut a, &h| {
+                        let v = g(h);
+                        for k in 0..3 {
+                            a[k] += v[k];
+                        }
+                        a
+                    })
             })
-            .collect::<Vec<f64>>()
-            .iter()
-            .sum()
+            .collect();
+        rows.iter().fold([0.0; 3], |mut a, r| {
+            for k in 0..3 {
+                a[k] += r[k];
+            }
+            a
+        })
     };
     let n = f.valid_count();
-    let mean = sums(&|h| h) / n as f64;
-    let m2 = sums(&|h| (h - mean) * (h - mean)) / n as f64;
-    let m3 = sums(&|h| (h - mean).powi(3)) / n as f64;
-    let m4 = sums(&|h| (h - mean).powi(4)) / n as f64;
+    let mean = sums(&|h| [h, 0.0, 0.0])[0] / n as f64;
+    let [m2, m3, m4] = sums(&|h| {
+        let d = h - mean;
+        [d * d, d.powi(3), d.powi(4)]
+    })
+    .map(|s| s / n as f64);
     let sq = m2.sqrt();
     let (ssk, sku) = if m2 > 0.0 {
         (m3 / m2.powf(1.5), m4 / (m2 * m2))

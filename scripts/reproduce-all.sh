@@ -11,7 +11,7 @@ T0=$(date +%s)
 BEFORE=$(mktemp)
 trap 'rm -f "$BEFORE"' EXIT
 (cd "$OUT" && find . -name '*.csv' ! -name 'speed_vs_error.csv' -print0 | sort -z | xargs -0 -r sha256sum) > "$BEFORE"
-for part in radenkovic2021 wall-models calibrate mirror hu2021 erosion finite-size spin speed-vs-error; do
+for part in radenkovic2021 wall-models calibrate measured-walls mirror hu2021 erosion finite-size spin speed-vs-error; do
   echo "=== scripts/$part.sh"
   bash "$ROOT/scripts/$part.sh"
 done

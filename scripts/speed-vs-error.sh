@@ -23,6 +23,7 @@ beta_deg = [0.0, 60.0]
 count = 10000
 [deterministic]
 spacing_per_corr_length = $1
+wall_deviations = "eq15"
 [output]
 bin_width_deg = 0.5
 TOML

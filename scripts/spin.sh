@@ -33,6 +33,8 @@ diameter_um = 500.0
 [collision]
 model = "sommerfeld-huber"
 preset = "glass-steel"
+[deterministic]
+wall_deviations = "eq15"
 TOML
     run deterministic --case "$c" --out "$S/$axis$w/$P_DETERMINISTIC"
     run stochastic --case "$c" --out "$S/$axis$w/$P_STOCHASTIC"

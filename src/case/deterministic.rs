@@ -5,7 +5,7 @@
 use super::{Case, Scene, WallSource};
 use crate::runner::TallyOverrides;
 use roughwall::check::{check_int_range, check_range, check_value, Warning};
-use roughwall::deterministic::scene::{SceneOptions, SurfacePlan};
+use roughwall::deterministic::scene::{SceneOptions, SurfacePlan, WallDeviations};
 use roughwall::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
 use roughwall::erosion::ErosionSetup;
 use roughwall::error::{Error, Result};
@@ -133,6 +133,17 @@ pub fn deterministic_options(case: &Case, height_file: bool) -> Result<Determini
         None
     };
     let triangulation = triangulation(case)?;
+    let names = WallDeviations::NAMES;
+    let k = check_value(
+        "deterministic.wall_deviations",
+        d.wall_deviations
+            .as_deref()
+            .unwrap_or(WallDeviations::default().name()),
+        &names,
+        "\"normal-angles\" ([wall]'s deviations are those of the generated triangles' normal angles, as the models and `scan` take them; the default) or \"eq15\" (c_L = √2 h/Δ as the papers build their walls: the triangles have 0.5–2 % less)",
+    )?;
+    let deviations = WallDeviations::from_name(names[k])
+        .ok_or_else(|| Error::Internal(format!("wall_deviations `{}`", names[k])))?;
     let surfaces = check_int_range(
         "deterministic.surfaces",
         d.surfaces.unwrap_or(1),
@@ -148,6 +159,7 @@ pub fn deterministic_options(case: &Case, height_file: bool) -> Result<Determini
             spacing_per_corr_length: spc,
             side_per_corr_length: side,
             rms_height_m: h_um * 1e-6,
+            deviations,
         },
         sphere_diameter_m,
     })

@@ -200,6 +200,11 @@ pub struct DeterministicSection {
     /// mirror symmetric, the default) or `"uniform"` (one diagonal, the earlier default).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub triangulation: Option<String>,
+    /// What `[wall]`'s deviations mean for the automatic surface: `"normal-angles"` (the
+    /// triangles' normal-angle deviations, the default) or `"eq15"` (`c_L = √2 h/Δ`, as the
+    /// papers build their walls).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wall_deviations: Option<String>,
     /// Independent surface realisations the histories are spread over (history `i` on
     /// realisation `i mod surfaces`): the ensemble a statistical wall model stands for.
     #[serde(skip_serializing_if = "Option::is_none")]

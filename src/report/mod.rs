@@ -9,6 +9,7 @@ mod common;
 pub mod erosion;
 pub mod finite_size;
 pub mod hu2021;
+pub mod measured_walls;
 pub mod mirror;
 pub mod paths;
 pub mod radenkovic2021;
@@ -38,6 +39,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     hu2021::hu(results, &mut md)?;
     wall_models::wall_models(results, &mut md)?;
     calibration::calibration(results, &mut md)?;
+    measured_walls::measured_walls(results, &mut md)?;
     mirror::mirror(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
     finite_size::finite_size(results, &mut md)?;

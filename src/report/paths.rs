@@ -29,6 +29,8 @@ pub const SPIN: &str = "spin";
 pub const SPEED_VS_ERROR: &str = "speed-vs-error";
 /// Mirror symmetry of the deterministic wall (`scripts/mirror.sh`).
 pub const MIRROR: &str = "mirror";
+/// Your own wall: nominal deviations and real scans (`scripts/measured-walls.sh`).
+pub const MEASURED_WALLS: &str = "measured-walls";
 
 /// A scene's `rebound deterministic` run.
 pub const DETERMINISTIC: &str = "deterministic";
@@ -162,6 +164,31 @@ pub const MIRROR_SEEDS: [&str; 8] = ["1", "2", "3", "4", "5", "6", "7", "8"];
 /// Mirror symmetry: prefix of one surface's run (`seed1`, …).
 pub const MIRROR_SEED: &str = "seed";
 
+/// Measured walls, part 6: walls outside the calibration set, `name:Δξ:Δζ` (degrees), each
+/// run with the deviations typed into `[wall]`; under [`MEASURED_WALLS`]`/`[`NOMINAL`] each
+/// has a directory named `name`.
+pub const NOMINAL_WALLS: [&str; 4] = ["5-5:5.0:5.0", "4-1:4.0:1.0", "3-6:3.0:6.0", "6.5-2:6.5:2.0"];
+/// Measured walls: the typed-deviation runs.
+pub const NOMINAL: &str = "nominal";
+/// Measured walls: the deterministic ensemble built with Eq. (15) (`wall_deviations =
+/// "eq15"`) and the models compared with it.
+pub const NOMINAL_EQ15: &str = "eq15";
+/// Measured walls, part 7: the real scans of the study, each a shipped case
+/// `configs/scans/<name>.toml`; under [`MEASURED_WALLS`]`/`[`STUDY`] a directory each.
+pub const STUDY_SCANS: [&str; 2] = ["x3p-2", "matrix-3"];
+/// Measured walls: the study's runs.
+pub const STUDY: &str = "study";
+/// Measured walls: `rebound scan` of a study scan (its wall card).
+pub const STUDY_CARD: &str = "scan";
+/// Measured walls: `deterministic` on the scan itself (mirror-tiled).
+pub const STUDY_ON_SCAN: &str = "on-scan";
+/// Measured walls: `deterministic` on Gaussian (Garcia–Stoll) walls of given deviations.
+pub const STUDY_GAUSSIAN: &str = "gaussian";
+/// Measured walls: the runs with the wall card's deviations.
+pub const STUDY_WITH_CARD: &str = "card";
+/// Measured walls: the runs with the deviations of the mirror-tiled wall the particles met.
+pub const STUDY_WITH_TILED: &str = "tiled";
+
 /// Finite size: the sphere diameters (µm), one run directory each.
 pub const FINITE_SIZE_DIAMETERS_UM: [&str; 4] = ["50", "100", "250", "500"];
 /// Finite size: prefix of the runs of one diameter (`d50`, …).
@@ -183,7 +210,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
 #[cfg(test)]
-pub const SHELL: [(&str, &[&str]); 50] = [
+pub const SHELL: [(&str, &[&str]); 61] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -234,6 +261,17 @@ pub const SHELL: [(&str, &[&str]); 50] = [
     ("MIRROR_TRIANGULATIONS", &MIRROR_TRIANGULATIONS),
     ("MIRROR_SEEDS", &MIRROR_SEEDS),
     ("MIRROR_SEED", &[MIRROR_SEED]),
+    ("MEASURED_WALLS", &[MEASURED_WALLS]),
+    ("NOMINAL_WALLS", &NOMINAL_WALLS),
+    ("NOMINAL", &[NOMINAL]),
+    ("NOMINAL_EQ15", &[NOMINAL_EQ15]),
+    ("STUDY_SCANS", &STUDY_SCANS),
+    ("STUDY", &[STUDY]),
+    ("STUDY_CARD", &[STUDY_CARD]),
+    ("STUDY_ON_SCAN", &[STUDY_ON_SCAN]),
+    ("STUDY_GAUSSIAN", &[STUDY_GAUSSIAN]),
+    ("STUDY_WITH_CARD", &[STUDY_WITH_CARD]),
+    ("STUDY_WITH_TILED", &[STUDY_WITH_TILED]),
 ];
 
 /// The text of `scripts/paths.sh`: one `P_<NAME>=<value>` line per entry of [`SHELL`].

@@ -64,6 +64,22 @@ pub fn surface_table(
                 f(opt.spacing_per_corr_length),
             );
             t.insert("side_per_corr_length".into(), f(opt.side_per_corr_length));
+            t.insert("wall_deviations".into(), opt.deviations.name().into());
+            // What the grid's triangles have on average (docs/physics.md §4): the
+            // deviations asked for with "normal-angles", 0.5–2 % less with "eq15".
+            let e = roughwall::surface::normal_angles::expected_deviations(
+                h,
+                [cx, cz],
+                spec.spacing_m(),
+            );
+            t.insert(
+                "expected_delta_xi_deg".into(),
+                f(round(e.delta_xi.to_degrees(), 4)),
+            );
+            t.insert(
+                "expected_delta_zeta_deg".into(),
+                f(round(e.delta_zeta.to_degrees(), 4)),
+            );
             t.insert(
                 "rule".into(),
                 "spacing = c_L,min / spacing_per_corr_length; side ≥ side_per_corr_length · c_L,max; nodes = 8 × 5-smooth".into(),

@@ -1,17 +1,24 @@
 //! The surface a deterministic scene needs when the case gives only the
 //! normal-angle deviations `Δξ`, `Δζ` of the wall.
 //!
-//! Radenkovic & Simonin 2021, Eq. (15): `Δ = √2 h / c_L`, so only `h / c_L`
+//! Radenkovic & Simonin 2021, Eq. (15): `Δ = √2 h / c_L` to first order, so only `h / c_L`
 //! matters; the rms height is arbitrary (elastic bouncing has no length scale,
 //! and Sommerfeld–Huber only the particle diameter in the spin, which drops out of
 //! the contact-point velocity `u + (D/2) ω`). The grid spacing and the side are
 //! chosen from the correlation lengths: spacing `≤ c_L,min / spacing_per_corr_length`,
 //! side `≥ side_per_corr_length · c_L,max`, with an FFT-friendly node count.
+//!
+//! What the deviations mean ([`WallDeviations`]): by default the standard deviations of the
+//! normal's angles over the generated triangles, as the models and `scan` take them, so the
+//! correlation lengths are those whose grid gives the triangles the deviations wanted
+//! ([`crate::surface::normal_angles`]); `Eq15` takes `c_L = √2 h/Δ` as the paper does, and
+//! its triangles have 0.5–2 % less.
 
 use super::{Realisations, Tracker};
 use crate::error::{Error, Result};
 use crate::surface::heights_io::read_heights;
 use crate::surface::{generate, HeightField, SurfaceSpec, Triangulation};
+use crate::wall::Deviations;
 use std::path::Path;
 
 /// Knobs of the choice (case section `[deterministic]`).
@@ -23,6 +30,44 @@ pub struct SceneOptions {
     pub side_per_corr_length: f64,
     /// RMS height (m), arbitrary.
     pub rms_height_m: f64,
+    /// What the deviations the surface is built from mean.
+    pub deviations: WallDeviations,
+}
+
+/// How `choose_surface` reads the deviations it is given (`[deterministic] wall_deviations`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum WallDeviations {
+    /// The standard deviations of the normal's angles `ξ'`, `ζ'` over the triangles the
+    /// particles meet (Radenkovic & Simonin 2021, Eqs. 4, 7 at `β* = 0`): what the stochastic
+    /// models draw from, what `surface`, `deterministic` and `scan` measure. The correlation
+    /// lengths are chosen so that the generated grid has them on average.
+    #[default]
+    NormalAngles,
+    /// Eq. (15) taken as exact, `c_L = √2 h/Δ`, as the papers build their walls: the
+    /// triangles have 0.5–2 % less (finite differences over `δ`, angles below slopes).
+    Eq15,
+}
+
+impl WallDeviations {
+    /// Names in case files, in the order of [`WallDeviations::from_name`].
+    pub const NAMES: [&'static str; 2] = ["normal-angles", "eq15"];
+
+    /// The case-file name.
+    pub fn name(self) -> &'static str {
+        match self {
+            WallDeviations::NormalAngles => "normal-angles",
+            WallDeviations::Eq15 => "eq15",
+        }
+    }
+
+    /// The variant of a case-file name.
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "normal-angles" => Some(WallDeviations::NormalAngles),
+            "eq15" => Some(WallDeviations::Eq15),
+            _ => None,
+        }
+    }
 }
 
 impl Default for SceneOptions {
@@ -31,6 +76,7 @@ impl Default for SceneOptions {
             spacing_per_corr_length: 8.0,
             side_per_corr_length: 100.0,
             rms_height_m: 1e-6,
+            deviations: WallDeviations::NormalAngles,
         }
     }
 }
@@ -97,8 +143,26 @@ pub fn choose_surface(
         ));
     }
     let h = opt.rms_height_m;
-    let cx = crate::wall::corr_length_from_deviation(h, delta_xi);
-    let cz = crate::wall::corr_length_from_deviation(h, delta_zeta);
+    // The continuous rms slopes √2 h/c_L (Eq. 14) the wall is generated with.
+    let slopes = match opt.deviations {
+        WallDeviations::Eq15 => [delta_xi, delta_zeta],
+        WallDeviations::NormalAngles => crate::surface::normal_angles::slopes_for_deviations(
+            Deviations {
+                delta_xi,
+                delta_zeta,
+            },
+            opt.spacing_per_corr_length,
+        )
+        .ok_or_else(|| {
+            format!(
+                "no generated wall has normal-angle deviations ({}°, {}°): allowed 0 to 20 degrees each",
+                delta_xi.to_degrees(),
+                delta_zeta.to_degrees()
+            )
+        })?,
+    };
+    let cx = crate::wall::corr_length_from_deviation(h, slopes[0]);
+    let cz = crate::wall::corr_length_from_deviation(h, slopes[1]);
     let cs: Vec<f64> = [cx, cz].into_iter().flatten().collect();
     if cs.is_empty() {
         // Smooth wall: any grid will do.
@@ -453,7 +517,11 @@ mod tests {
     #[test]
     fn aniso_wall_gets_fine_spacing_and_large_side() {
         let d = |x: f64| x.to_radians();
-        let c = choose_surface(d(2.5), d(7.5), &SceneOptions::default()).unwrap();
+        let eq15 = SceneOptions {
+            deviations: WallDeviations::Eq15,
+            ..SceneOptions::default()
+        };
+        let c = choose_surface(d(2.5), d(7.5), &eq15).unwrap();
         let cx = c.corr_length_x_m.unwrap();
         let cz = c.corr_length_z_m.unwrap();
         // Eq. (15): c_L = √2 h / Δ, so c_Lx / c_Lz = Δζ / Δξ = 3.
@@ -463,6 +531,49 @@ mod tests {
         assert_eq!(c.nodes % 8, 0);
         assert_eq!(next_smooth(c.nodes / 8), c.nodes / 8);
         assert_eq!(c.nodes, 2400);
+    }
+
+    /// By default the correlation lengths are those whose grid gives the triangles the
+    /// deviations asked for: shorter than Eq. (15)'s, most along the rougher axis.
+    #[test]
+    fn the_default_wall_has_the_deviations_asked_for() {
+        let d = |x: f64| x.to_radians();
+        let c = choose_surface(d(2.5), d(7.5), &SceneOptions::default()).unwrap();
+        let (cx, cz) = (c.corr_length_x_m.unwrap(), c.corr_length_z_m.unwrap());
+        let e = crate::surface::normal_angles::expected_deviations(
+            c.rms_height_m,
+            [Some(cx), Some(cz)],
+            c.spacing_m(),
+        );
+        assert!((e.delta_xi.to_degrees() - 2.5).abs() < 1e-10);
+        assert!((e.delta_zeta.to_degrees() - 7.5).abs() < 1e-10);
+        let eq15 = |delta: f64| crate::wall::corr_length_from_deviation(c.rms_height_m, d(delta));
+        assert!(cx < eq15(2.5).unwrap() * 0.995 && cz < eq15(7.5).unwrap() * 0.985);
+        assert!(c.spacing_m() <= cz / 8.0 * (1.0 + 1e-12));
+        assert!(c.length_m >= 100.0 * cx);
+        // A generated 100-c_L surface measures them within its scatter (~0.4 %).
+        let plan = SurfacePlan::auto(d(5.0), d(5.0), &SceneOptions::default()).unwrap();
+        let field = generate(plan.spec(), 3);
+        let m = crate::surface::stats::measured_deviations(&field);
+        assert!((m.delta_xi.to_degrees() / 5.0 - 1.0).abs() < 0.015, "{m:?}");
+        assert!(
+            (m.delta_zeta.to_degrees() / 5.0 - 1.0).abs() < 0.015,
+            "{m:?}"
+        );
+        // Eq. (15) on the same grid: 1.5 % less, as predicted.
+        let plan15 = SurfacePlan::auto(
+            d(5.0),
+            d(5.0),
+            &SceneOptions {
+                deviations: WallDeviations::Eq15,
+                ..SceneOptions::default()
+            },
+        )
+        .unwrap();
+        let m15 = crate::surface::stats::measured_deviations(&generate(plan15.spec(), 3));
+        assert!(m15.delta_xi < m.delta_xi && m15.delta_zeta < m.delta_zeta);
+        let ratio = m15.delta_xi / m.delta_xi;
+        assert!((ratio - 4.9258 / 5.0).abs() < 0.004, "{ratio}");
     }
 
     #[test]

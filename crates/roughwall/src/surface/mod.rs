@@ -3,6 +3,7 @@ pub mod dilation;
 pub mod generate;
 pub mod height_field;
 pub mod heights_io;
+pub mod normal_angles;
 pub mod scan;
 pub mod spec;
 pub mod stats;

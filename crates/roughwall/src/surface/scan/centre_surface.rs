@@ -166,9 +166,13 @@ pub fn centre_surface(f: &ScanField, diameter_m: f64) -> CentreSurface {
     }
     CentreSurface {
         diameter_m,
+        // Built field by field: `..f.clone()` would copy the scan's heights only to drop them.
         field: ScanField {
+            nx,
+            ny,
+            dx: f.dx,
+            dy: f.dy,
             heights,
-            ..f.clone()
         },
         exact_fraction: exact as f64 / (nx * ny) as f64,
         reach: [rx, ry],
@@ -186,6 +190,8 @@ pub struct SeenDeviations {
     pub lay: Option<super::lay::Lay>,
     /// Fraction of the scan's points where the centre surface is exact.
     pub exact_fraction: f64,
+    /// The reach `⌈√(2RΔh)/δ⌉ + 1` along `x` and `y` (points): the band the edges lose.
+    pub reach: [usize; 2],
 }
 
 /// For each diameter (m), the deviations along and across `lay_angle` (rad; the scan's own
@@ -199,6 +205,7 @@ pub fn seen_deviations(f: &ScanField, lay_angle: f64, diameters_m: &[f64]) -> Ve
                 diameter_m: d,
                 lay: super::lay::lay_at(&c.field, lay_angle),
                 exact_fraction: c.exact_fraction,
+                reach: c.reach,
             }
         })
         .collect()

@@ -17,13 +17,17 @@
 //!   the deterministic model bounces on.
 //! * [`centre_surface`]: the surface a sphere's centre rides on, for the deviations a
 //!   particle of each diameter sees.
+//! * [`resolution`]: whether the scan is large and fine enough for those deviations.
+//! * [`correlation_map`]: the areal autocorrelation over a window of lags.
 
 pub mod centre_surface;
 pub mod correlation;
+pub mod correlation_map;
 pub mod lay;
 pub mod levelling;
 pub mod parameters;
 pub mod periodic;
+pub mod resolution;
 
 use crate::error::{Error, Result};
 

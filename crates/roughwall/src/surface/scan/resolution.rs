@@ -1,0 +1,303 @@
+//! Whether a scan is large enough and fine enough for the deviations a particle of a given
+//! diameter sees on it (the wall card's per-diameter notes, docs/models.md "Measured walls").
+//!
+//! **The length a particle's view decorrelates over.** A point particle (`D = 0`) sees the
+//! wall's own slopes, which decorrelate over the correlation lengths `c_L` (Radenkovic &
+//! Simonin 2021, Eqs. 1–2: `R(τ) = h² exp(−τ²/c_L²)`). A sphere of radius `R = D/2` rides on
+//! its centre surface ([`super::centre_surface`]), made of paraboloid caps `−r²/2R` around
+//! the asperity tops it rests on: caps on tops whose heights differ by about `Sq` meet about
+//! the **footprint** `a = √(2R·Sq) = √(D·Sq)` apart, so the caps are about `a` wide (their
+//! slopes `r/R` span `±2√(Sq/D)`, the `Δ_eff ≈ √(h/D)` of large spheres, docs/models.md
+//! "Sphere contact and effective roughness"). `Sq`, not the peak-to-valley `Δh`: `Δh` is set
+//! by the highest and lowest points and grows with the scan, which is why the reach `√(2RΔh)`
+//! bounds where a sphere may rest but is not its typical cap. The centre surface decorrelates
+//! over `ℓ = √(c_L² + D·Sq)` along and across the lay: on the Sec. 3 wall (c_L = 33 and
+//! 10.5 µm measured, Sq = 1 µm) its `1/e` lengths across the lay are 11.9, 17.8, 25.6, 43.9
+//! and 83.1 µm at D = 50, 200, 500, 2000 and 8000 µm, against `ℓ` = 12.6, 17.6, 24.6, 45.8
+//! and 89.7 µm (along: within 18 %).
+//!
+//! **Too small.** Over an area `A`, the mean of a Gaussian slope's square has variance
+//! `(2/A) ∫ C_s(τ)² dτ` (the fourth moments of Isserlis, Biometrika 12 (1918) 134–139); for
+//! the slope along `x` of `R` above, `C_s ∝ (1 − 2τ_x²/c_Lx²) exp(−τ_x²/c_Lx² − τ_z²/c_Lz²)`
+//! and `∫ C_s² dτ / C_s(0)² = (3π/8) c_Lx c_Lz`, so `se(Δ)/Δ = √(3π/16)/√N ≈ 0.77/√N` with
+//! `N = A/(ℓ_along ℓ_across)` the correlation areas of the exact part of the centre surface.
+//! The scan is too small for a diameter when `N < 250` (`Δ` uncertain by more than 5 %) or
+//! when less than half of it is exact (the edges lose a band of `√(2RΔh)` each; a few spikes
+//! or pits make `Δh` large). A direction whose autocorrelation does not fall to `1/e` within
+//! a quarter of the scan counts a quarter of the scan as its `c_L`: `N` is then an upper
+//! bound. A wall whose heights correlate farther than its slopes (a waviness under the
+//! roughness) gets a lower `N` than its slopes would: the note errs on the safe side.
+//!
+//! **Too coarse.** A triangle's slope is a finite difference over the pixel `δ`; on a
+//! Gaussian wall its variance is `2h²(1 − e^(−δ²/c²))/δ²` against `2h²/c²` (docs/physics.md
+//! §4), so `Δ` comes out low by the factor `√((1 − e^(−x²))/x²)`, `x = δ/c_L`: 0.985 at 4
+//! pixels per `c_L`, 0.94 at 2. The scan is too coarse when the pixel, projected on the lay
+//! and across it (`max(|cos φ| dx, |sin φ| dy)` and the same across: the shortest wave the
+//! grid resolves along a direction), is more than a quarter of `c_L` there, **for every
+//! diameter**: a sphere rests on the summits the pixel must resolve. Measured on the Sec. 3
+//! wall read every 4th node (2 pixels per c_Lz), the centre surface's Δζ falls by 10.5, 8.8,
+//! 6.2, 3.4 and 1.3 % at D = 50, 200, 500, 2000 and 8000 µm, against 5.4 % for the point
+//! (0.938 predicted): a footprint of a few pixels does not help; only a sphere whose footprint
+//! spans several `c_L` relaxes the requirement, and the note stays on the safe side there.
+
+use super::centre_surface::{seen_deviations, SeenDeviations};
+#[cfg(test)]
+use super::lay::Lay;
+use super::Characterisation;
+
+/// Fewest correlation areas the exact part must hold: `Δ` to 5 % (`0.77/√250`).
+pub const MIN_CORRELATION_AREAS: f64 = 250.0;
+
+/// Smallest fraction of the scan the centre surface must be exact on.
+pub const MIN_EXACT_FRACTION: f64 = 0.5;
+
+/// Fewest pixels per sampled length `ℓ` along and across the lay: `Δ` within 1.5 % of the
+/// wall's on a Gaussian wall.
+pub const MIN_PIXELS_PER_LENGTH: f64 = 4.0;
+
+/// `se(Δ)/Δ · √N` for a Gaussian wall: `√(3π/16)`.
+pub fn relative_error_per_sqrt_area() -> f64 {
+    (3.0 * std::f64::consts::PI / 16.0).sqrt()
+}
+
+/// `Δ` of a Gaussian wall's finite differences over the pixel `δ` against the wall's own,
+/// `√((1 − e^(−x²))/x²)` with `x = δ/c` (docs/physics.md §4); 1 at `x = 0`.
+pub fn finite_difference_ratio(pixel_over_length: f64) -> f64 {
+    let x2 = pixel_over_length * pixel_over_length;
+    if x2 < 1e-12 {
+        return 1.0;
+    }
+    (-(-x2).exp_m1() / x2).sqrt()
+}
+
+/// The footprint `√(2R·Sq) = √(D·Sq)` (m) of a sphere of diameter `diameter_m` on a wall of
+/// rms height `sq_m`: how wide the caps of its centre surface are.
+pub fn footprint(diameter_m: f64, sq_m: f64) -> f64 {
+    (diameter_m.max(0.0) * sq_m.max(0.0)).sqrt()
+}
+
+/// How well a scan serves a particle of one diameter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Resolution {
+    /// Fraction of the scan's points where the centre surface is exact.
+    pub exact_fraction: f64,
+    /// The footprint `√(D·Sq)` (m); 0 for a point.
+    pub footprint_m: f64,
+    /// The wall's correlation lengths `c_L` along and across the lay (m), or a quarter of
+    /// the scan where the autocorrelation does not fall to `1/e` within it.
+    pub correlation_m: [f64; 2],
+    /// Whether `c_L` along and across was only bounded by a quarter of the scan.
+    pub bounded: [bool; 2],
+    /// The lengths `ℓ = √(c_L² + D·Sq)` the centre surface decorrelates over, along and
+    /// across the lay (m).
+    pub sampling_m: [f64; 2],
+    /// The pixel projected on the lay and across it (m).
+    pub pixel_m: [f64; 2],
+    /// Correlation areas `ℓ_along ℓ_across` in the exact part.
+    pub correlation_areas: f64,
+}
+
+impl Resolution {
+    /// The relative standard error of `Δ` expected from [`Resolution::correlation_areas`]
+    /// (infinite without any).
+    pub fn relative_error(&self) -> f64 {
+        relative_error_per_sqrt_area() / self.correlation_areas.sqrt()
+    }
+
+    /// Pixels per correlation length `c_L` along and across the lay.
+    pub fn pixels_per_length(&self) -> [f64; 2] {
+        [0, 1].map(|k| self.correlation_m[k] / self.pixel_m[k])
+    }
+
+    /// Too few correlation areas, or too little of the scan exact.
+    pub fn too_small(&self) -> bool {
+        self.exact_fraction < MIN_EXACT_FRACTION || self.correlation_areas < MIN_CORRELATION_AREAS
+    }
+
+    /// Fewer than [`MIN_PIXELS_PER_LENGTH`] pixels per `c_L` along or across the lay.
+    pub fn too_coarse(&self) -> bool {
+        self.pixels_per_length()
+            .iter()
+            .any(|&p| p < MIN_PIXELS_PER_LENGTH)
+    }
+
+    /// The direction (0 along, 1 across the lay) with the fewest pixels per `c_L`, and
+    /// [`finite_difference_ratio`] there.
+    pub fn coarsest(&self) -> (usize, f64) {
+        let p = self.pixels_per_length();
+        let k = if p[1] < p[0] { 1 } else { 0 };
+        (k, finite_difference_ratio(1.0 / p[k]))
+    }
+}
+
+/// How well the characterised scan `c` serves a particle of diameter `diameter_m` (0: a
+/// point), whose centre surface is exact on `exact_fraction` of the scan, with the lay at
+/// `lay_angle` (rad).
+pub fn resolution(
+    c: &Characterisation,
+    lay_angle: f64,
+    diameter_m: f64,
+    exact_fraction: f64,
+) -> Resolution {
+    let f = &c.levelled;
+    let (lx, ly) = (f.nx as f64 * f.dx, f.ny as f64 * f.dy);
+    // `correlation` looks for the 1/e crossing out to a quarter of the shorter side.
+    let bound = 0.25 * lx.min(ly);
+    let lengths = [c.correlation.length_along_m, c.correlation.length_across_m];
+    let correlation_m = lengths.map(|l| l.unwrap_or(bound));
+    let footprint_m = footprint(diameter_m, c.parameters.sq_m);
+    let sampling_m = correlation_m.map(|l| l.hypot(footprint_m));
+    let (cs, sn) = (lay_angle.cos().abs(), lay_angle.sin().abs());
+    let pixel_m = [(cs * f.dx).max(sn * f.dy), (sn * f.dx).max(cs * f.dy)];
+    Resolution {
+        exact_fraction,
+        footprint_m,
+        correlation_m,
+        bounded: lengths.map(|l| l.is_none()),
+        sampling_m,
+        pixel_m,
+        correlation_areas: exact_fraction * lx * ly / (sampling_m[0] * sampling_m[1]),
+    }
+}
+
+/// What a particle of one diameter sees on a scan, and how well the scan serves it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeenBy {
+    /// The deviations of its centre surface.
+    pub seen: SeenDeviations,
+    /// How well the scan serves it.
+    pub resolution: Resolution,
+}
+
+/// For the point particle and then each of `diameters_m` (m, `> 0`): the deviations along and
+/// across the scan's lay of the particle's centre surface ([`seen_deviations`]; the point's
+/// are the scan's own, with no dilation), and the scan's [`resolution`] for it. `None`
+/// without a lay (no cell with four valid corners).
+pub fn seen_by(c: &Characterisation, diameters_m: &[f64]) -> Option<Vec<SeenBy>> {
+    let lay = c.lay?;
+    let f = &c.levelled;
+    let point = SeenDeviations {
+        diameter_m: 0.0,
+        lay: Some(lay),
+        exact_fraction: c.parameters.valid_points as f64 / (f.nx * f.ny) as f64,
+        reach: [0, 0],
+    };
+    let spheres = seen_deviations(f, lay.angle, diameters_m);
+    Some(
+        std::iter::once(point)
+            .chain(spheres)
+            .map(|seen| SeenBy {
+                seen,
+                resolution: resolution(c, lay.angle, seen.diameter_m, seen.exact_fraction),
+            })
+            .collect(),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surface::scan::{characterise, tests::sec3_wall, ScanField};
+
+    /// The Sec. 3 wall (h = 1 µm, c_Lx = 32.4 µm, c_Lz = 10.8 µm, 8 nodes per c_Lz) on
+    /// `nodes²` nodes, read every `every`-th node, as a characterised scan; `spike` (m) is
+    /// added to its middle node.
+    fn wall(nodes: usize, every: usize, spike: f64) -> Characterisation {
+        let g = sec3_wall(nodes, 11);
+        let (nx, ny) = (g.nx.div_ceil(every), g.nz.div_ceil(every));
+        let mut h: Vec<f64> = (0..ny)
+            .flat_map(|iy| (0..nx).map(move |ix| (ix, iy)))
+            .map(|(ix, iy)| g.heights[iy * every * g.nx + ix * every])
+            .collect();
+        h[ny / 2 * nx + nx / 2] += spike;
+        let f = ScanField::new(nx, ny, g.dx * every as f64, g.dz * every as f64, h).unwrap();
+        characterise(&f, 1).unwrap()
+    }
+
+    #[test]
+    fn the_finite_difference_ratio_and_the_standard_error_are_the_gaussian_walls() {
+        // docs/physics.md §4: 0.985 at δ = c_L/4.
+        assert!((finite_difference_ratio(0.25) - 0.984576).abs() < 1e-6);
+        assert!((finite_difference_ratio(0.5) - 0.940636).abs() < 1e-6);
+        assert_eq!(finite_difference_ratio(0.0), 1.0);
+        assert!((relative_error_per_sqrt_area() - 0.767495).abs() < 1e-6);
+        assert!((footprint(100e-6, 1e-6) - 1e-5).abs() < 1e-20);
+    }
+
+    /// Deviations fall with the diameter; the point particle on a 21 × 64 c_L wall at 8
+    /// nodes per c_Lz is served, and a sphere wider than the scan is too small for it, with
+    /// nothing exact.
+    #[test]
+    fn deviations_fall_with_the_diameter_and_a_too_wide_sphere_is_too_small() {
+        let c = wall(512, 1, 0.0);
+        let seen = seen_by(&c, &[200e-6, 1e-3, 4e-3, 1.0]).unwrap();
+        assert_eq!(seen.len(), 5);
+        for pick in [|l: &Lay| l.delta_xi, |l: &Lay| l.delta_zeta] {
+            let d: Vec<f64> = seen[..4]
+                .iter()
+                .map(|s| pick(&s.seen.lay.unwrap()))
+                .collect();
+            assert!(d.windows(2).all(|w| w[1] < w[0]), "{d:?}");
+        }
+        let point = seen[0].resolution;
+        assert!(!point.too_small() && !point.too_coarse(), "{point:?}");
+        assert_eq!((point.exact_fraction, point.footprint_m), (1.0, 0.0));
+        assert_eq!(point.sampling_m, point.correlation_m);
+        // 8 nodes per c_Lz, about 24 per c_Lx (the measured lengths, the lay at ~0°).
+        let [along, across] = point.pixels_per_length();
+        assert!(
+            (across - 8.0).abs() < 0.5 && (along - 24.0).abs() < 2.0,
+            "{point:?}"
+        );
+        let wide = seen[4];
+        assert_eq!((wide.seen.lay, wide.seen.exact_fraction), (None, 0.0));
+        assert!(wide.resolution.too_small() && wide.resolution.correlation_areas == 0.0);
+        assert!(wide.resolution.relative_error().is_infinite());
+    }
+
+    /// Each trigger of "too small": too few correlation areas with the scan all exact (a
+    /// point on a wall of 3 × 10 correlation lengths), and too little of the scan exact
+    /// with enough areas (a 250 µm spike on the 512² wall makes the reach of a 50 µm sphere
+    /// 112 µm, a sixth of the side).
+    #[test]
+    fn too_small_is_too_few_correlation_areas_or_too_little_exact() {
+        let small = wall(80, 1, 0.0);
+        let s = seen_by(&small, &[]).unwrap()[0].resolution;
+        assert_eq!(s.exact_fraction, 1.0);
+        assert!(s.correlation_areas < MIN_CORRELATION_AREAS, "{s:?}");
+        assert!(s.too_small() && !s.too_coarse());
+        // se(Δ)/Δ of the estimate ≈ 0.77/√N: above 5 %.
+        assert!(s.relative_error() > 0.05);
+        let spiked = wall(512, 1, 250e-6);
+        let s = seen_by(&spiked, &[50e-6]).unwrap()[1];
+        let r = s.resolution;
+        assert!(r.exact_fraction < MIN_EXACT_FRACTION, "{r:?}");
+        assert!(r.correlation_areas > MIN_CORRELATION_AREAS, "{r:?}");
+        assert!(r.too_small());
+        assert!(s.seen.reach[0] > 80, "{s:?}");
+    }
+
+    /// "Too coarse": the 512² wall read every 4th node has 2 nodes per c_Lz; its triangles'
+    /// Δζ falls below the full wall's by the Gaussian wall's finite-difference ratio (0.94,
+    /// within 2 %: measured 0.950 against 0.935 from the coarse scan's own c_Lz), as the
+    /// note says. A 500 µm sphere, whose footprint √(D·Sq) = 22 µm spans
+    /// 4 coarse pixels, is flagged as well: its Δζ falls at least as much.
+    #[test]
+    fn too_coarse_is_fewer_than_four_pixels_per_correlation_length() {
+        let (fine, coarse) = (wall(512, 1, 0.0), wall(512, 4, 0.0));
+        let d = 500e-6;
+        let f = seen_by(&fine, &[d]).unwrap();
+        let c = seen_by(&coarse, &[d]).unwrap();
+        let r = c[0].resolution;
+        assert!(r.too_coarse() && !r.too_small(), "{r:?}");
+        let (k, ratio) = r.coarsest();
+        assert_eq!(k, 1);
+        assert!((ratio - 0.94).abs() < 0.01, "{ratio}");
+        let zeta = |s: &SeenBy| s.seen.lay.unwrap().delta_zeta;
+        let point = zeta(&c[0]) / zeta(&f[0]);
+        assert!((point / ratio - 1.0).abs() < 0.02, "{point} vs {ratio}");
+        assert!(c[1].resolution.too_coarse(), "{:?}", c[1].resolution);
+        let sphere = zeta(&c[1]) / zeta(&f[1]);
+        assert!(sphere < point + 0.005, "{sphere} vs {point}");
+    }
+}

@@ -64,7 +64,7 @@ pub enum Command {
     /// Characterise a measured wall (a scan file) and write its wall card: the deviations
     /// and lay the models take.
     #[command(
-        after_help = "Example: rebound scan --scan wall.x3p --out results/wall/scan   (then paste [wall] of wall_card.toml into a case)"
+        after_help = "Example: rebound scan --scan wall.x3p --out results/wall/scan --diameter-um 100,500\n   then: rebound stochastic --wall-card results/wall/scan/wall_card.toml"
     )]
     Scan(ScanArgs),
 }
@@ -186,6 +186,16 @@ pub struct ScanArgs {
     /// case's `[scan] file`. Without `--case`, the run is named after the file.
     #[arg(long, value_name = "FILE")]
     pub scan: Option<PathBuf>,
+    /// Particle diameter (µm) whose deviations the wall card gives (the sphere's centre
+    /// surface on the scan); repeat it or give a comma list. Overrides the case's `[scan]
+    /// diameters_um`.
+    #[arg(
+        long = "diameter-um",
+        value_name = "UM",
+        value_delimiter = ',',
+        allow_negative_numbers = true
+    )]
+    pub diameter_um: Vec<f64>,
 }
 
 #[derive(Args, Debug, Clone, Default)]

@@ -1,19 +1,20 @@
 //! `rebound scan` end to end (issue 29, parts 2 and 5): the built-in self-check gives back the
 //! generated wall, a real scan gives what the library measures on it, a turned scan turns
-//! its lay, the wall card pastes into a case, bad input is one line, and the outputs do not
-//! depend on the thread count.
+//! its lay, the wall card pastes into a case, the per-diameter rows are the library's, bad input is one line, and the outputs do not depend on the
+//! thread count.
 
 use crate::common::*;
 use roughwall::surface::scan::{characterise, ScanField};
 use std::path::{Path, PathBuf};
 
-/// The files every run with a lay writes.
-const OUTPUTS: [&str; 6] = [
+/// The files every run with a lay writes (with diameters, also `wall_card_diameters.csv`).
+const OUTPUTS: [&str; 7] = [
     "scan_summary.csv",
     "wall_card.toml",
     "height_map.svg",
     "slope_angle_pdfs.svg",
     "autocorrelation.svg",
+    "autocorrelation_map.svg",
     "run.toml",
 ];
 
@@ -141,7 +142,11 @@ fn the_builtin_self_check_gives_back_the_generated_wall_for_any_thread_count() {
     );
     assert_eq!(t["lay"]["angle_deg"].as_float(), Some(row.num("lay_deg")));
     assert_eq!(t["notes"].as_array().map(Vec::len), Some(0));
+    // Without diameters: no dilation, no rows.
+    assert!(t.get("diameter").is_none());
+    assert!(!one.join("wall_card_diameters.csv").exists());
     let manifest = std::fs::read_to_string(one.join("run.toml")).unwrap();
+    assert!(!manifest.contains("centre_surfaces_s") && manifest.contains("correlation_map_s"));
     assert!(manifest.contains("[surface_choice]") && manifest.contains("source = \"auto\""));
     // The chain measures what `deterministic` measures on the same surface (same seed, same
     // automatic grid, its triangles but for the periodic seam), to the 4 decimals of its
@@ -334,6 +339,103 @@ fn the_run_is_named_after_the_file_and_relative_paths_follow_the_case() {
     assert!(row["file"].ends_with("data/wall.plu"), "{row:?}");
 }
 
+/// `--diameter-um` on a real scan: a row per diameter after the point's, each what the
+/// library's `seen_by` gives to the 7 digits of the CSV; the deviations fall with the
+/// diameter; the widest sphere's row says the scan is too small; the card's `[[diameter]]`
+/// and run.toml's rows say the same; the same bytes for 1 and 2 threads.
+#[test]
+fn diameters_give_the_librarys_rows_falling_with_the_diameter_for_any_thread_count() {
+    let dir = Dir::new();
+    let file = real_scan("x3p-2.x3p");
+    let run = |threads: &str, out: &Path| {
+        rebound(&[
+            "scan",
+            "--scan",
+            file.to_str().unwrap(),
+            "--threads",
+            threads,
+            "--diameter-um",
+            "5,50",
+            "--diameter-um",
+            "1000",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .ok()
+    };
+    let (one, two) = (dir.join("one"), dir.join("two"));
+    let r = run("1", &one);
+    run("2", &two);
+    for f in OUTPUTS.iter().chain(&["wall_card_diameters.csv"]) {
+        if *f != "run.toml" {
+            assert_eq!(
+                std::fs::read(one.join(f)).unwrap(),
+                std::fs::read(two.join(f)).unwrap(),
+                "{f} differs between --threads 1 and 2"
+            );
+        }
+    }
+    let c = Csv::read(&one.join("wall_card_diameters.csv"));
+    assert_eq!(c.header.join(","), headers::WALL_CARD_DIAMETERS);
+    assert_eq!(c.rows.len(), 4);
+    let lib = library(&file);
+    let want =
+        roughwall::surface::scan::resolution::seen_by(&lib, &[5e-6, 50e-6, 1000e-6]).unwrap();
+    let mut last = [f64::INFINITY; 2];
+    for (k, w) in want.iter().enumerate() {
+        let row = c.row(k);
+        let l = w.seen.lay.unwrap();
+        assert_eq!(row.num("diameter_um"), [0.0, 5.0, 50.0, 1000.0][k]);
+        for (col, x) in [
+            ("delta_xi_deg", l.delta_xi.to_degrees()),
+            ("delta_zeta_deg", l.delta_zeta.to_degrees()),
+            ("exact_fraction", w.resolution.exact_fraction),
+            ("correlation_areas", w.resolution.correlation_areas),
+        ] {
+            assert!(close(row.num(col), x, 1e-6), "{col}: {row:?} vs {x}");
+        }
+        let now = [row.num("delta_xi_deg"), row.num("delta_zeta_deg")];
+        assert!(
+            now[0] < last[0] && now[1] < last[1],
+            "{now:?} after {last:?}"
+        );
+        last = now;
+    }
+    // The point's row is the summary's [wall].
+    let s = summary(&one);
+    assert_eq!(&c.row(0)["delta_zeta_deg"], &s.row(0)["delta_zeta_deg"]);
+    assert!(
+        c.row(3)["note"].starts_with("too small: its exact part holds at most "),
+        "{:?}",
+        c.row(3)
+    );
+    assert!(c.row(1)["note"].is_empty(), "{:?}", c.row(1));
+    assert!(
+        r.stderr
+            .contains("warning: D = 1000 µm: the scan is too small: "),
+        "{}",
+        r.stderr
+    );
+    let t = card(&one);
+    let rows = t["diameter"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    for (k, row) in rows.iter().enumerate() {
+        let csv = c.row(k + 1);
+        assert_eq!(row["diameter_um"].as_float(), Some(csv.num("diameter_um")));
+        assert_eq!(
+            row["delta_xi_deg"].as_float(),
+            Some(csv.num("delta_xi_deg"))
+        );
+        assert_eq!(row["note"].as_str(), Some(&csv["note"][..]));
+    }
+    let m: toml::Table = std::fs::read_to_string(one.join("run.toml"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert_eq!(m["diameter"].as_array().unwrap().len(), 4);
+    assert!(m["run"]["centre_surfaces_s"].as_float().is_some());
+}
+
 /// Bad input: one line naming the key (or the file), exit status 2, nothing in `--out`.
 #[test]
 fn bad_input_is_one_line_and_writes_nothing() {
@@ -372,10 +474,39 @@ fn bad_input_is_one_line_and_writes_nothing() {
             "no roughness along z",
         ),
         ("[scan]\nlevel_degree = 2\n", "no wall to generate"),
+        (
+            &format!("[scan]\nfile = \"{x3p}\"\ndiameters_um = [100.0, 0.0]\n"),
+            "invalid `scan.diameters_um` = 0: allowed 0.001 to 1000000 µm (a nanometre to a metre)",
+        ),
     ];
     for (i, (body, needle)) in cases.iter().enumerate() {
         let case = dir.write_case(&format!("c{i}.toml"), &format!("name = \"bad\"\n{body}"));
         refuse_case("scan", &case, dir.path(), needle);
+    }
+    for (d, needle) in [
+        (
+            "nan",
+            "invalid `--diameter-um` = NaN: allowed 0.001 to 1000000 µm",
+        ),
+        ("-1", "invalid `--diameter-um` = -1: allowed 0.001 to"),
+        (
+            "100,100",
+            "invalid `--diameter-um` = 100: allowed each diameter once",
+        ),
+        ("wide", "--diameter-um"),
+    ] {
+        let out = dir.join("never");
+        rebound(&[
+            "scan",
+            "--scan",
+            x3p,
+            "--diameter-um",
+            d,
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .refused(needle);
+        assert!(!out.exists());
     }
     for (file, needle) in [
         ("no-such.x3p", "invalid `--scan` = "),

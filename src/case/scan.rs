@@ -2,8 +2,11 @@
 //! file, the case's `[wall]`/`[surface]` generated and read as a scan (the self-check of the
 //! chain); then the scan itself, read with `topography` into the library's `ScanField`.
 
+use super::wall::{DIAMETER_RANGE_UM, MAX_DIAMETERS};
 use super::{Case, WallSource};
-use roughwall::check::{check_int_range, check_value, not_a_regular_file, within, Warning};
+use roughwall::check::{
+    check_int_range, check_length, check_value, not_a_regular_file, within, Warning,
+};
 use roughwall::deterministic::scene::{SceneOptions, SurfacePlan};
 use roughwall::error::{Error, Result};
 use roughwall::surface::scan::levelling::MAX_DEGREE;
@@ -20,6 +23,9 @@ pub struct ScanSetup {
     /// Degree of the polynomial form removed (1 … 3).
     pub level_degree: u32,
     pub source: ScanSource,
+    /// Particle diameters (m) whose centre surfaces the card measures (`[scan] diameters_um`
+    /// or `--diameter-um`), in the order given.
+    pub diameters_m: Vec<f64>,
 }
 
 /// Where the heights come from.
@@ -96,19 +102,48 @@ fn list(v: &[f64]) -> String {
     format!("[{}]", items.join(", "))
 }
 
+/// The particle diameters (m) of `--diameter-um` (`arg`, when given) or else of
+/// `[scan] diameters_um`: at most [`MAX_DIAMETERS`], each a nanometre to a metre, none
+/// twice. A sphere wider than the scan is not refused: its row says the scan is too small.
+fn diameters(arg: &[f64], case: &[f64]) -> Result<Vec<f64>> {
+    let (key, list) = match arg.is_empty() {
+        true => ("scan.diameters_um", case),
+        false => ("--diameter-um", arg),
+    };
+    let allowed = format!("at most {MAX_DIAMETERS} diameters");
+    check_length(key, list.len(), MAX_DIAMETERS, "diameters", &allowed)?;
+    let (lo, hi) = DIAMETER_RANGE_UM;
+    let mut out: Vec<f64> = Vec::with_capacity(list.len());
+    for &d in list {
+        within(key, d, lo, hi, " µm", "a nanometre to a metre")?;
+        if out.contains(&(d * 1e-6)) {
+            return Err(Error::invalid(
+                key,
+                d,
+                "each diameter once (it is given twice)",
+            ));
+        }
+        out.push(d * 1e-6);
+    }
+    Ok(out)
+}
+
 impl Case {
-    /// The `[scan]` section and `--scan FILE` (which overrides `scan.file`), checked:
-    /// `case_dir` is the directory of the case file (`None` for a built-in case), against
-    /// which a relative `scan.file` is read. Without a file, the case's `[wall]` or
+    /// The `[scan]` section, `--scan FILE` (which overrides `scan.file`) and
+    /// `--diameter-um` (`diameters_arg`, which overrides `scan.diameters_um` when given),
+    /// checked: `case_dir` is the directory of the case file (`None` for a built-in case),
+    /// against which a relative `scan.file` is read. Without a file, the case's `[wall]` or
     /// `[surface]` is the wall to generate: a `[surface]` grid as given, deviations on the
     /// automatic grid of `deterministic` (spacing `c_L,min/8`, side `100 c_L,max`).
     pub fn scan_setup(
         &self,
         case_dir: Option<&Path>,
         scan_arg: Option<&Path>,
+        diameters_arg: &[f64],
         warnings: &mut Vec<Warning>,
     ) -> Result<ScanSetup> {
         let s = self.scan.clone().unwrap_or_default();
+        let diameters_m = diameters(diameters_arg, &s.diameters_um)?;
         let degree = check_int_range(
             "scan.level_degree",
             s.level_degree.unwrap_or(1),
@@ -237,6 +272,7 @@ impl Case {
             return Ok(ScanSetup {
                 level_degree: degree,
                 source: ScanSource::Generated(plan),
+                diameters_m,
             });
         };
         for (sec, there) in [
@@ -307,6 +343,7 @@ impl Case {
                 pixel_m: pixel,
                 height_unit_m: unit,
             }),
+            diameters_m,
         })
     }
 }
@@ -387,7 +424,12 @@ mod tests {
 
     fn setup(text: &str, scan: Option<&Path>) -> Result<ScanSetup> {
         let case = super::super::parse(&format!("name = \"t\"\n{text}"), "t.toml")?;
-        case.scan_setup(Some(Path::new("/nonexistent-dir")), scan, &mut Vec::new())
+        case.scan_setup(
+            Some(Path::new("/nonexistent-dir")),
+            scan,
+            &[],
+            &mut Vec::new(),
+        )
     }
 
     fn err(text: &str) -> String {
@@ -436,6 +478,48 @@ mod tests {
         assert!(e.contains("no wall to generate"), "{e}");
         let e = err("[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 0.0\n");
         assert!(e.contains("no roughness along z"), "{e}");
+    }
+
+    #[test]
+    fn diameters_are_checked_and_the_command_line_overrides_the_case() {
+        let wall = "[wall]\ndelta_xi_deg = 2.5\ndelta_zeta_deg = 7.5\n";
+        let case = |list: &str| {
+            super::super::parse(
+                &format!("name = \"t\"\n[scan]\ndiameters_um = {list}\n{wall}"),
+                "t.toml",
+            )
+            .unwrap()
+        };
+        let run = |list: &str, arg: &[f64]| case(list).scan_setup(None, None, arg, &mut Vec::new());
+        let um = |d: &[f64]| d.iter().map(|d| d * 1e-6).collect::<Vec<_>>();
+        assert_eq!(
+            run("[100.0, 50.0]", &[]).unwrap().diameters_m,
+            um(&[100.0, 50.0])
+        );
+        assert_eq!(run("[100.0]", &[2.5]).unwrap().diameters_m, um(&[2.5]));
+        assert!(run("[]", &[]).unwrap().diameters_m.is_empty());
+        let err = |list: &str, arg: &[f64]| {
+            let e = run(list, arg).unwrap_err();
+            assert_eq!(e.exit_code(), 2, "{e}");
+            e.to_string()
+        };
+        assert_eq!(
+            err("[100.0, 0.0]", &[]),
+            "invalid `scan.diameters_um` = 0: allowed 0.001 to 1000000 µm (a nanometre to a metre)"
+        );
+        assert!(err("[100.0]", &[f64::NAN])
+            .starts_with("invalid `--diameter-um` = NaN: allowed 0.001 to"));
+        assert!(err("[]", &[f64::INFINITY]).starts_with("invalid `--diameter-um` = inf: "));
+        assert!(err("[]", &[-5.0]).starts_with("invalid `--diameter-um` = -5: "));
+        assert_eq!(
+            err("[100.0, 50.0, 100.0]", &[]),
+            "invalid `scan.diameters_um` = 100: allowed each diameter once (it is given twice)"
+        );
+        let many = format!("[{}]", vec!["1.0"; MAX_DIAMETERS + 1].join(", "));
+        assert_eq!(
+            err(&many, &[]),
+            format!("invalid `scan.diameters_um` = a list of 65 diameters: allowed at most {MAX_DIAMETERS} diameters")
+        );
     }
 
     #[test]

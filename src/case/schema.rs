@@ -231,6 +231,10 @@ pub struct ScanSection {
     /// Length of one height unit (µm) of a plain matrix or of x-y-z text.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub height_unit_um: Option<f64>,
+    /// Particle diameters (µm) whose deviations the wall card gives: those of each sphere's
+    /// centre surface on the scan (`[[diameter]]` of `wall_card.toml`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub diameters_um: Vec<f64>,
 }
 
 /// `[impactor]` (formerly `[particle]`) for `force-sweep`: a material preset or explicit

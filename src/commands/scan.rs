@@ -4,9 +4,14 @@
 //! Outputs in `--out` (default `results/<case name>/scan/`):
 //! - `scan_summary.csv` — one row: the grid, Sq, Ssk, Sku, Sdq, the lay and the deviations
 //!   along and across it (columns `crate::writers::scan::SUMMARY_HEADER`);
-//! - `wall_card.toml` — `[wall]` ready to paste into a case, `[lay]`, `[scan]` and notes;
+//! - `wall_card.toml` — `[wall]` ready to paste into a case, `[lay]`, `[scan]`, notes and, with
+//!   diameters (`[scan] diameters_um`, `--diameter-um`), a `[[diameter]]` per sphere;
+//! - `wall_card_diameters.csv` (with diameters) — the point and each sphere: the deviations of
+//!   its centre surface and where the scan is too small or too coarse for it
+//!   (`crate::writers::scan_diameters`);
 //! - `height_map.svg` (the levelled scan), `slope_angle_pdfs.svg` (`ξ'`, `ζ'` against the
-//!   normal law) and `autocorrelation.svg` (along and across the lay, with the `1/e` level);
+//!   normal law), `autocorrelation.svg` (along and across the lay, with the `1/e` level) and
+//!   `autocorrelation_map.svg` (over the lags along x and y, the `1/e` contour, the lay);
 //! - `run.toml`.
 //!
 //! The scan is read (every problem a one-line input error) before `--out` is begun; `--out`
@@ -19,11 +24,14 @@ use crate::commands::{begin_out, context, warn, Summary, Wrote};
 use crate::figures;
 use crate::output::fmt_num;
 use crate::writers::scan::{manifest_table, notes, summary_table, wall_card, Source};
+use crate::writers::scan_diameters::{diameters_table, labelled, manifest_rows};
 use crate::writers::surface::round_ms;
 use roughwall::deterministic::scene::SurfacePlan;
 use roughwall::error::Result;
-use roughwall::surface::scan::characterise;
+use roughwall::surface::scan::correlation_map::{correlation_map, map_bytes};
 use roughwall::surface::scan::lay::angle_histograms;
+use roughwall::surface::scan::resolution::seen_by;
+use roughwall::surface::scan::{characterise, Characterisation};
 use roughwall::surface::stats::HistogramSpec;
 use roughwall::warning::Warning;
 use std::path::Path;
@@ -31,6 +39,28 @@ use std::time::Instant;
 
 /// Bins of the slope-angle histograms, over `±4` times the larger deviation.
 pub const HIST_BINS: usize = 100;
+
+/// Bytes a sphere's centre surface needs beside the levelled scan, per point: the two
+/// passes of the dilation and the exact field (f64), and the masks of the edges (bytes).
+const CENTRE_SURFACE_BYTES_PER_POINT: u64 = 2 * 8 + 2;
+
+/// Lags drawn at least on each side of the map's origin.
+const MAP_MIN_LAGS: f64 = 16.0;
+
+/// The half-widths (m) of `autocorrelation_map.svg` along the scan's x and y: three times the
+/// longer correlation length (a quarter of the scan where there is none), at least
+/// [`MAP_MIN_LAGS`] pixels, at most a quarter of the scan.
+fn map_half_width(c: &Characterisation) -> [f64; 2] {
+    let f = &c.levelled;
+    let (lx, ly) = (f.nx as f64 * f.dx, f.ny as f64 * f.dy);
+    let quarter = 0.25 * lx.min(ly);
+    let longest = [c.correlation.length_along_m, c.correlation.length_across_m]
+        .iter()
+        .map(|l| l.unwrap_or(quarter))
+        .fold(0.0, f64::max);
+    let w = (3.0 * longest).max(MAP_MIN_LAGS * f.dx.max(f.dy));
+    [w.min(0.25 * lx), w.min(0.25 * ly)]
+}
 
 /// The case of `rebound scan --scan FILE` without `--case`: named after the file (the default
 /// output `results/<file stem>/scan/`), or `scan` when the stem cannot name a directory.
@@ -85,9 +115,12 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         None => None,
     };
     let mut warnings = Vec::new();
-    let setup = ctx
-        .case
-        .scan_setup(case_dir.as_deref(), args.scan.as_deref(), &mut warnings)?;
+    let setup = ctx.case.scan_setup(
+        case_dir.as_deref(),
+        args.scan.as_deref(),
+        &args.diameter_um,
+        &mut warnings,
+    )?;
     warn(warnings);
 
     let t0 = Instant::now();
@@ -109,6 +142,35 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
             (Input::Generate(plan), String::new())
         }
     };
+    // What the centre surfaces and the map add to the levelled scan, checked before `--out`.
+    let (nx, ny) = match &input {
+        Input::Read(r) => (r.field.nx, r.field.ny),
+        Input::Generate(plan) => (plan.spec().nodes, plan.spec().nodes),
+    };
+    if !setup.diameters_m.is_empty() {
+        let key = match args.diameter_um.is_empty() {
+            true => "scan.diameters_um",
+            false => "--diameter-um",
+        };
+        let um: Vec<String> = setup.diameters_m.iter().map(|d| fmt_num(d * 1e6)).collect();
+        roughwall::memory::require(
+            key,
+            format!("[{}]", um.join(", ")),
+            CENTRE_SURFACE_BYTES_PER_POINT * (nx * ny) as u64,
+            &format!("the centre surface of a sphere over the {nx} × {ny} scan"),
+        )?;
+    }
+    let size_key = match &setup.source {
+        ScanSource::File(f) => f.key,
+        ScanSource::Generated(_) if ctx.case.surface.is_some() => "surface.nodes",
+        ScanSource::Generated(_) => "wall (the automatic grid's nodes)",
+    };
+    roughwall::memory::require(
+        size_key,
+        format!("{nx} × {ny} points"),
+        map_bytes(nx, ny),
+        "the autocorrelation map",
+    )?;
     let out = begin_out(&ctx.out_dir)?;
     let ReadScan {
         field,
@@ -127,17 +189,37 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
     drop(field);
     let t_char = t0.elapsed().as_secs_f64() - t_read;
 
+    // The point particle costs no dilation; each sphere one over the whole scan.
+    let seen = seen_by(&c, &setup.diameters_m).unwrap_or_default();
+    let t_centre = t0.elapsed().as_secs_f64() - t_read - t_char;
+
     let src = Source {
         file: &file,
         format: &format,
     };
-    let notes = notes(&c);
+    let mut notes = notes(&c);
+    // The point particle's criteria are [wall]'s notes; a sphere's are its row's (and warnings).
+    let (point, spheres) = seen
+        .split_first()
+        .map_or((None, &[][..]), |(p, s)| (Some(p), s));
+    notes.extend(point.map(|p| labelled(p, &c.levelled)).unwrap_or_default());
+    let sphere_notes: Vec<String> = spheres
+        .iter()
+        .flat_map(|s| labelled(s, &c.levelled))
+        .collect();
     let dir = out.path().to_path_buf();
     summary_table(&src, &c).write(&dir.join("scan_summary.csv"))?;
     crate::output::write_atomic(
         &dir.join("wall_card.toml"),
-        wall_card(&src, &c, &notes).as_bytes(),
+        wall_card(&src, &c, &notes, &seen).as_bytes(),
     )?;
+    if !spheres.is_empty() {
+        diameters_table(&seen, &c.levelled).write(&dir.join("wall_card_diameters.csv"))?;
+        ctx.manifest
+            .set("diameter", manifest_rows(&seen, &c.levelled));
+        ctx.manifest
+            .set_run("centre_surfaces_s", toml::Value::Float(round_ms(t_centre)));
+    }
     figures::scan::height_map(&dir.join("height_map.svg"), &c.levelled, &ctx.case.name)?;
     let mut figures = vec!["height_map.svg"];
     if let Some(lay) = &c.lay {
@@ -157,6 +239,18 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         figures::scan::autocorrelation(&dir.join("autocorrelation.svg"), &c.correlation)?;
         figures.push("autocorrelation.svg");
     }
+    let t_map = Instant::now();
+    let map = correlation_map(&c.levelled, map_half_width(&c));
+    ctx.manifest.set_run(
+        "correlation_map_s",
+        toml::Value::Float(round_ms(t_map.elapsed().as_secs_f64())),
+    );
+    figures::scan::autocorrelation_map(
+        &dir.join("autocorrelation_map.svg"),
+        &map,
+        c.lay.map(|l| l.angle),
+    )?;
+    figures.push("autocorrelation_map.svg");
     ctx.manifest.set(
         "scan",
         manifest_table(&src, &c, &info, c.lay.map(|l| l.triangles)),
@@ -180,7 +274,7 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         .set_run("characterise_s", toml::Value::Float(round_ms(t_char)));
     ctx.manifest.write(&dir)?;
     let dir = out.commit()?;
-    warn(notes.into_iter().map(Warning));
+    warn(notes.into_iter().chain(sphere_notes).map(Warning));
 
     let mut work = format!(
         "{} × {} {}",

@@ -6,13 +6,17 @@
 //! * `slope_angle_pdfs.svg` ([`angle_pdfs`]): the PDFs of `ξ'` and `ζ'`, the normal's angles
 //!   along and across the lay, against the normal law of the same standard deviation (the
 //!   Gaussian wall the models assume, Eqs. 12–13 of Radenkovic & Simonin 2021).
+//! * `autocorrelation.svg` ([`autocorrelation`]): the autocorrelation along and across the lay.
+//! * `autocorrelation_map.svg` ([`autocorrelation_map`]): the areal autocorrelation over the
+//!   lags along the scan's x and y, its `1/e` contour and the lay through the origin.
 
-use super::surface::{heat_map, viridis, HeatMap};
+use super::surface::{heat_map, viridis, HeatMap, MapLine};
 use super::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 use crate::output::fmt_num;
 use rayon::prelude::*;
 use roughwall::error::Result;
 use roughwall::surface::scan::correlation::Correlation;
+use roughwall::surface::scan::correlation_map::CorrelationMap;
 use roughwall::surface::scan::lay::Lay;
 use roughwall::surface::scan::ScanField;
 use roughwall::surface::stats::Histogram;
@@ -116,9 +120,12 @@ pub fn height_map(path: &Path, f: &ScanField, name: &str) -> Result<()> {
             pixels: &pixels,
             palette: &palette,
             bar: &bar,
+            origin_um: (0.0, 0.0),
             extent_um: (f.nx as f64 * f.dx * 1e6, f.ny as f64 * f.dy * 1e6),
             range: (lo, hi),
             axes: ("x (µm)", "y (µm)"),
+            bar_label: "height (µm)",
+            lines: &[],
         },
     )
 }
@@ -211,6 +218,114 @@ pub fn autocorrelation(path: &Path, corr: &Correlation) -> Result<()> {
     plot_svg(path, &plot)
 }
 
+/// `2nd`, `3rd`, `4th`, `21st`…
+fn ordinal(n: usize) -> String {
+    let suffix = match (n % 10, n % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{n}{suffix}")
+}
+
+/// Palette of [`autocorrelation_map`]: viridis levels, then grey (no pair), then the contour.
+const MAP_LEVELS: usize = 254;
+
+/// Writes `path`: the areal autocorrelation `R(τ)/R(0)` of `map` over its window of lags along
+/// the scan's `x` and `y` (µm), lags without a pair of valid points grey, the `1/e` contour
+/// white (the correlation ellipse of a Gaussian wall, whose radii are `c_L`), and the lay
+/// (`lay_angle`, rad from the scan's x towards its y) drawn through the origin in red.
+pub fn autocorrelation_map(
+    path: &Path,
+    map: &CorrelationMap,
+    lay_angle: Option<f64>,
+) -> Result<()> {
+    let [hx, hy] = map.half;
+    let (w, h) = (2 * hx + 1, 2 * hy + 1);
+    let level = (-1.0f64).exp();
+    let lo = map
+        .values
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold(1.0f64, |a, &v| a.min(v));
+    let lo = if lo < 1.0 { lo } else { 1.0 - 1e-3 };
+    let mut palette: Vec<[u8; 3]> = (0..MAP_LEVELS)
+        .map(|i| viridis(i as f64 / (MAP_LEVELS - 1) as f64))
+        .collect();
+    palette.push(MISSING);
+    palette.push([255, 255, 255]);
+    let (grey, white) = (MAP_LEVELS as u8, MAP_LEVELS as u8 + 1);
+    let at = |kx: isize, ky: isize| map.at(kx, ky);
+    // Image row 0 is the top of the plot: the largest y lag.
+    let mut pixels = Vec::with_capacity(w * h);
+    for r in 0..h {
+        let ky = hy as isize - r as isize;
+        for c in 0..w {
+            let kx = c as isize - hx as isize;
+            let v = at(kx, ky);
+            let edge = [(1, 0), (-1, 0), (0, 1), (0, -1)]
+                .iter()
+                .any(|(dx, dy)| at(kx + dx, ky + dy) < level);
+            pixels.push(match v {
+                v if v.is_nan() => grey,
+                v if v >= level && edge => white,
+                v => ((v - lo) / (1.0 - lo) * (MAP_LEVELS - 1) as f64)
+                    .round()
+                    .clamp(0.0, (MAP_LEVELS - 1) as f64) as u8,
+            });
+        }
+    }
+    let bar: Vec<u8> = (0..MAP_LEVELS as u8).rev().collect();
+    let [sx, sy] = map.step_m.map(|s| s * 1e6);
+    // Each lag is a cell centred on it.
+    let (half_x, half_y) = ((hx as f64 + 0.5) * sx, (hy as f64 + 0.5) * sy);
+    let lines: Vec<MapLine> = lay_angle
+        .map(|a| {
+            let (c, s) = (a.cos(), a.sin());
+            let reach = |half: f64, d: f64| match d.abs() > 1e-12 {
+                true => half / d.abs(),
+                false => f64::INFINITY,
+            };
+            let t = reach(half_x, c).min(reach(half_y, s));
+            MapLine {
+                from: (-t * c, -t * s),
+                to: (t * c, t * s),
+                color: [214, 39, 40],
+            }
+        })
+        .into_iter()
+        .collect();
+    let every = match map.stride {
+        1 => String::new(),
+        s => format!(", every {} point", ordinal(s)),
+    };
+    let title = match lay_angle {
+        Some(a) => format!(
+            "R(τ)/R(0): lay at {}° (red), 1/e (white){every}",
+            fmt_num((a.to_degrees() * 100.0).round() / 100.0)
+        ),
+        None => format!("R(τ)/R(0): 1/e (white){every}"),
+    };
+    heat_map(
+        path,
+        &title,
+        &HeatMap {
+            size: (w, h),
+            pixels: &pixels,
+            palette: &palette,
+            bar: &bar,
+            origin_um: (-half_x, -half_y),
+            extent_um: (2.0 * half_x, 2.0 * half_y),
+            range: (lo, 1.0),
+            axes: ("lag along x (µm)", "lag along y (µm)"),
+            bar_label: "R(τ)/R(0)",
+            lines: &lines,
+        },
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -239,5 +354,57 @@ mod tests {
         let s = std::fs::read_to_string(&p).unwrap();
         assert_eq!(s.matches("<image").count(), 2);
         assert!(s.len() < 200_000, "{}", s.len());
+    }
+
+    /// The map's lay line runs through the origin, corner to corner for a lay at 45° on a
+    /// square window of lags.
+    #[test]
+    fn the_lay_is_drawn_through_the_origin_of_the_map() {
+        let map = CorrelationMap {
+            stride: 1,
+            step_m: [1e-6, 1e-6],
+            half: [2, 2],
+            values: (0..25)
+                .map(|k| {
+                    let (x, y) = ((k % 5) as f64 - 2.0, (k / 5) as f64 - 2.0);
+                    (-(x * x + y * y) / 2.0).exp()
+                })
+                .collect(),
+        };
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("map.svg");
+        autocorrelation_map(&p, &map, Some(std::f64::consts::FRAC_PI_4)).unwrap();
+        let s = std::fs::read_to_string(&p).unwrap();
+        let attr = |tag: &str, k: &str| -> f64 {
+            let element = format!(" {}", s.split(&format!("<{tag} ")).nth(1).unwrap());
+            element
+                .split(&format!(" {k}=\""))
+                .nth(1)
+                .unwrap()
+                .split('"')
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap()
+        };
+        let line = |k: &str| attr("line", k);
+        let image = |k: &str| attr("image", k);
+        // The map's image spans the window: the line runs from its lower left corner to its
+        // upper right one (SVG's y grows downwards).
+        let (left, top) = (image("x"), image("y"));
+        let (right, bottom) = (left + image("width"), top + image("height"));
+        for (got, want) in [
+            (line("x1"), left),
+            (line("y1"), bottom),
+            (line("x2"), right),
+            (line("y2"), top),
+        ] {
+            assert!((got - want).abs() < 0.6, "{got} vs {want}");
+        }
+        assert!(s.contains("lay at 45° (red)"));
+        assert_eq!(
+            [2, 3, 4, 11, 21, 112].map(ordinal),
+            ["2nd", "3rd", "4th", "11th", "21st", "112th"]
+        );
     }
 }

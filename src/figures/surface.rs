@@ -82,25 +82,40 @@ pub fn height_map(path: &Path, f: &HeightField, title: &str) -> Result<()> {
             pixels: &pixels,
             palette: &palette,
             bar: &bar,
+            origin_um: (0.0, 0.0),
             extent_um: (w as f64 * f.dx * 1e6, h as f64 * f.dz * 1e6),
             range: (lo, hi),
             axes: ("x (µm)", "z (µm)"),
+            bar_label: "height (µm)",
+            lines: &[],
         },
     )
 }
 
 /// A colour map drawn as one embedded image: `size.0 × size.1` palette indices, row 0 at the
-/// top, over `extent_um`, beside a colour bar (`bar`: its indices from top to bottom) labelled
-/// from `range.0` to `range.1`.
+/// top, over `extent_um` from `origin_um` (its lower left corner), beside a colour bar (`bar`:
+/// its indices from top to bottom) labelled from `range.0` to `range.1`, with `lines` drawn
+/// over it.
 pub(super) struct HeatMap<'a> {
     pub size: (usize, usize),
     pub pixels: &'a [u8],
     pub palette: &'a [[u8; 3]],
     pub bar: &'a [u8],
+    pub origin_um: (f64, f64),
     pub extent_um: (f64, f64),
     pub range: (f64, f64),
     /// Labels of the x and y axes.
     pub axes: (&'a str, &'a str),
+    /// What the colours are (the colour bar's label).
+    pub bar_label: &'a str,
+    pub lines: &'a [MapLine],
+}
+
+/// A straight segment over a [`HeatMap`], in its axes' units (µm).
+pub(super) struct MapLine {
+    pub from: (f64, f64),
+    pub to: (f64, f64),
+    pub color: [u8; 3],
 }
 
 /// Writes `path`: `m` as indexed-colour PNGs inside an SVG whose axes and colour bar come from
@@ -111,6 +126,7 @@ pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
     let map_png = png_indexed(w, h, m.pixels, m.palette);
     let bar_png = png_indexed(1, m.bar.len(), m.bar, m.palette);
     let (width_um, height_um) = m.extent_um;
+    let (x0, y0) = m.origin_um;
     let (cw, ch) = (640u32, 560u32);
     let mut svg = String::new();
     let (map_px, bar_px);
@@ -123,7 +139,7 @@ pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(56)
-            .build_cartesian_2d(0.0..width_um, 0.0..height_um)
+            .build_cartesian_2d(x0..x0 + width_um, y0..y0 + height_um)
             .map_err(draw_err)?;
         chart
             .configure_mesh()
@@ -148,7 +164,7 @@ pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
             .y_labels(8)
             .label_style(("sans-serif", 12))
             .axis_desc_style(("sans-serif", 13))
-            .y_desc("height (µm)")
+            .y_desc(m.bar_label)
             .draw()
             .map_err(draw_err)?;
         bar_px = cbar.plotting_area().get_pixel_range();
@@ -165,7 +181,26 @@ pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
             base64(png)
         )
     };
-    let images = image(&map_px, &map_png) + &image(&bar_px, &bar_png);
+    // Over the image, in its pixels: x from the left, y from the top.
+    let to_px = |(x, y): (f64, f64)| {
+        let (px, py) = (&map_px.0, &map_px.1);
+        (
+            px.start as f64 + (x - x0) / width_um * (px.end - px.start) as f64,
+            py.end as f64 - (y - y0) / height_um * (py.end - py.start) as f64,
+        )
+    };
+    let lines: String = m
+        .lines
+        .iter()
+        .map(|l| {
+            let ((ax, ay), (bx, by)) = (to_px(l.from), to_px(l.to));
+            let [r, g, b] = l.color;
+            format!(
+                "<line x1=\"{ax:.1}\" y1=\"{ay:.1}\" x2=\"{bx:.1}\" y2=\"{by:.1}\" stroke=\"rgb({r},{g},{b})\" stroke-width=\"2\"/>\n"
+            )
+        })
+        .collect();
+    let images = image(&map_px, &map_png) + &image(&bar_px, &bar_png) + &lines;
     let end = svg
         .rfind("</svg>")
         .ok_or_else(|| Error::Io("drawing figure: SVG without an end tag".into()))?;

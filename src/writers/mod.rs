@@ -5,11 +5,13 @@
 //!
 //! * [`deterministic`], [`stochastic`]: `finish` of a Monte Carlo run (and of `merge`).
 //! * [`surface`]: the tables of `rebound surface`.
-//! * [`scan`]: the summary, wall card and notes of `rebound scan`.
+//! * [`scan`]: the summary, wall card and notes of `rebound scan`;
+//!   [`scan_diameters`]: its per-diameter deviations and notes.
 
 pub mod deterministic;
 pub mod force_sweep;
 pub mod scan;
+pub mod scan_diameters;
 pub mod stochastic;
 pub mod surface;
 

@@ -2,8 +2,10 @@
 //! notes on how far the wall is from what the models assume, and the `[scan]` table of
 //! `run.toml`.
 
+use super::scan_diameters::card_tables;
 use crate::output::{fmt_num, fmt_opt, CsvTable};
 use roughwall::surface::scan::lay::Lay;
+use roughwall::surface::scan::resolution::SeenBy;
 use roughwall::surface::scan::Characterisation;
 use roughwall::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 
@@ -199,12 +201,12 @@ pub fn notes(c: &Characterisation) -> Vec<String> {
 }
 
 /// A TOML string (quoted and escaped).
-fn toml_str(s: &str) -> String {
+pub(super) fn toml_str(s: &str) -> String {
     toml::Value::String(s.to_string()).to_string()
 }
 
 /// A TOML float with at most 7 significant digits (always with a `.` or an exponent).
-fn toml_float(x: f64) -> String {
+pub(super) fn toml_float(x: f64) -> String {
     let s = fmt_num(x);
     if s.contains(['.', 'e', 'E']) {
         s
@@ -213,9 +215,10 @@ fn toml_float(x: f64) -> String {
     }
 }
 
-/// `wall_card.toml`: `[wall]` ready to paste into a case, the lay, the scan and the notes,
-/// with comments saying how a case and the C library take them.
-pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String]) -> String {
+/// `wall_card.toml`: `[wall]` ready to paste into a case, the lay, the scan, the notes and
+/// the `[[diameter]]` tables of the spheres of `seen` (none: no table), with comments saying
+/// how a case and the C library take them.
+pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[SeenBy]) -> String {
     let what = if src.file.is_empty() {
         "the generated wall, a self-check of the chain (docs/models.md, \"Measured walls\")"
             .to_string()
@@ -226,13 +229,15 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String]) -> String
         "# Wall card of {what}.\n\
          # Written by `rebound scan`.\n\
          #\n\
-         # Paste [wall] into a case file (`rebound stochastic --case ...`, `deterministic`): the\n\
-         # deviations are those along the lay (Δξ) and across it (Δζ), so the models' x runs along\n\
-         # the lay and β⁻ is measured from the lay ([lay] angle_deg gives it in the scan's axes).\n\
+         # Run a case on it with `rebound stochastic --wall-card THIS_FILE` (or `deterministic`),\n\
+         # or paste [wall] into a case file: the deviations are those along the lay (Δξ) and\n\
+         # across it (Δζ), so the models' x runs along the lay and β⁻ is measured from the lay\n\
+         # ([lay] angle_deg gives it in the scan's axes).\n\
          # For the C library: set rw_wall_params.delta_xi_deg and delta_zeta_deg to these values, and\n\
          # rw_hit.lay to the lay direction (direction_scan_xy, in the scan's x and y) turned into\n\
          # the CFD wall's axes.\n\
-         # Only [wall] goes into a case file: [lay], [scan] and notes describe the measurement.\n\n"
+         # Only [wall] goes into a case file: [lay], [scan] and notes describe the measurement, and\n\
+         # each [[diameter]] (if any) gives what a sphere of that diameter sees instead of [wall].\n\n"
     );
     s += "notes = [";
     if notes.is_empty() {
@@ -292,7 +297,7 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String]) -> String
             toml_float(sdq)
         );
     }
-    s
+    s + &card_tables(seen, f)
 }
 
 /// The `[scan]` table of `run.toml`: what was read, the grid, the levelling, and what the
@@ -373,7 +378,7 @@ mod tests {
             "{notes:?}"
         );
         assert!(!notes.iter().any(|n| n.contains("missing")), "{notes:?}");
-        let card = wall_card(&src, &c, &notes);
+        let card = wall_card(&src, &c, &notes, &[]);
         let t: toml::Table = card.parse().unwrap_or_else(|e| panic!("{e}\n{card}"));
         assert_eq!(t["scan"]["file"].as_str(), Some("dir/a \"b\".x3p"));
         assert_eq!(t["scan"]["grid"].as_array().unwrap().len(), 2);
@@ -425,6 +430,7 @@ mod tests {
                 format: "generated",
             },
             &c,
+            &[],
             &[],
         );
         let t: toml::Table = card.parse().unwrap();

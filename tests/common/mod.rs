@@ -228,19 +228,24 @@ impl Csv {
         Csv::parse(&text)
     }
 
-    /// The CSV in `text`.
+    /// The CSV in `text`, quoted cells as the outputs write them (RFC 4180: a note or a path
+    /// may hold a comma).
     pub fn parse(text: &str) -> Csv {
-        let mut lines = text.lines();
-        let header = lines
-            .next()
-            .unwrap_or_default()
-            .split(',')
-            .map(String::from)
-            .collect();
-        let rows = lines
-            .map(|l| l.split(',').map(String::from).collect())
-            .collect();
-        Csv { header, rows }
+        let mut reader = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .from_reader(text.as_bytes());
+        let mut records = reader.records().map(|r| {
+            r.unwrap_or_else(|e| panic!("CSV: {e}"))
+                .iter()
+                .map(String::from)
+                .collect::<Vec<String>>()
+        });
+        let header = records.next().unwrap_or_default();
+        Csv {
+            header,
+            rows: records.collect(),
+        }
     }
 
     /// The index of a column.
@@ -412,6 +417,8 @@ pub mod headers {
     pub const EFFECTIVE: &str = "diameter_um,d_over_cl_x,d_over_cl_z,delta_xi_eff_deg,delta_zeta_eff_deg,delta_xi_ratio,delta_zeta_ratio,contact_fraction,sqrt_h_over_d_deg,delta_xi_eff_over_sqrt_h_over_d,delta_zeta_eff_over_sqrt_h_over_d";
     /// `scan_summary.csv` of `scan`.
     pub const SCAN_SUMMARY: &str = "file,format,nx,ny,dx_um,dy_um,valid_points,missing_fraction,level_degree,sq_um,ssk,sku,sdq,sdq_x,sdq_y,lay_deg,delta_xi_deg,delta_zeta_deg,rho_xi_zeta,skewness_xi,skewness_zeta,kurtosis_xi,kurtosis_zeta,delta_scan_x_deg,delta_scan_y_deg,corr_length_along_um,corr_length_across_um";
+    /// `wall_card_diameters.csv` of `scan` with diameters.
+    pub const WALL_CARD_DIAMETERS: &str = "diameter_um,delta_xi_deg,delta_zeta_deg,exact_fraction,reach_x_um,reach_y_um,footprint_um,correlation_areas,delta_rel_se,note";
     /// `force_sweep.csv` of `force-sweep`.
     pub const FORCE_SWEEP: &str = "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s";
 }

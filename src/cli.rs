@@ -138,6 +138,10 @@ pub struct DeterministicArgs {
     /// Reuse a height field saved by `rebound surface --heights FILE` instead of generating one.
     #[arg(long, value_name = "FILE")]
     pub surface: Option<PathBuf>,
+    /// The wall of a wall_card.toml written by `rebound scan`: its [wall] deviations (and
+    /// Sq as the rms height) replace the case's [wall].
+    #[arg(long, value_name = "FILE")]
+    pub wall_card: Option<PathBuf>,
     #[command(flatten)]
     pub tally: TallyArgs,
 }
@@ -146,6 +150,10 @@ pub struct DeterministicArgs {
 pub struct StochasticArgs {
     #[command(flatten)]
     pub common: CommonArgs,
+    /// The wall of a wall_card.toml written by `rebound scan`, replacing the case's [wall]:
+    /// its [[diameter]] row of [particles] diameter_um when it has rows, else its [wall].
+    #[arg(long, value_name = "FILE")]
+    pub wall_card: Option<PathBuf>,
     #[command(flatten)]
     pub tally: TallyArgs,
 }

@@ -64,6 +64,17 @@ impl Context {
         })
     }
 
+    /// Runs `command` on `case` instead of the case read (e.g. with a wall card's wall): the
+    /// manifest's `[case]` and the text a shard carries (which `merge` reads back) become
+    /// that case, written out.
+    pub fn set_case(&mut self, case: Case, command: &str) -> Result<()> {
+        self.case_text = toml::to_string(&case)
+            .map_err(|e| Error::Internal(format!("writing the case out: {e}")))?;
+        self.manifest = Manifest::new(command, &case, self.seed, rayon::current_num_threads());
+        self.case = case;
+        Ok(())
+    }
+
     /// Where a shard writes its partial tally: `out` (`--out`), else
     /// `results/<name>/<command>/shard-K-of-N`.
     pub fn shard_dir(&self, out: Option<&Path>, shard: roughwall::tally::Shard) -> PathBuf {

@@ -1,6 +1,7 @@
 //! `rebound scan` end to end (issue 29, parts 2 and 5): the built-in self-check gives back the
 //! generated wall, a real scan gives what the library measures on it, a turned scan turns
-//! its lay, the wall card pastes into a case, the per-diameter rows are the library's, bad input is one line, and the outputs do not depend on the
+//! its lay, the wall card pastes into a case and runs as `--wall-card`, the per-diameter
+//! rows are the library's, bad input is one line, and the outputs do not depend on the
 //! thread count.
 
 use crate::common::*;
@@ -434,6 +435,163 @@ fn diameters_give_the_librarys_rows_falling_with_the_diameter_for_any_thread_cou
         .unwrap();
     assert_eq!(m["diameter"].as_array().unwrap().len(), 4);
     assert!(m["run"]["centre_surfaces_s"].as_float().is_some());
+}
+
+/// The two commands from a scan to rebounds: `scan --diameter-um 500`, then `stochastic
+/// --wall-card` on the built-in case (500 µm glass beads) runs on the card's 500 µm row,
+/// says it replaced the case's [wall] and records the card; `deterministic --wall-card`
+/// runs on the card's [wall]. A card without rows gives `stochastic` its [wall]; a diameter
+/// the card lacks, a card without [wall], and `--out` in the card's directory are refused.
+#[test]
+fn a_scan_becomes_a_stochastic_and_a_deterministic_run_in_two_commands() {
+    let dir = Dir::new();
+    let file = real_scan("x3p-2.x3p");
+    dir.command()
+        .args([
+            "scan",
+            "--scan",
+            file.to_str().unwrap(),
+            "--out",
+            "results/wall/scan",
+            "--diameter-um",
+            "500",
+        ])
+        .run()
+        .ok();
+    let card_path = "results/wall/scan/wall_card.toml";
+    let t = card(&dir.join("results/wall/scan"));
+    let row = &t["diameter"].as_array().unwrap()[0];
+    let sm = dir
+        .command()
+        .args([
+            "stochastic",
+            "--wall-card",
+            card_path,
+            "--particles",
+            "2000",
+            "--out",
+            "sm",
+        ])
+        .run()
+        .ok();
+    assert!(
+        sm.stderr.contains(&format!(
+            "warning: `--wall-card` {card_path} replaces the case's [wall] (Δξ, Δζ) = (3.8°, 7.5°) by its [[diameter]] row of 500 µm: (Δξ, Δζ) = ("
+        )),
+        "{}",
+        sm.stderr
+    );
+    let s = Csv::read(&dir.join("sm/summary.csv"));
+    assert_eq!(s.rows.len(), 6);
+    for r in s.records() {
+        assert_eq!(Some(r.num("delta_xi_deg")), row["delta_xi_deg"].as_float());
+        assert_eq!(
+            Some(r.num("delta_zeta_deg")),
+            row["delta_zeta_deg"].as_float()
+        );
+    }
+    let m: toml::Table = std::fs::read_to_string(dir.join("sm/run.toml"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    let w = &m["wall_card"];
+    assert_eq!(w["file"].as_str(), Some(card_path));
+    assert_eq!(
+        (w["row"].as_str(), w["diameter_um"].as_float()),
+        (Some("diameter"), Some(500.0))
+    );
+    assert_eq!(w["sha256"].as_str().map(str::len), Some(64));
+    assert_eq!(
+        m["case"]["wall"]["delta_xi_deg"].as_float(),
+        row["delta_xi_deg"].as_float()
+    );
+    // deterministic: the wall's own deviations, whatever the diameter.
+    dir.command()
+        .args([
+            "deterministic",
+            "--case",
+            "cases/aniso.toml",
+            "--wall-card",
+            card_path,
+            "--particles",
+            "100",
+            "--out",
+            "ds",
+        ])
+        .run()
+        .ok();
+    let d = Csv::read(&dir.join("ds/summary.csv"));
+    assert_eq!(
+        Some(d.row(0).num("delta_xi_deg")),
+        t["wall"]["delta_xi_deg"].as_float()
+    );
+    assert_eq!(
+        Some(d.row(0).num("delta_zeta_deg")),
+        t["wall"]["delta_zeta_deg"].as_float()
+    );
+    // A card without rows: stochastic takes [wall].
+    dir.command()
+        .args(["scan", "--scan", file.to_str().unwrap(), "--out", "plain"])
+        .run()
+        .ok();
+    let plain = card(&dir.join("plain"));
+    dir.command()
+        .args([
+            "stochastic",
+            "--wall-card",
+            "plain/wall_card.toml",
+            "--particles",
+            "100",
+            "--out",
+            "sm-plain",
+        ])
+        .run()
+        .ok();
+    let s = Csv::read(&dir.join("sm-plain/summary.csv"));
+    assert_eq!(
+        Some(s.row(0).num("delta_zeta_deg")),
+        plain["wall"]["delta_zeta_deg"].as_float()
+    );
+    // Refusals: one line, nothing written.
+    let case = dir.write_case(
+        "small.toml",
+        "name = \"small\"\n[wall]\ndelta_xi_deg = 2.0\ndelta_zeta_deg = 2.0\n[incidence]\nalpha_deg = [-10.0]\n[particles]\ndiameter_um = 250.0\n",
+    );
+    std::fs::write(
+        dir.join("no-wall.toml"),
+        "notes = []\n[scan]\nformat = \"x3p\"\n",
+    )
+    .unwrap();
+    for (args, needle) in [
+        (
+            vec!["stochastic", "--case", case.to_str().unwrap(), "--wall-card", card_path],
+            format!("`--wall-card` {card_path} has no [[diameter]] row for the particles' 250 µm (`particles.diameter_um`, default 500): it has 0 (the point particle, [wall]), 500 µm"),
+        ),
+        (
+            vec!["stochastic", "--wall-card", "no-wall.toml"],
+            "`--wall-card` no-wall.toml has no [wall]".to_string(),
+        ),
+        (
+            vec!["deterministic", "--wall-card", "no-such-card.toml"],
+            "`--wall-card` no-such-card.toml: ".to_string(),
+        ),
+    ] {
+        let mut a = args.clone();
+        a.extend(["--out", "never"]);
+        dir.command().args(&a).run().refused(&needle);
+        assert!(!dir.join("never").exists(), "{needle}");
+    }
+    dir.command()
+        .args([
+            "stochastic",
+            "--wall-card",
+            card_path,
+            "--out",
+            "results/wall/scan",
+        ])
+        .run()
+        .refused("it is the directory of `--wall-card`");
+    assert!(dir.join(card_path).is_file());
 }
 
 /// Bad input: one line naming the key (or the file), exit status 2, nothing in `--out`.

@@ -3,8 +3,9 @@
 //! per section family with its validated SI view: `wall` (`[surface]`, `[wall]`, `[stats]`),
 //! `scene` (`[incidence]`, `[particles]`, `[output]`), `collision`, `stochastic` (and `[stochastic]`),
 //! `deterministic` (and `[deterministic]`), `erosion`, `force` (`[impactor]`, `[sweep]`),
-//! `scan` (`[scan]`, and the scan it names, read), `values` (sweep ranges). `sections` says
-//! which command reads which section; `builtin` holds each command's built-in case.
+//! `scan` (`[scan]`, and the scan it names, read), `values` (sweep ranges), `wall_card` (the
+//! wall of a `wall_card.toml`, `--wall-card`). `sections` says which command reads which
+//! section; `builtin` holds each command's built-in case.
 
 pub mod builtin;
 pub mod collision;
@@ -19,6 +20,7 @@ pub mod sections;
 pub mod stochastic;
 pub mod values;
 pub mod wall;
+pub mod wall_card;
 
 pub use load::{load_text, parse, DEFAULT_SEED};
 pub use roughwall::warning::Warning;

@@ -83,6 +83,10 @@ pub const MAX_CONDITIONS: usize = 10_000;
 /// Narrowest PDF bin (degrees).
 pub const MIN_BIN_WIDTH_DEG: f64 = 0.01;
 
+/// Particle diameter (µm) without `[particles] diameter_um`: the glass beads of Radenkovic &
+/// Simonin 2021, Sec. 4.
+pub const DEFAULT_DIAMETER_UM: f64 = 500.0;
+
 /// Largest particle count per condition the schema admits.
 pub const MAX_PARTICLES: i64 = 100_000_000;
 
@@ -220,7 +224,7 @@ impl Case {
         let (lo, hi) = DIAMETER_RANGE_UM;
         let diameter_um = within(
             "particles.diameter_um",
-            p.diameter_um.unwrap_or(500.0),
+            p.diameter_um.unwrap_or(DEFAULT_DIAMETER_UM),
             lo,
             hi,
             " µm",

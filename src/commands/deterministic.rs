@@ -4,7 +4,7 @@
 
 use crate::case::{builtin, deterministic::prepare};
 use crate::cli::DeterministicArgs;
-use crate::commands::{begin_out, context, warn, Summary};
+use crate::commands::{apply_wall_card, begin_out, context, warn, Summary};
 use crate::output::out_dir::{check_distinct, check_out};
 use crate::runner;
 use crate::writers::deterministic::{finish, sphere_table, surface_table};
@@ -19,11 +19,15 @@ use roughwall::tally::ConditionTally;
 
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<Summary> {
-    let ctx = context(&args.common, "deterministic", builtin::DETERMINISTIC)?;
+    let mut ctx = context(&args.common, "deterministic", builtin::DETERMINISTIC)?;
+    let card = apply_wall_card(&mut ctx, args.wall_card.as_deref(), "deterministic")?;
     let o = args.tally.overrides();
     let file = args.surface.as_deref();
     let mut p = prepare(&ctx.case, &o, file)?;
     warn(std::mem::take(&mut p.warnings));
+    if let Some(card) = card {
+        p.notes.insert("wall_card".into(), toml::Value::Table(card));
+    }
     let plan = runner::plan(
         p.specs.clone(),
         p.scene.count as u64,
@@ -43,10 +47,16 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
         None => ctx.out_dir.clone(),
     };
     check_out(&target, "--out")?;
-    if let Some(file) = file {
-        // `--out` is replaced as a whole: it must not hold the height file the run reads.
-        check_distinct(&target, "--out", &[("--surface", file)])?;
-    }
+    // `--out` is replaced as a whole: it must not hold the height file or the card the run
+    // reads.
+    let inputs: Vec<(&str, &std::path::Path)> = [
+        ("--surface", file),
+        ("--wall-card", args.wall_card.as_deref()),
+    ]
+    .into_iter()
+    .filter_map(|(k, p)| p.map(|p| (k, p)))
+    .collect();
+    check_distinct(&target, "--out", &inputs)?;
     // Everything the user gave is checked; now the surfaces (the only slow input step).
     let sphere = p.options.sphere_diameter_m;
     let t0 = std::time::Instant::now();

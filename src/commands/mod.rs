@@ -149,6 +149,25 @@ pub fn context(common: &CommonArgs, command: &str, default_toml: &str) -> Result
     Ok(ctx)
 }
 
+/// `--wall-card FILE` (`card`): the card's wall in place of the case's
+/// (`crate::case::wall_card`), printed as a warning when the case had its own; returns the
+/// `[wall_card]` table of `run.toml`.
+pub fn apply_wall_card(
+    ctx: &mut Context,
+    card: Option<&Path>,
+    command: &str,
+) -> Result<Option<toml::Table>> {
+    let Some(path) = card else {
+        return Ok(None);
+    };
+    let card = crate::case::wall_card::WallCard::read(path)?;
+    let mut case = ctx.case.clone();
+    let applied = card.apply(&mut case, command)?;
+    ctx.set_case(case, command)?;
+    warn(applied.warnings);
+    Ok(Some(applied.manifest))
+}
+
 /// Begins writing `--out` at `dir` ([`OutputDir::begin`]) and hands its warnings on.
 pub fn begin_out(dir: &Path) -> Result<OutputDir> {
     let mut out = OutputDir::begin(dir, "--out")?;

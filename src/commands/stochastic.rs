@@ -1,9 +1,11 @@
 //! `rebound stochastic`: the stochastic rebound model of Radenkovic & Simonin 2021
-//! (Sec. 3.6, Fig. 13; docs/physics.md §3) for every incident condition of the case.
+//! (Sec. 3.6, Fig. 13; docs/physics.md §3) for every incident condition of the case, on the
+//! case's wall or a wall card's (`--wall-card`).
 
 use crate::case::{builtin, stochastic::prepare};
 use crate::cli::StochasticArgs;
-use crate::commands::{begin_out, context, warn, Summary};
+use crate::commands::{apply_wall_card, begin_out, context, warn, Summary};
+use crate::output::out_dir::{check_distinct, check_out};
 use crate::runner;
 use crate::writers::stochastic::finish;
 use roughwall::error::Result;
@@ -13,10 +15,14 @@ use roughwall::tally::ConditionTally;
 
 /// Runs the subcommand.
 pub fn run(args: &StochasticArgs) -> Result<Summary> {
-    let ctx = context(&args.common, "stochastic", builtin::STOCHASTIC)?;
+    let mut ctx = context(&args.common, "stochastic", builtin::STOCHASTIC)?;
+    let card = apply_wall_card(&mut ctx, args.wall_card.as_deref(), "stochastic")?;
     let o = args.tally.overrides();
     let mut p = prepare(&ctx.case, &o, ctx.seed)?;
     warn(std::mem::take(&mut p.warnings));
+    if let Some(card) = card {
+        p.notes.insert("wall_card".into(), toml::Value::Table(card));
+    }
     let plan = runner::plan(
         p.specs.clone(),
         p.scene.count as u64,
@@ -37,6 +43,11 @@ pub fn run(args: &StochasticArgs) -> Result<Summary> {
         Some(shard) => ctx.shard_dir(args.common.out.as_deref(), shard),
         None => ctx.out_dir.clone(),
     };
+    if let Some(card) = &args.wall_card {
+        // `--out` is replaced as a whole: it must not hold the card the run reads.
+        check_out(&target, "--out")?;
+        check_distinct(&target, "--out", &[("--wall-card", card)])?;
+    }
     let out = begin_out(&target)?;
     let t0 = std::time::Instant::now();
     let (setup, conditions, seed) = (&p.setup, &p.scene.conditions, ctx.seed);

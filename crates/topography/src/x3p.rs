@@ -53,7 +53,7 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
             .to_string()
     });
     if let (Some(sum), Some("main.xml")) = (&sum_file, sum_target.as_deref()) {
-        verify(&main, sum.as_bytes(), "main.xml", "md5checksum.hex")?;
+        verify(&md5(&main), sum.as_bytes(), "main.xml", "md5checksum.hex")?;
         info.push(("main.xml MD5".to_string(), "verified".to_string()));
     }
     let text =
@@ -149,28 +149,77 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
         Problem::corrupt("DataLink has no PointDataLink naming the point data file")
     })?;
     let need_bytes = points as u64 * size as u64;
-    let raw = entry(&mut zip, data_name, Size::Exactly(need_bytes))?.ok_or_else(|| {
-        Problem::corrupt(format!(
-            "the archive has no {} that PointDataLink names",
-            quote(data_name)
-        ))
-    })?;
+    let data_sum = link.text_at(&["MD5ChecksumPointData"]);
+    let hex_names_data = sum_target.as_deref() == Some(data_name);
+    // The point data is converted block by block as it is read (no copy of the member), while
+    // a second thread takes its MD5 once for both checksums that may name it.
+    let mut heights_m = Vec::with_capacity(points);
+    let convert = |bytes: &[u8], out: &mut Vec<f64>| {
+        // A height is `raw × Increment + Offset`; a NaN or infinite one is missing.
+        let height = |raw: f64| {
+            let h = raw * z_inc + z_off;
+            if h.is_finite() {
+                h
+            } else {
+                f64::NAN
+            }
+        };
+        match (size, data_type) {
+            (2, _) => out.extend(
+                bytes
+                    .chunks_exact(2)
+                    .map(|b| height(i16::from_le_bytes([b[0], b[1]]) as f64)),
+            ),
+            (8, _) => out.extend(bytes.chunks_exact(8).map(|b| {
+                height(f64::from_le_bytes([
+                    b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7],
+                ]))
+            })),
+            (_, "L") => out.extend(
+                bytes
+                    .chunks_exact(4)
+                    .map(|b| height(i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64)),
+            ),
+            _ => out.extend(
+                bytes
+                    .chunks_exact(4)
+                    .map(|b| height(f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64)),
+            ),
+        }
+    };
+    let (read_bytes, digest) = {
+        let (mut member, declared) = open_entry(&mut zip, data_name, Size::Exactly(need_bytes))?
+            .ok_or_else(|| {
+                Problem::corrupt(format!(
+                    "the archive has no {} that PointDataLink names",
+                    quote(data_name)
+                ))
+            })?;
+        stream(
+            &mut member,
+            data_name,
+            declared,
+            size,
+            data_sum.is_some() || hex_names_data,
+            |bytes| convert(bytes, &mut heights_m),
+        )?
+    };
     check_data_len(
         points,
         size,
-        raw.len(),
+        read_bytes as usize,
         &format!("X3P point data ({data_type})"),
     )?;
-    if let Some(sum) = link.text_at(&["MD5ChecksumPointData"]) {
-        verify(&raw, sum.as_bytes(), data_name, "MD5ChecksumPointData")?;
+    if let (Some(sum), Some(digest)) = (data_sum, &digest) {
+        verify(digest, sum.as_bytes(), data_name, "MD5ChecksumPointData")?;
         info.push(("point data MD5".to_string(), "verified".to_string()));
     }
-    match (&sum_file, sum_target.as_deref()) {
-        (Some(sum), Some(name)) if name == data_name => {
-            verify(&raw, sum.as_bytes(), data_name, "md5checksum.hex")?;
+    match (&sum_file, sum_target.as_deref(), &digest) {
+        (Some(sum), Some(name), Some(digest)) if name == data_name => {
+            verify(digest, sum.as_bytes(), data_name, "md5checksum.hex")?;
         }
-        (Some(_), Some("main.xml")) => {}
-        (Some(_), Some(name)) => info.push((
+        (Some(_), Some("main.xml"), _) => {}
+        (Some(_), Some(name), _) => info.push((
             "md5checksum.hex".to_string(),
             format!("names {name}, not checked"),
         )),
@@ -182,7 +231,12 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
         .unwrap_or("bindata/valid.bin");
     let valid = entry(&mut zip, valid_name, Size::Exactly(mask_bytes))?;
     if let (Some(v), Some(sum)) = (&valid, link.text_at(&["MD5ChecksumValidPoints"])) {
-        verify(v, sum.as_bytes(), valid_name, "MD5ChecksumValidPoints")?;
+        verify(
+            &md5(v),
+            sum.as_bytes(),
+            valid_name,
+            "MD5ChecksumValidPoints",
+        )?;
     }
     if valid.is_none() && link.child("ValidPointsLink").is_some() {
         return Err(Problem::corrupt(format!(
@@ -190,26 +244,14 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
             quote(valid_name)
         )));
     }
-    let value = |k: usize| -> f64 {
-        let b = &raw[k * size..(k + 1) * size];
-        match size {
-            2 => i16::from_le_bytes([b[0], b[1]]) as f64,
-            8 => f64::from_le_bytes(b.try_into().unwrap_or([0; 8])),
-            _ if data_type == "L" => i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
-            _ => f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
-        }
-    };
-    let heights_m = (0..points)
-        .map(|k| {
-            let ok = valid.as_ref().is_none_or(|v| v[k / 8] >> (k % 8) & 1 == 1);
-            let h = value(k) * z_inc + z_off;
-            if ok && h.is_finite() {
-                h
-            } else {
-                f64::NAN
+    if let Some(v) = &valid {
+        // One bit per point, least significant first; 0 marks a point missing.
+        for (k, h) in heights_m.iter_mut().enumerate() {
+            if v[k / 8] >> (k % 8) & 1 == 0 {
+                *h = f64::NAN;
             }
-        })
-        .collect();
+        }
+    }
     for (key, path) in [
         ("date", &["Record2", "Date"][..]),
         ("vendor", &["Record2", "Instrument", "Manufacturer"]),
@@ -248,14 +290,14 @@ enum Size {
     Exactly(u64),
 }
 
-/// The bytes of the member `name`, `None` when the archive has none; its declared size is
-/// checked before reading, and its content must match it.
-fn entry<R: Read + Seek>(
-    zip: &mut zip::ZipArchive<R>,
+/// The member `name` and its declared size, `None` when the archive has none; the declared
+/// size is checked before anything is read.
+fn open_entry<'a, R: Read + Seek>(
+    zip: &'a mut zip::ZipArchive<R>,
     name: &str,
     size: Size,
-) -> Result<Option<Vec<u8>>> {
-    let mut f = match zip.by_name(name) {
+) -> Result<Option<(zip::read::ZipFile<'a, R>, u64)>> {
+    let f = match zip.by_name(name) {
         Ok(f) => f,
         Err(zip::result::ZipError::FileNotFound) => return Ok(None),
         Err(e) => {
@@ -266,59 +308,160 @@ fn entry<R: Read + Seek>(
         }
     };
     let declared = f.size();
-    let limit = match size {
-        Size::AtMost(max) if declared > max => {
-            return Err(Problem::new(
-                ErrorKind::TooLarge,
-                format!(
-                    "{} is {declared} bytes; at most {max} are read",
-                    quote(name)
-                ),
-            ))
-        }
+    match size {
+        Size::AtMost(max) if declared > max => Err(Problem::new(
+            ErrorKind::TooLarge,
+            format!(
+                "{} is {declared} bytes; at most {max} are read",
+                quote(name)
+            ),
+        )),
         Size::Exactly(n) if declared != n => {
             let kind = if declared < n {
                 ErrorKind::Truncated
             } else {
                 ErrorKind::Corrupt
             };
-            return Err(Problem::new(
+            Err(Problem::new(
                 kind,
                 format!(
                     "{} holds {declared} bytes but main.xml's grid and data type need {n}",
                     quote(name)
                 ),
-            ));
+            ))
         }
-        Size::AtMost(_) | Size::Exactly(_) => declared,
-    };
-    let mut out = Vec::with_capacity(limit as usize);
-    (&mut f)
-        .take(limit + 1)
-        .read_to_end(&mut out)
-        .map_err(|e| Problem::corrupt(format!("the zip member {} is damaged: {e}", quote(name))))?;
-    if out.len() as u64 != declared {
-        return Err(Problem::truncated(format!(
-            "the zip member {} declares {declared} bytes but holds {}",
-            quote(name),
-            out.len()
-        )));
+        Size::AtMost(_) | Size::Exactly(_) => Ok(Some((f, declared))),
     }
+}
+
+/// The bytes of the member `name`, `None` when the archive has none; its declared size is
+/// checked before reading, and its content must match it.
+fn entry<R: Read + Seek>(
+    zip: &mut zip::ZipArchive<R>,
+    name: &str,
+    size: Size,
+) -> Result<Option<Vec<u8>>> {
+    let Some((mut f, declared)) = open_entry(zip, name, size)? else {
+        return Ok(None);
+    };
+    let mut out = Vec::with_capacity(declared as usize);
+    (&mut f)
+        .take(declared + 1)
+        .read_to_end(&mut out)
+        .map_err(|e| damaged(name, &e))?;
+    held(name, declared, out.len() as u64)?;
     Ok(Some(out))
 }
 
-/// Checks that the MD5 of `data` is the 32 hex digits at the start of `stored`.
-fn verify(data: &[u8], stored: &[u8], name: &str, source: &str) -> Result<()> {
+/// Bytes per block of [`stream`]: a multiple of every value size.
+const BLOCK: usize = 1 << 20;
+
+/// Reads the member `f` (`declared` bytes) in blocks of whole values of `size` bytes, each
+/// passed to `convert` in order, and, when `md5` is asked for, takes the MD5 of its bytes on
+/// another thread meanwhile. Returns the bytes read (the declared count, or an error) and
+/// the MD5.
+fn stream(
+    f: &mut impl Read,
+    name: &str,
+    declared: u64,
+    size: usize,
+    md5: bool,
+    mut convert: impl FnMut(&[u8]),
+) -> Result<(u64, Option<[u8; 16]>)> {
+    use std::sync::mpsc::{channel, sync_channel};
+    let mut f = f.take(declared + 1);
+    // Fills `buf` up to its length or the member's end; the bytes read.
+    let mut fill = |buf: &mut [u8]| -> Result<usize> {
+        let mut n = 0;
+        while n < buf.len() {
+            match f.read(&mut buf[n..]) {
+                Ok(0) => break,
+                Ok(k) => n += k,
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(e) => return Err(damaged(name, &e)),
+            }
+        }
+        Ok(n)
+    };
+    let block = BLOCK.min(declared as usize + 1);
+    let mut total = 0u64;
+    if !md5 {
+        let mut buf = vec![0u8; block];
+        loop {
+            let n = fill(&mut buf)?;
+            total += n as u64;
+            convert(&buf[..n - n % size]);
+            if n < block {
+                break;
+            }
+        }
+        held(name, declared, total)?;
+        return Ok((total, None));
+    }
+    std::thread::scope(|s| {
+        // Full blocks go to the hashing thread and come back to be filled again.
+        let (to_hash, blocks) = sync_channel::<(Vec<u8>, usize)>(2);
+        let (give_back, returned) = channel::<Vec<u8>>();
+        let hasher = s.spawn(move || {
+            let mut h = Md5::new();
+            for (buf, n) in blocks {
+                h.update(&buf[..n]);
+                // The reader may have stopped: the block is then not needed.
+                let _ = give_back.send(buf);
+            }
+            <[u8; 16]>::from(h.finalize())
+        });
+        loop {
+            let mut buf = returned.try_recv().unwrap_or_else(|_| vec![0u8; block]);
+            let n = fill(&mut buf)?;
+            total += n as u64;
+            convert(&buf[..n - n % size]);
+            // The hashing thread ends only when this sender is dropped: it cannot be gone.
+            let _ = to_hash.send((buf, n));
+            if n < block {
+                break;
+            }
+        }
+        drop(to_hash);
+        held(name, declared, total)?;
+        let digest = hasher
+            .join()
+            .map_err(|_| Problem::corrupt(format!("the MD5 of {} failed", quote(name))))?;
+        Ok((total, Some(digest)))
+    })
+}
+
+/// The read of the member `name` failed.
+fn damaged(name: &str, e: &std::io::Error) -> Problem {
+    Problem::corrupt(format!("the zip member {} is damaged: {e}", quote(name)))
+}
+
+/// Checks that the member `name` held the `declared` bytes (`got`, at most one more read).
+fn held(name: &str, declared: u64, got: u64) -> Result<()> {
+    if got != declared {
+        return Err(Problem::truncated(format!(
+            "the zip member {} declares {declared} bytes but holds {got}",
+            quote(name)
+        )));
+    }
+    Ok(())
+}
+
+/// The MD5 of `data`.
+fn md5(data: &[u8]) -> [u8; 16] {
+    Md5::digest(data).into()
+}
+
+/// Checks that the MD5 `digest` (of the member `name`) is the 32 hex digits at the start of
+/// `stored`.
+fn verify(digest: &[u8; 16], stored: &[u8], name: &str, source: &str) -> Result<()> {
     let stored = String::from_utf8_lossy(stored);
     let want = stored
         .split_whitespace()
         .next()
         .unwrap_or("")
         .to_ascii_lowercase();
-    let got: String = Md5::digest(data)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect();
+    let got: String = digest.iter().map(|b| format!("{b:02x}")).collect();
     if want.len() != 32 || !want.bytes().all(|b| b.is_ascii_hexdigit()) {
         return Err(Problem::corrupt(format!(
             "{source} holds {}, not an MD5 checksum (32 hexadecimal digits)",

@@ -31,7 +31,7 @@ pub fn scan_wall(path: &Path) -> Result<Option<(HeightField, toml::Table)>> {
         other => other,
     };
     let field = ScanField::new(t.nx, t.ny, t.dx_m, t.dy_m, t.heights_m).map_err(named)?;
-    let c = characterise(&field, 1).map_err(named)?;
+    let c = characterise(field, 1).map_err(named)?;
     let lay = c.lay.ok_or_else(|| {
         named(Error::Input(
             "no cell with four valid corners: no wall to bounce on".into(),

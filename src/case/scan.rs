@@ -381,13 +381,6 @@ impl ScanFile {
                 _ => Error::Input(m),
             }
         })?;
-        // A read scan is at most topography::MAX_POINTS; levelling copies it once more.
-        roughwall::memory::require(
-            self.key,
-            self.path.display(),
-            8 * t.heights_m.len() as u64,
-            &format!("the levelled copy of the {} × {} scan", t.nx, t.ny),
-        )?;
         let format = t.format.name().to_string();
         let field = ScanField::new(t.nx, t.ny, t.dx_m, t.dy_m, t.heights_m)
             .map_err(|e| Error::Input(format!("`{}` {}: {e}", self.key, self.path.display())))?;
@@ -411,11 +404,10 @@ pub fn generated_scan(plan: &SurfacePlan, seed: u64) -> Result<ReadScan> {
     })
 }
 
-/// Bytes the characterisation of a generated `plan` needs: the generation's, and the
-/// levelled copy of its heights.
+/// Bytes the characterisation of a generated `plan` needs: the generation's (the heights are
+/// levelled in place).
 pub fn generated_bytes(plan: &SurfacePlan) -> u64 {
-    use roughwall::surface::generate::{field_bytes, generation_bytes};
-    generation_bytes(plan.spec()).saturating_add(field_bytes(plan.spec()))
+    roughwall::surface::generate::generation_bytes(plan.spec())
 }
 
 #[cfg(test)]

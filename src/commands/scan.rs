@@ -185,8 +185,7 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
     };
     let t_read = t0.elapsed().as_secs_f64();
     let points = (field.nx * field.ny) as u64;
-    let c = characterise(&field, setup.level_degree)?;
-    drop(field);
+    let c = characterise(field, setup.level_degree)?;
     let t_char = t0.elapsed().as_secs_f64() - t_read;
 
     // The point particle costs no dilation; each sphere one over the whole scan.

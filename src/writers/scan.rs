@@ -356,7 +356,7 @@ mod tests {
             .map(|i| 1e-6 * ((i % nx) as f64 * 0.7).sin() + 1e-8 * ((i / nx) as f64 * 0.3).cos())
             .collect();
         h[3] = f64::NAN;
-        characterise(&ScanField::new(nx, ny, 1e-6, 2e-6, h).unwrap(), 1).unwrap()
+        characterise(ScanField::new(nx, ny, 1e-6, 2e-6, h).unwrap(), 1).unwrap()
     }
 
     #[test]
@@ -407,7 +407,7 @@ mod tests {
     fn undefined_values_are_empty_cells_never_nan() {
         // A plane: no spread, so no lay direction, shape or correlation.
         let h: Vec<f64> = (0..64).map(|i| 1e-9 * (i % 8) as f64).collect();
-        let c = characterise(&ScanField::new(8, 8, 1e-6, 1e-6, h).unwrap(), 1).unwrap();
+        let c = characterise(ScanField::new(8, 8, 1e-6, 1e-6, h).unwrap(), 1).unwrap();
         let t = summary_table(
             &Source {
                 file: "",

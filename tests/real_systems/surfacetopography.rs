@@ -233,7 +233,7 @@ fn levelled_parameters(
         ours.heights_m.clone(),
     )
     .unwrap_or_else(|e| panic!("{name}: {e}"));
-    let p = characterise(&field, 1)
+    let p = characterise(field.clone(), 1)
         .unwrap_or_else(|e| panic!("{name}: {e}"))
         .parameters;
     // A scan that is a plane (matrix-6) leaves only round-off after levelling: differences

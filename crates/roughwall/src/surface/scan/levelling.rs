@@ -26,6 +26,21 @@ fn legendre(t: f64) -> [f64; 4] {
     ]
 }
 
+/// The exponents `(a, b)` of the basis up to degree 3, in the order of [`basis`]: the first
+/// 3, 6 or 10 are the basis of degree 1, 2 or 3.
+const TERMS: [(usize, usize); 10] = [
+    (0, 0),
+    (1, 0),
+    (0, 1),
+    (2, 0),
+    (1, 1),
+    (0, 2),
+    (3, 0),
+    (2, 1),
+    (1, 2),
+    (0, 3),
+];
+
 /// The exponents `(a, b)` of the basis `P_a(u) P_b(v)` with `a + b ≤ degree`.
 fn basis(degree: u32) -> Vec<(usize, usize)> {
     let d = degree as usize;
@@ -45,6 +60,14 @@ fn coordinate(i: usize, n: usize) -> f64 {
 /// missing. Refused when the valid points cannot fix the polynomial (fewer than its terms,
 /// or all on one line).
 pub fn level(f: &ScanField, degree: u32) -> Result<(ScanField, Vec<f64>)> {
+    let mut levelled = f.clone();
+    let coef = level_in_place(&mut levelled, degree)?;
+    Ok((levelled, coef))
+}
+
+/// [`level`] without a copy: the polynomial is removed from `f` itself, whose heights are
+/// left as they were when it is refused.
+pub fn level_in_place(f: &mut ScanField, degree: u32) -> Result<Vec<f64>> {
     if !(1..=MAX_DEGREE).contains(&degree) {
         return Err(Error::invalid(
             "levelling degree",
@@ -54,33 +77,20 @@ pub fn level(f: &ScanField, degree: u32) -> Result<(ScanField, Vec<f64>)> {
     }
     let terms = basis(degree);
     let k = terms.len();
+    debug_assert_eq!(terms, TERMS[..k]);
     let pu: Vec<[f64; 4]> = (0..f.nx).map(|i| legendre(coordinate(i, f.nx))).collect();
     // Normal equations per row (in row order, so the sums do not depend on threads).
     let rows: Vec<(Vec<f64>, Vec<f64>)> = f
-        .rows()
+        .heights
+        .par_chunks(f.nx)
         .enumerate()
-        .collect::<Vec<_>>()
-        .par_iter()
-        .map(|&(iy, row)| {
+        .map(|(iy, row)| {
             let pv = legendre(coordinate(iy, f.ny));
-            let mut ata = vec![0.0; k * k];
-            let mut atb = vec![0.0; k];
-            let mut phi = vec![0.0; k];
-            for (ix, &h) in row.iter().enumerate() {
-                if h.is_nan() {
-                    continue;
-                }
-                for (p, &(a, b)) in phi.iter_mut().zip(&terms) {
-                    *p = pu[ix][a] * pv[b];
-                }
-                for r in 0..k {
-                    atb[r] += phi[r] * h;
-                    for c in r..k {
-                        ata[r * k + c] += phi[r] * phi[c];
-                    }
-                }
+            match degree {
+                1 => normal_equations::<3>(row, &pu, pv),
+                2 => normal_equations::<6>(row, &pu, pv),
+                _ => normal_equations::<10>(row, &pu, pv),
             }
-            (ata, atb)
         })
         .collect();
     let mut ata = DMatrix::<f64>::zeros(k, k);
@@ -118,30 +128,65 @@ pub fn level(f: &ScanField, degree: u32) -> Result<(ScanField, Vec<f64>)> {
     if coef.iter().any(|c| !c.is_finite()) {
         return Err(refuse());
     }
-    let mut heights = f.heights.clone();
-    heights
+    let ny = f.ny;
+    let coef: Vec<f64> = coef.iter().copied().collect();
+    f.heights
         .par_chunks_mut(f.nx)
         .enumerate()
         .for_each(|(iy, row)| {
-            let pv = legendre(coordinate(iy, f.ny));
-            for (ix, h) in row.iter_mut().enumerate() {
-                if !h.is_nan() {
-                    let form: f64 = terms
-                        .iter()
-                        .zip(coef.iter())
-                        .map(|(&(a, b), c)| c * pu[ix][a] * pv[b])
-                        .sum();
-                    *h -= form;
-                }
+            let pv = legendre(coordinate(iy, ny));
+            match degree {
+                1 => subtract::<3>(row, &pu, pv, &coef),
+                2 => subtract::<6>(row, &pu, pv, &coef),
+                _ => subtract::<10>(row, &pu, pv, &coef),
             }
         });
-    Ok((
-        ScanField {
-            heights,
-            ..f.clone()
-        },
-        coef.iter().copied().collect(),
-    ))
+    Ok(coef)
+}
+
+/// The basis functions `P_a(u) P_b(v)` of the first `K` terms at one node.
+#[inline(always)]
+fn phi<const K: usize>(pu: &[f64; 4], pv: &[f64; 4]) -> [f64; K] {
+    std::array::from_fn(|t| pu[TERMS[t].0] * pv[TERMS[t].1])
+}
+
+/// The normal equations' `AᵀA` (upper triangle, row-major `K × K`) and `Aᵀh` of one row of
+/// heights, summed in node order.
+fn normal_equations<const K: usize>(
+    row: &[f64],
+    pu: &[[f64; 4]],
+    pv: [f64; 4],
+) -> (Vec<f64>, Vec<f64>) {
+    let mut ata = [[0.0; K]; K];
+    let mut atb = [0.0; K];
+    for (&h, pu) in row.iter().zip(pu) {
+        if h.is_nan() {
+            continue;
+        }
+        let p: [f64; K] = phi(pu, &pv);
+        for r in 0..K {
+            atb[r] += p[r] * h;
+            for c in r..K {
+                ata[r][c] += p[r] * p[c];
+            }
+        }
+    }
+    (ata.concat(), atb.to_vec())
+}
+
+/// Subtracts the polynomial of coefficients `coef` from one row of heights.
+fn subtract<const K: usize>(row: &mut [f64], pu: &[[f64; 4]], pv: [f64; 4], coef: &[f64]) {
+    let coef = &coef[..K];
+    for (h, pu) in row.iter_mut().zip(pu) {
+        if !h.is_nan() {
+            // Σ c·P_a(u)·P_b(v), term by term in basis order.
+            let mut form = coef[0] * pu[TERMS[0].0] * pv[TERMS[0].1];
+            for t in 1..K {
+                form += coef[t] * pu[TERMS[t].0] * pv[TERMS[t].1];
+            }
+            *h -= form;
+        }
+    }
 }
 
 #[cfg(test)]

@@ -33,66 +33,70 @@ pub struct AreaParameters {
 
 /// [`AreaParameters`] of a scan (level it first: [`super::levelling::level`]).
 pub fn area_parameters(f: &ScanField) -> AreaParameters {
-    // Row partial sums, added in row order: the same bits for any thread count. Two passes:
-    // the mean, then the three central moments together.
-    let sums = |g: &(dyn Fn(f64) -> [f64; 3] + Sync)| -> [f64; 3] {
-        let rows: Vec<[f64; 3]> = f
-            .heights
-            .par_chunks(f.nx)
-            .map(|row| {
-                row.iter()
-                    .filter(|h| !h.is_nan())
-                    .fold([0.0; 3], |mut a, &h| {
-                        let v = g(h);
-                        for k in 0..3 {
-                            a[k] += v[k];
-                        }
-                        a
-                    })
-            })
-            .collect();
-        rows.iter().fold([0.0; 3], |mut a, r| {
+    // Row partial sums, each in node order, added in row order: the same bits for any thread
+    // count. Two passes: the count and mean, then the three central moments together with
+    // the gradients (of the row and the next one).
+    let rows: Vec<(usize, f64)> = f
+        .heights
+        .par_chunks(f.nx)
+        .map(|row| {
+            row.iter()
+                .filter(|h| !h.is_nan())
+                .fold((0, 0.0), |(n, s), &h| (n + 1, s + h))
+        })
+        .collect();
+    let (n, sum) = rows
+        .iter()
+        .fold((0, 0.0), |(n, s), &(rn, rs)| (n + rn, s + rs));
+    let mean = sum / n as f64;
+    let rows: Vec<([f64; 3], (f64, f64, usize))> = (0..f.ny)
+        .into_par_iter()
+        .map(|iy| {
+            let row = &f.heights[iy * f.nx..(iy + 1) * f.nx];
+            let mut m = [0.0; 3];
+            for &h in row.iter().filter(|h| !h.is_nan()) {
+                let d = h - mean;
+                m[0] += d * d;
+                m[1] += d.powi(3);
+                m[2] += d.powi(4);
+            }
+            // Forward differences to the next node along x and along y, both valid.
+            let (mut sx, mut sz, mut k) = (0.0, 0.0, 0usize);
+            if iy + 1 < f.ny {
+                let next = &f.heights[(iy + 1) * f.nx..(iy + 2) * f.nx];
+                for ix in 0..f.nx - 1 {
+                    let (h, hx, hz) = (row[ix], row[ix + 1], next[ix]);
+                    if h.is_nan() || hx.is_nan() || hz.is_nan() {
+                        continue;
+                    }
+                    let gx = (hx - h) / f.dx;
+                    let gz = (hz - h) / f.dy;
+                    sx += gx * gx;
+                    sz += gz * gz;
+                    k += 1;
+                }
+            }
+            (m, (sx, sz, k))
+        })
+        .collect();
+    let [m2, m3, m4] = rows
+        .iter()
+        .fold([0.0; 3], |mut a, (r, _)| {
             for k in 0..3 {
                 a[k] += r[k];
             }
             a
         })
-    };
-    let n = f.valid_count();
-    let mean = sums(&|h| [h, 0.0, 0.0])[0] / n as f64;
-    let [m2, m3, m4] = sums(&|h| {
-        let d = h - mean;
-        [d * d, d.powi(3), d.powi(4)]
-    })
-    .map(|s| s / n as f64);
+        .map(|s| s / n as f64);
     let sq = m2.sqrt();
     let (ssk, sku) = if m2 > 0.0 {
         (m3 / m2.powf(1.5), m4 / (m2 * m2))
     } else {
         (0.0, 0.0)
     };
-    let rows: Vec<(f64, f64, usize)> = (0..f.ny - 1)
-        .into_par_iter()
-        .map(|iy| {
-            let (mut sx, mut sz, mut k) = (0.0, 0.0, 0usize);
-            for ix in 0..f.nx - 1 {
-                let (Some(h), Some(hx), Some(hz)) =
-                    (f.at(ix, iy), f.at(ix + 1, iy), f.at(ix, iy + 1))
-                else {
-                    continue;
-                };
-                let gx = (hx - h) / f.dx;
-                let gz = (hz - h) / f.dy;
-                sx += gx * gx;
-                sz += gz * gz;
-                k += 1;
-            }
-            (sx, sz, k)
-        })
-        .collect();
     let (sx, sz, k) = rows
         .iter()
-        .fold((0.0, 0.0, 0), |a, r| (a.0 + r.0, a.1 + r.1, a.2 + r.2));
+        .fold((0.0, 0.0, 0), |a, (_, r)| (a.0 + r.0, a.1 + r.1, a.2 + r.2));
     let per = |s: f64| (k > 0).then(|| (s / k as f64).sqrt());
     AreaParameters {
         valid_points: n,

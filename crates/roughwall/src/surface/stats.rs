@@ -50,6 +50,21 @@ impl Histogram {
         }
     }
 
+    /// [`Histogram::add`] of every value of `xs`.
+    #[inline(always)]
+    pub(crate) fn add_all(&mut self, xs: &[f64]) {
+        let n = self.counts.len();
+        let (half, scale) = (self.half_range, 0.5 * n as f64 / self.half_range);
+        for &x in xs {
+            let u = (x + half) * scale;
+            if u >= 0.0 && u < n as f64 {
+                self.counts[u as usize] += 1;
+            } else {
+                self.outside += 1;
+            }
+        }
+    }
+
     pub(crate) fn merge(&mut self, o: &Self) {
         for (a, b) in self.counts.iter_mut().zip(&o.counts) {
             *a += b;
@@ -287,9 +302,9 @@ fn row_gradients(f: &HeightField, iz: usize, gx: &mut [f64], gz: &mut [f64]) {
 
 /// Lanes of the partial sums: a fixed width, so the summation order (and thus every
 /// bit of the result) does not depend on the CPU's vector width.
-const LANES: usize = 8;
+pub(crate) const LANES: usize = 8;
 
-type Lanes = [f64; LANES];
+pub(crate) type Lanes = [f64; LANES];
 
 /// `LANES` triangles: unit normals, `η`, and the squared slopes added to `acc`.
 #[inline(always)]
@@ -574,7 +589,7 @@ fn run_chunk(
 /// exceeds 0.5 in magnitude (nearly always for walls of low roughness) the reduction
 /// branch and its square root are skipped for the whole block.
 #[inline(always)]
-fn asin_lanes(x: &Lanes, out: &mut Lanes) {
+pub(crate) fn asin_lanes(x: &Lanes, out: &mut Lanes) {
     let mut big = false;
     for v in x {
         big |= v.abs() > 0.5;

@@ -18,7 +18,7 @@
 
 use super::ScanField;
 // Branch-free asin, 1e-15 absolute: the per-triangle angles are the scan's hot loop.
-use crate::surface::stats::asin_fast;
+use crate::surface::stats::{asin_fast, asin_lanes, Lanes, LANES};
 use crate::surface::stats::{Histogram, HistogramSpec};
 use rayon::prelude::*;
 
@@ -44,54 +44,212 @@ pub struct Lay {
     pub delta_scan_axes: [f64; 2],
 }
 
-/// The upward unit normals' `(n·x, n·y)` of the valid triangles of cell row `iy`, passed to
-/// `visit`.
-fn row_normals(f: &ScanField, iy: usize, mut visit: impl FnMut(f64, f64)) {
-    let (dx, dy) = (f.dx, f.dy);
-    for ix in 0..f.nx - 1 {
-        let (Some(h00), Some(h10), Some(h01), Some(h11)) = (
-            f.at(ix, iy),
-            f.at(ix + 1, iy),
-            f.at(ix, iy + 1),
-            f.at(ix + 1, iy + 1),
-        ) else {
-            continue;
-        };
-        // Gradients (∂h/∂x, ∂h/∂y) of the two triangles: split along (0,0)–(1,1) when
-        // ix + iy is even, along (1,0)–(0,1) otherwise.
-        let grads = if (ix + iy).is_multiple_of(2) {
-            [
-                ((h10 - h00) / dx, (h11 - h10) / dy),
-                ((h11 - h01) / dx, (h01 - h00) / dy),
-            ]
+/// The upward unit normals `n` of the valid triangles of one cell row, as `(a, b) = (n·x,
+/// n·y)`: `a[0][i]`, `b[0][i]` of the first triangle of the row's `i`-th cell with four
+/// valid corners, `a[1][i]`, `b[1][i]` of its second; a pass takes them in that order (cell
+/// by cell, first triangle first). With room for what a pass computes from them.
+#[derive(Default)]
+struct RowBuf {
+    a: [Vec<f64>; 2],
+    b: [Vec<f64>; 2],
+    /// `(h[ix, iy+1] − h[ix, iy])/dy` along the row.
+    dy: Vec<f64>,
+    /// Per-triangle values of a pass (angles), as `a` and `b`.
+    v: [[Vec<f64>; 2]; 4],
+}
+
+impl RowBuf {
+    /// Valid cells of the row.
+    fn cells(&self) -> usize {
+        self.a[0].len()
+    }
+
+    /// The normals of cell row `iy` (`iy + 1 < f.ny`).
+    #[inline(always)]
+    fn fill(&mut self, f: &ScanField, iy: usize) {
+        let (nx, dx, dy) = (f.nx, f.dx, f.dy);
+        let r0 = &f.heights[iy * nx..(iy + 1) * nx];
+        let r1 = &f.heights[(iy + 1) * nx..(iy + 2) * nx];
+        let [a0, a1] = &mut self.a;
+        let [b0, b1] = &mut self.b;
+        for v in [&mut *a0, &mut *a1, &mut *b0, &mut *b1] {
+            v.clear();
+        }
+        // Gradients (∂h/∂x, ∂h/∂y) of the two triangles of each cell: split along
+        // (0,0)–(1,1) when ix + iy is even, along (1,0)–(0,1) otherwise.
+        if r0.iter().chain(r1).fold(false, |m, h| m | h.is_nan()) {
+            // Cells with a missing corner drop out.
+            for ix in 0..nx - 1 {
+                let (h00, h10, h01, h11) = (r0[ix], r0[ix + 1], r1[ix], r1[ix + 1]);
+                if h00.is_nan() || h10.is_nan() || h01.is_nan() || h11.is_nan() {
+                    continue;
+                }
+                let [(g0x, g0y), (g1x, g1y)] = if (ix + iy).is_multiple_of(2) {
+                    [
+                        ((h10 - h00) / dx, (h11 - h10) / dy),
+                        ((h11 - h01) / dx, (h01 - h00) / dy),
+                    ]
+                } else {
+                    [
+                        ((h10 - h00) / dx, (h01 - h00) / dy),
+                        ((h11 - h01) / dx, (h11 - h10) / dy),
+                    ]
+                };
+                a0.push(g0x);
+                b0.push(g0y);
+                a1.push(g1x);
+                b1.push(g1y);
+            }
         } else {
-            [
-                ((h10 - h00) / dx, (h01 - h00) / dy),
-                ((h11 - h01) / dx, (h11 - h10) / dy),
-            ]
-        };
-        for (gx, gy) in grads {
-            // n ∝ (−∂h/∂x, −∂h/∂y, 1); a = n·x, b = n·y.
-            let norm = (1.0 + gx * gx + gy * gy).sqrt();
-            visit(-gx / norm, -gy / norm);
+            // Every cell: the same differences, taken along whole rows.
+            let m = nx - 1;
+            self.dy.clear();
+            self.dy
+                .extend(r0.iter().zip(r1).map(|(&h0, &h1)| (h1 - h0) / dy));
+            for v in [&mut *a0, &mut *a1, &mut *b0, &mut *b1] {
+                v.resize(m, 0.0);
+            }
+            let (left, right) = (&self.dy[..m], &self.dy[1..]);
+            let (h00, h10, h01, h11) = (&r0[..m], &r0[1..], &r1[..m], &r1[1..]);
+            for (g, (hi, lo)) in a0.iter_mut().zip(h10.iter().zip(h00)) {
+                *g = (hi - lo) / dx;
+            }
+            for (g, (hi, lo)) in a1.iter_mut().zip(h11.iter().zip(h01)) {
+                *g = (hi - lo) / dx;
+            }
+            // Cell ix + iy even: the first triangle takes the right edge's y-difference.
+            let odd = iy % 2;
+            for (ix, ((g0, g1), (&l, &r))) in b0
+                .iter_mut()
+                .zip(b1.iter_mut())
+                .zip(left.iter().zip(right))
+                .enumerate()
+            {
+                let even = ix % 2 == odd;
+                *g0 = if even { r } else { l };
+                *g1 = if even { l } else { r };
+            }
+        }
+        // n ∝ (−∂h/∂x, −∂h/∂y, 1).
+        for t in 0..2 {
+            for (a, b) in self.a[t].iter_mut().zip(self.b[t].iter_mut()) {
+                let (gx, gy) = (*a, *b);
+                let norm = (1.0 + gx * gx + gy * gy).sqrt();
+                *a = -gx / norm;
+                *b = -gy / norm;
+            }
+        }
+    }
+
+    /// `v[k][t][i] = −asin((a·c + b·s) clamped to [−1, 1]) − shift` for every triangle.
+    #[inline(always)]
+    fn neg_asin(&mut self, k: usize, c: f64, s: f64, shift: f64) {
+        for t in 0..2 {
+            let (a, b, v) = (&self.a[t], &self.b[t], &mut self.v[k][t]);
+            v.clear();
+            v.extend(
+                a.iter()
+                    .zip(b)
+                    .map(|(&a, &b)| (a * c + b * s).clamp(-1.0, 1.0)),
+            );
+            neg_asin_in_place(v, shift);
         }
     }
 }
 
-/// Sums per row, added in row order (the same bits for any thread count).
-fn row_sums<const K: usize>(
+impl RowBuf {
+    /// `v[k][t][i] = −asin(b) − shift` (`of_b`) or `−asin(a) − shift` for every triangle.
+    #[inline(always)]
+    fn neg_asin_of(&mut self, k: usize, of_b: bool, shift: f64) {
+        for t in 0..2 {
+            let src = if of_b { &self.b[t] } else { &self.a[t] };
+            let v = &mut self.v[k][t];
+            v.clear();
+            v.extend_from_slice(src);
+            neg_asin_in_place(v, shift);
+        }
+    }
+}
+
+/// `x ← −asin x − shift`, [`asin_fast`] bit for bit, [`LANES`] values at a time.
+#[inline(always)]
+fn neg_asin_in_place(v: &mut [f64], shift: f64) {
+    let mut blocks = v.chunks_exact_mut(LANES);
+    for x in &mut blocks {
+        let lanes: &mut Lanes = x.try_into().expect("chunks_exact yields LANES values");
+        let mut y = [0.0; LANES];
+        asin_lanes(lanes, &mut y);
+        for l in 0..LANES {
+            lanes[l] = -y[l] - shift;
+        }
+    }
+    for x in blocks.into_remainder() {
+        *x = -asin_fast(*x) - shift;
+    }
+}
+
+/// One pass's work on one cell row (its normals in a [`RowBuf`]).
+trait RowKernel {
+    type Out;
+    /// Implementations are `#[inline(always)]`, so that [`run_row`] compiles them for AVX2.
+    fn row(&mut self, f: &ScanField, iy: usize, buf: &mut RowBuf) -> Self::Out;
+}
+
+/// `kernel` on cell row `iy`, compiled once for the baseline CPU and once with AVX2 (chosen
+/// at run time); no fused multiply-adds are used, so both give the same bits.
+fn run_row<K: RowKernel>(kernel: &mut K, f: &ScanField, iy: usize, buf: &mut RowBuf) -> K::Out {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU supports AVX2 (checked just above).
+        return unsafe { run_row_avx2(kernel, f, iy, buf) };
+    }
+    kernel.row(f, iy, buf)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn run_row_avx2<K: RowKernel>(
+    kernel: &mut K,
     f: &ScanField,
-    per: impl Fn(f64, f64, &mut [f64; K]) + Sync,
-) -> [f64; K] {
-    let rows: Vec<[f64; K]> = (0..f.ny - 1)
+    iy: usize,
+    buf: &mut RowBuf,
+) -> K::Out {
+    kernel.row(f, iy, buf)
+}
+
+/// Sums over the triangles, `per(a, b, sums)` for each in turn.
+#[derive(Clone)]
+struct Sums<F, const K: usize>(F);
+
+impl<F: Fn(f64, f64, &mut [f64; K]), const K: usize> RowKernel for Sums<F, K> {
+    type Out = [f64; K];
+    #[inline(always)]
+    fn row(&mut self, f: &ScanField, iy: usize, buf: &mut RowBuf) -> [f64; K] {
+        buf.fill(f, iy);
+        let mut s = [0.0; K];
+        for i in 0..buf.cells() {
+            for t in 0..2 {
+                (self.0)(buf.a[t][i], buf.b[t][i], &mut s);
+            }
+        }
+        s
+    }
+}
+
+/// Row partial sums of `kernel`, each over the row's triangles in order, added in row
+/// order (the same bits for any thread count).
+fn row_sums<K, const N: usize>(f: &ScanField, kernel: K) -> [f64; N]
+where
+    K: RowKernel<Out = [f64; N]> + Clone + Send + Sync,
+{
+    let rows: Vec<[f64; N]> = (0..f.ny - 1)
         .into_par_iter()
-        .map(|iy| {
-            let mut s = [0.0; K];
-            row_normals(f, iy, |a, b| per(a, b, &mut s));
-            s
-        })
+        .map_init(
+            || (kernel.clone(), RowBuf::default()),
+            |(k, buf), iy| run_row(k, f, iy, buf),
+        )
         .collect();
-    rows.iter().fold([0.0; K], |mut acc, r| {
+    rows.iter().fold([0.0; N], |mut acc, r| {
         for (a, x) in acc.iter_mut().zip(r) {
             *a += x;
         }
@@ -123,14 +281,17 @@ struct MeanNormal {
 /// [`lay_angle`] and the mean normal, from one pass over the triangles.
 fn angle_and_mean(f: &ScanField) -> Option<(f64, MeanNormal)> {
     // The covariance of (a, b).
-    let [n, sa, sb, saa, sbb, sab] = row_sums::<6>(f, |a, b, s| {
-        s[0] += 1.0;
-        s[1] += a;
-        s[2] += b;
-        s[3] += a * a;
-        s[4] += b * b;
-        s[5] += a * b;
-    });
+    let [n, sa, sb, saa, sbb, sab] = row_sums(
+        f,
+        Sums(|a: f64, b: f64, s: &mut [f64; 6]| {
+            s[0] += 1.0;
+            s[1] += a;
+            s[2] += b;
+            s[3] += a * a;
+            s[4] += b * b;
+            s[5] += a * b;
+        }),
+    );
     if n < 2.0 {
         return None;
     }
@@ -150,11 +311,14 @@ fn angle_and_mean(f: &ScanField) -> Option<(f64, MeanNormal)> {
 /// its `y`; [`lay_angle`] for the scan's own lay, or the lay of another surface, e.g. the
 /// scan a sphere's centre surface came from); `None` with fewer than two triangles.
 pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
-    let [n, sa, sb] = row_sums::<3>(f, |a, b, s| {
-        s[0] += 1.0;
-        s[1] += a;
-        s[2] += b;
-    });
+    let [n, sa, sb] = row_sums(
+        f,
+        Sums(|a: f64, b: f64, s: &mut [f64; 3]| {
+            s[0] += 1.0;
+            s[1] += a;
+            s[2] += b;
+        }),
+    );
     if n < 2.0 {
         return None;
     }
@@ -169,6 +333,53 @@ pub fn lay_at(f: &ScanField, angle: f64) -> Option<Lay> {
     ))
 }
 
+/// The sums of the moments of [`moments_at`] over the triangles: of `ξ' − ξ'₀` (powers 1 to
+/// 4), of `ζ' − ζ'₀` (1 to 4), their product, and of the angles along the scan's `x` and `y`
+/// less theirs (powers 1 and 2), `ξ'₀` … the angles of the mean normal (`shift`).
+#[derive(Clone)]
+struct Moments {
+    c: f64,
+    s: f64,
+    shift: [f64; 4],
+}
+
+impl RowKernel for Moments {
+    type Out = [f64; 13];
+    #[inline(always)]
+    fn row(&mut self, f: &ScanField, iy: usize, buf: &mut RowBuf) -> [f64; 13] {
+        let (c, s) = (self.c, self.s);
+        let [xi0, zeta0, xa0, yb0] = self.shift;
+        buf.fill(f, iy);
+        // ξ' = −asin(n·l), ζ' = −asin(n·t); along the scan's axes −asin(a), −asin(b).
+        buf.neg_asin(0, c, s, xi0);
+        buf.neg_asin(1, -s, c, zeta0);
+        buf.neg_asin_of(2, false, xa0);
+        buf.neg_asin_of(3, true, yb0);
+        let [xi, zeta, xa, yb] = &buf.v;
+        let mut acc = [0.0; 13];
+        for i in 0..buf.cells() {
+            for t in 0..2 {
+                let (xi, zeta) = (xi[t][i], zeta[t][i]);
+                acc[0] += xi;
+                acc[1] += xi * xi;
+                acc[2] += xi * xi * xi;
+                acc[3] += xi * xi * xi * xi;
+                acc[4] += zeta;
+                acc[5] += zeta * zeta;
+                acc[6] += zeta * zeta * zeta;
+                acc[7] += zeta * zeta * zeta * zeta;
+                acc[8] += xi * zeta;
+                let (xa, yb) = (xa[t][i], yb[t][i]);
+                acc[9] += xa;
+                acc[10] += xa * xa;
+                acc[11] += yb;
+                acc[12] += yb * yb;
+            }
+        }
+        acc
+    }
+}
+
 /// The deviations along and across `angle`, about the mean normal `mean` (at least two
 /// triangles).
 fn moments_at(f: &ScanField, angle: f64, mean: MeanNormal) -> Lay {
@@ -179,24 +390,14 @@ fn moments_at(f: &ScanField, angle: f64, mean: MeanNormal) -> Lay {
     let xi0 = -(ma * c + mb * s).clamp(-1.0, 1.0).asin();
     let zeta0 = -(-ma * s + mb * c).clamp(-1.0, 1.0).asin();
     let (xa0, yb0) = (-ma.clamp(-1.0, 1.0).asin(), -mb.clamp(-1.0, 1.0).asin());
-    let m = row_sums::<13>(f, |a, b, acc| {
-        let xi = -asin_fast((a * c + b * s).clamp(-1.0, 1.0)) - xi0;
-        let zeta = -asin_fast((-a * s + b * c).clamp(-1.0, 1.0)) - zeta0;
-        acc[0] += xi;
-        acc[1] += xi * xi;
-        acc[2] += xi * xi * xi;
-        acc[3] += xi * xi * xi * xi;
-        acc[4] += zeta;
-        acc[5] += zeta * zeta;
-        acc[6] += zeta * zeta * zeta;
-        acc[7] += zeta * zeta * zeta * zeta;
-        acc[8] += xi * zeta;
-        let (xa, yb) = (-asin_fast(a) - xa0, -asin_fast(b) - yb0);
-        acc[9] += xa;
-        acc[10] += xa * xa;
-        acc[11] += yb;
-        acc[12] += yb * yb;
-    });
+    let m = row_sums(
+        f,
+        Moments {
+            c,
+            s,
+            shift: [xi0, zeta0, xa0, yb0],
+        },
+    );
     let (mxi, vxi, skx, kux) = moments4(n, &m[0..4]);
     let (mze, vze, skz, kuz) = moments4(n, &m[4..8]);
     let cov = m[8] / n - mxi * mze;
@@ -237,18 +438,20 @@ pub fn angle_histograms(f: &ScanField, angle: f64, spec: HistogramSpec) -> [Hist
     let blocks: Vec<[Histogram; 2]> = (0..cell_rows.div_ceil(HISTOGRAM_ROWS))
         .into_par_iter()
         .map(|b| {
-            let mut h = [
-                Histogram::new(spec.half_range, bins),
-                Histogram::new(spec.half_range, bins),
-            ];
+            let mut kernel = Binned {
+                c,
+                s,
+                h: [
+                    Histogram::new(spec.half_range, bins),
+                    Histogram::new(spec.half_range, bins),
+                ],
+            };
+            let mut buf = RowBuf::default();
             let rows = b * HISTOGRAM_ROWS..((b + 1) * HISTOGRAM_ROWS).min(cell_rows);
             for iy in rows {
-                row_normals(f, iy, |a, bb| {
-                    h[0].add(-asin_fast((a * c + bb * s).clamp(-1.0, 1.0)));
-                    h[1].add(-asin_fast((-a * s + bb * c).clamp(-1.0, 1.0)));
-                });
+                run_row(&mut kernel, f, iy, &mut buf);
             }
-            h
+            kernel.h
         })
         .collect();
     let mut out = [
@@ -260,6 +463,27 @@ pub fn angle_histograms(f: &ScanField, angle: f64, spec: HistogramSpec) -> [Hist
         out[1].merge(&block[1]);
     }
     out
+}
+
+/// The histograms of [`angle_histograms`] (`c`, `s`: the cosine and sine of the direction).
+struct Binned {
+    c: f64,
+    s: f64,
+    h: [Histogram; 2],
+}
+
+impl RowKernel for Binned {
+    type Out = ();
+    #[inline(always)]
+    fn row(&mut self, f: &ScanField, iy: usize, buf: &mut RowBuf) {
+        buf.fill(f, iy);
+        buf.neg_asin(0, self.c, self.s, 0.0);
+        buf.neg_asin(1, -self.s, self.c, 0.0);
+        for (h, [v0, v1]) in self.h.iter_mut().zip(&buf.v) {
+            h.add_all(v0);
+            h.add_all(v1);
+        }
+    }
 }
 
 /// Mean, variance, skewness and kurtosis from the raw sums `Σx, Σx², Σx³, Σx⁴` of `n`
@@ -416,5 +640,125 @@ mod tests {
         assert_eq!(holed.triangles, 16);
         let none = ScanField::new(2, 2, 1.0, 1.0, vec![0.0, 0.0, 0.0, f64::NAN]).unwrap();
         assert_eq!(lay(&none), None);
+    }
+
+    /// The normals of cell row `iy` cell by cell, as the triangles were first walked: the
+    /// reference the row kernels must match bit for bit.
+    fn reference_normals(f: &ScanField, iy: usize) -> Vec<(f64, f64)> {
+        let (dx, dy) = (f.dx, f.dy);
+        let mut out = Vec::new();
+        for ix in 0..f.nx - 1 {
+            let (Some(h00), Some(h10), Some(h01), Some(h11)) = (
+                f.at(ix, iy),
+                f.at(ix + 1, iy),
+                f.at(ix, iy + 1),
+                f.at(ix + 1, iy + 1),
+            ) else {
+                continue;
+            };
+            let grads = if (ix + iy).is_multiple_of(2) {
+                [
+                    ((h10 - h00) / dx, (h11 - h10) / dy),
+                    ((h11 - h01) / dx, (h01 - h00) / dy),
+                ]
+            } else {
+                [
+                    ((h10 - h00) / dx, (h01 - h00) / dy),
+                    ((h11 - h01) / dx, (h11 - h10) / dy),
+                ]
+            };
+            for (gx, gy) in grads {
+                let norm = (1.0 + gx * gx + gy * gy).sqrt();
+                out.push((-gx / norm, -gy / norm));
+            }
+        }
+        out
+    }
+
+    /// Rows with and without missing points, steep and gentle: the row kernels (whole-row
+    /// differences, angles [`LANES`] at a time, compiled for AVX2 where the CPU has it) give
+    /// the bits of the triangle-by-triangle reference with [`asin_fast`], and the same bits
+    /// compiled for the baseline CPU.
+    #[test]
+    fn row_kernels_give_the_bits_of_the_triangle_by_triangle_reference() {
+        let g = crate::surface::scan::tests::sec3_wall(67, 2);
+        let mut h: Vec<f64> = g.heights.iter().map(|h| 8.0 * h).collect();
+        for k in [5, 67 * 7, 67 * 7 + 66, 67 * 30 + 31] {
+            h[k] = f64::NAN;
+        }
+        let f = ScanField::new(g.nx, g.nz, g.dx, g.dz, h).unwrap();
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        let (angle, shift) = (0.3f64, [0.01, -0.02, 0.003, 0.0]);
+        let (c, s) = (angle.cos(), angle.sin());
+        let moments = Moments { c, s, shift };
+        let spec = (0.5, 37);
+        let binned = || Binned {
+            c,
+            s,
+            h: [
+                Histogram::new(spec.0, spec.1),
+                Histogram::new(spec.0, spec.1),
+            ],
+        };
+        let (mut dispatched, mut generic) = (binned(), binned());
+        let mut reference_hists = binned().h;
+        let mut steep = 0;
+        for iy in 0..f.ny - 1 {
+            let normals = reference_normals(&f, iy);
+            let mut buf = RowBuf::default();
+            buf.fill(&f, iy);
+            let filled: Vec<(f64, f64)> = (0..buf.cells())
+                .flat_map(|i| [(buf.a[0][i], buf.b[0][i]), (buf.a[1][i], buf.b[1][i])])
+                .collect();
+            assert_eq!(
+                bits(&filled.iter().flat_map(|&(a, b)| [a, b]).collect::<Vec<_>>()),
+                bits(
+                    &normals
+                        .iter()
+                        .flat_map(|&(a, b)| [a, b])
+                        .collect::<Vec<_>>()
+                ),
+                "row {iy}"
+            );
+            let mut acc = [0.0; 13];
+            for &(a, b) in &normals {
+                let xi = -asin_fast((a * c + b * s).clamp(-1.0, 1.0)) - shift[0];
+                let zeta = -asin_fast((-a * s + b * c).clamp(-1.0, 1.0)) - shift[1];
+                steep += usize::from((-a * s + b * c).abs() > 0.5);
+                acc[0] += xi;
+                acc[1] += xi * xi;
+                acc[2] += xi * xi * xi;
+                acc[3] += xi * xi * xi * xi;
+                acc[4] += zeta;
+                acc[5] += zeta * zeta;
+                acc[6] += zeta * zeta * zeta;
+                acc[7] += zeta * zeta * zeta * zeta;
+                acc[8] += xi * zeta;
+                let (xa, yb) = (-asin_fast(a) - shift[2], -asin_fast(b) - shift[3]);
+                acc[9] += xa;
+                acc[10] += xa * xa;
+                acc[11] += yb;
+                acc[12] += yb * yb;
+                reference_hists[0].add(-asin_fast((a * c + b * s).clamp(-1.0, 1.0)));
+                reference_hists[1].add(-asin_fast((-a * s + b * c).clamp(-1.0, 1.0)));
+            }
+            let mut buf = RowBuf::default();
+            assert_eq!(
+                bits(&run_row(&mut moments.clone(), &f, iy, &mut buf)),
+                bits(&acc),
+                "row {iy}"
+            );
+            assert_eq!(
+                bits(&moments.clone().row(&f, iy, &mut buf)),
+                bits(&acc),
+                "row {iy}"
+            );
+            run_row(&mut dispatched, &f, iy, &mut buf);
+            generic.row(&f, iy, &mut buf);
+        }
+        // Both branches of the arcsine were taken.
+        assert!(steep > 100 && steep < 8000, "{steep}");
+        assert_eq!(dispatched.h, reference_hists);
+        assert_eq!(generic.h, reference_hists);
     }
 }

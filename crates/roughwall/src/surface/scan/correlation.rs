@@ -43,10 +43,8 @@ pub(crate) fn bilinear(f: &ScanField, u: f64, v: f64) -> Option<f64> {
     if !(u >= 0.0 && v >= 0.0 && u <= um * (1.0 + 1e-12) && v <= vm * (1.0 + 1e-12)) {
         return None;
     }
-    let (i, j) = (
-        (u.floor() as usize).min(f.nx - 2),
-        (v.floor() as usize).min(f.ny - 2),
-    );
+    // `u`, `v` ≥ 0: truncation is the floor (without a call to libm's floor).
+    let (i, j) = ((u as usize).min(f.nx - 2), (v as usize).min(f.ny - 2));
     let (fu, fv) = ((u - i as f64).min(1.0), (v - j as f64).min(1.0));
     let h00 = f.at(i, j)?;
     let h10 = f.at(i + 1, j)?;
@@ -55,26 +53,83 @@ pub(crate) fn bilinear(f: &ScanField, u: f64, v: f64) -> Option<f64> {
     Some((1.0 - fv) * ((1.0 - fu) * h00 + fu * h10) + fv * ((1.0 - fu) * h01 + fu * h11))
 }
 
-/// `R(τ)` along the unit vector `(cx, cy)` at lag `tau` (m), over the sample points.
-fn autocorrelation_at(f: &ScanField, stride: usize, cx: f64, cy: f64, tau: f64) -> Option<f64> {
-    let (du, dv) = (tau * cx / f.dx, tau * cy / f.dy);
-    let rows: Vec<(f64, usize)> = (0..f.ny)
+/// Lags computed together (one read of the scan's rows for all of them): at most this
+/// many past the last lag needed are computed in vain.
+const LAG_BATCH: usize = 16;
+
+/// `R(τ)` along each unit vector `(cx, cy)` of `dirs` at each lag `tau` (m) of `taus`, over
+/// the sample points: `out[d][k]`, `None` where no pair was valid. Each is summed over each
+/// sample row in node order, and the rows' sums in row order (the same bits for any thread
+/// count, and for any lags computed alongside).
+fn autocorrelations(
+    f: &ScanField,
+    stride: usize,
+    dirs: &[(f64, f64)],
+    taus: &[f64],
+) -> Vec<Vec<Option<f64>>> {
+    let shifts: Vec<(f64, f64)> = dirs
+        .iter()
+        .flat_map(|&(cx, cy)| {
+            taus.iter()
+                .map(move |&tau| (tau * cx / f.dx, tau * cy / f.dy))
+        })
+        .collect();
+    let rows: Vec<Vec<(f64, usize)>> = (0..f.ny)
         .into_par_iter()
         .step_by(stride)
         .map(|iy| {
-            let (mut s, mut n) = (0.0, 0usize);
-            for ix in (0..f.nx).step_by(stride) {
-                let Some(h) = f.at(ix, iy) else { continue };
-                if let Some(g) = bilinear(f, ix as f64 + du, iy as f64 + dv) {
-                    s += h * g;
-                    n += 1;
-                }
-            }
-            (s, n)
+            let nx = f.nx;
+            let row = &f.heights[iy * nx..(iy + 1) * nx];
+            shifts
+                .iter()
+                .map(|&(du, dv)| {
+                    // `bilinear` at (ix + du, iy + dv) for each sample ix of the row, its
+                    // checks and row interpolation along y taken once for the row.
+                    let (mut s, mut n) = (0.0, 0usize);
+                    let (um, vm) = ((nx - 1) as f64, (f.ny - 1) as f64);
+                    let v = iy as f64 + dv;
+                    if !(v >= 0.0 && v <= vm * (1.0 + 1e-12)) {
+                        return (s, n);
+                    }
+                    let j = (v as usize).min(f.ny - 2);
+                    let fv = (v - j as f64).min(1.0);
+                    let r0 = &f.heights[j * nx..(j + 1) * nx];
+                    let r1 = &f.heights[(j + 1) * nx..(j + 2) * nx];
+                    for ix in (0..nx).step_by(stride) {
+                        let h = row[ix];
+                        let u = ix as f64 + du;
+                        if h.is_nan() || !(u >= 0.0 && u <= um * (1.0 + 1e-12)) {
+                            continue;
+                        }
+                        let i = (u as usize).min(nx - 2);
+                        let fu = (u - i as f64).min(1.0);
+                        let (h00, h10, h01, h11) = (r0[i], r0[i + 1], r1[i], r1[i + 1]);
+                        if h00.is_nan() || h10.is_nan() || h01.is_nan() || h11.is_nan() {
+                            continue;
+                        }
+                        let g = (1.0 - fv) * ((1.0 - fu) * h00 + fu * h10)
+                            + fv * ((1.0 - fu) * h01 + fu * h11);
+                        s += h * g;
+                        n += 1;
+                    }
+                    (s, n)
+                })
+                .collect()
         })
         .collect();
-    let (s, n) = rows.iter().fold((0.0, 0), |a, r| (a.0 + r.0, a.1 + r.1));
-    (n > 0).then(|| s / n as f64)
+    let sums = rows.iter().fold(vec![(0.0, 0); shifts.len()], |mut a, r| {
+        for (a, r) in a.iter_mut().zip(r) {
+            *a = (a.0 + r.0, a.1 + r.1);
+        }
+        a
+    });
+    sums.chunks(taus.len().max(1))
+        .map(|d| {
+            d.iter()
+                .map(|&(s, n)| (n > 0).then(|| s / n as f64))
+                .collect()
+        })
+        .collect()
 }
 
 /// The first lag where `r` falls to `level`, linear between lags.
@@ -97,7 +152,7 @@ pub fn correlation(f: &ScanField, angle: f64) -> Correlation {
     let max_lag = 0.25 * (f.nx as f64 * f.dx).min(f.ny as f64 * f.dy);
     let (c, s) = (angle.cos(), angle.sin());
     let level = (-1.0f64).exp();
-    let r0 = autocorrelation_at(f, stride, c, s, 0.0).unwrap_or(0.0);
+    let r0 = autocorrelations(f, stride, &[(c, s)], &[0.0])[0][0].unwrap_or(0.0);
     let mut out = Correlation {
         angle,
         lags_m: vec![0.0],
@@ -109,29 +164,48 @@ pub fn correlation(f: &ScanField, angle: f64) -> Correlation {
     if r0 <= 0.0 {
         return out;
     }
+    // Lags k = 1, 2, … (τ = k·step) up to a quarter of the scan, until τ reaches twice both
+    // crossings; computed in batches, taken one by one.
     let mut k = 1usize;
-    loop {
-        let tau = k as f64 * step;
-        if tau > max_lag {
-            break;
-        }
-        let along = autocorrelation_at(f, stride, c, s, tau).map_or(f64::NAN, |r| r / r0);
-        let across = autocorrelation_at(f, stride, -s, c, tau).map_or(f64::NAN, |r| r / r0);
-        out.lags_m.push(tau);
-        out.along.push(along);
-        out.across.push(across);
-        out.length_along_m = out
-            .length_along_m
-            .or_else(|| crossing(&out.lags_m, &out.along, level));
-        out.length_across_m = out
-            .length_across_m
-            .or_else(|| crossing(&out.lags_m, &out.across, level));
-        if let (Some(a), Some(b)) = (out.length_along_m, out.length_across_m) {
-            if tau >= 2.0 * a.max(b) {
+    'lags: loop {
+        let done = |tau: f64| match (out.length_along_m, out.length_across_m) {
+            (Some(a), Some(b)) => tau >= 2.0 * a.max(b),
+            _ => false,
+        };
+        let mut taus = Vec::with_capacity(LAG_BATCH);
+        for j in k..k + LAG_BATCH {
+            let tau = j as f64 * step;
+            if tau > max_lag {
+                break;
+            }
+            taus.push(tau);
+            if done(tau) {
                 break;
             }
         }
-        k += 1;
+        if taus.is_empty() {
+            break;
+        }
+        let r = autocorrelations(f, stride, &[(c, s), (-s, c)], &taus);
+        for (j, &tau) in taus.iter().enumerate() {
+            let along = r[0][j].map_or(f64::NAN, |r| r / r0);
+            let across = r[1][j].map_or(f64::NAN, |r| r / r0);
+            out.lags_m.push(tau);
+            out.along.push(along);
+            out.across.push(across);
+            out.length_along_m = out
+                .length_along_m
+                .or_else(|| crossing(&out.lags_m, &out.along, level));
+            out.length_across_m = out
+                .length_across_m
+                .or_else(|| crossing(&out.lags_m, &out.across, level));
+            if let (Some(a), Some(b)) = (out.length_along_m, out.length_across_m) {
+                if tau >= 2.0 * a.max(b) {
+                    break 'lags;
+                }
+            }
+        }
+        k += taus.len();
     }
     out
 }

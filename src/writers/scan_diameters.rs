@@ -244,7 +244,7 @@ mod tests {
             .map(|(ix, iy)| g.heights[iy * every * g.nx + ix * every])
             .collect();
         let f = ScanField::new(nx, ny, g.dx * every as f64, g.dz * every as f64, h).unwrap();
-        characterise(&f, 1).unwrap()
+        characterise(f, 1).unwrap()
     }
 
     /// The card's rows paste into a case: a row's two deviation lines under `[wall]` give a

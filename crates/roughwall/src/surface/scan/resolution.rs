@@ -211,7 +211,7 @@ mod tests {
             .collect();
         h[ny / 2 * nx + nx / 2] += spike;
         let f = ScanField::new(nx, ny, g.dx * every as f64, g.dz * every as f64, h).unwrap();
-        characterise(&f, 1).unwrap()
+        characterise(f, 1).unwrap()
     }
 
     #[test]

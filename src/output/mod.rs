@@ -11,6 +11,21 @@ pub use self::csv::CsvTable;
 pub use self::out_dir::OutputDir;
 pub use roughwall::format::{fmt_num, fmt_opt, fmt_sci};
 
+/// A TOML string (quoted and escaped), for outputs written as commented TOML text.
+pub fn toml_str(s: &str) -> String {
+    toml::Value::String(s.to_string()).to_string()
+}
+
+/// A TOML float with at most 7 significant digits (always with a `.` or an exponent).
+pub fn toml_float(x: f64) -> String {
+    let s = fmt_num(x);
+    if s.contains(['.', 'e', 'E']) {
+        s
+    } else {
+        format!("{s}.0")
+    }
+}
+
 use roughwall::error::{Error, Result};
 use std::io::Write;
 use std::path::{Path, PathBuf};

@@ -3,7 +3,7 @@
 //! `run.toml`.
 
 use super::scan_diameters::card_tables;
-use crate::output::{fmt_num, fmt_opt, CsvTable};
+use crate::output::{fmt_num, fmt_opt, toml_float, toml_str, CsvTable};
 use roughwall::surface::scan::lay::Lay;
 use roughwall::surface::scan::resolution::SeenBy;
 use roughwall::surface::scan::Characterisation;
@@ -198,21 +198,6 @@ pub fn notes(c: &Characterisation) -> Vec<String> {
         ));
     }
     out
-}
-
-/// A TOML string (quoted and escaped).
-pub(super) fn toml_str(s: &str) -> String {
-    toml::Value::String(s.to_string()).to_string()
-}
-
-/// A TOML float with at most 7 significant digits (always with a `.` or an exponent).
-pub(super) fn toml_float(x: f64) -> String {
-    let s = fmt_num(x);
-    if s.contains(['.', 'e', 'E']) {
-        s
-    } else {
-        format!("{s}.0")
-    }
 }
 
 /// `wall_card.toml`: `[wall]` ready to paste into a case, the lay, the scan, the notes and

@@ -5,8 +5,7 @@
 //! `roughwall::surface::scan::resolution`): `wall_card_diameters.csv`, the card's
 //! `[[diameter]]` tables, the `[[diameter]]` of `run.toml` and the notes.
 
-use super::scan::{toml_float, toml_str};
-use crate::output::{fmt_num, CsvTable};
+use crate::output::{fmt_num, toml_float, toml_str, CsvTable};
 use roughwall::surface::scan::resolution::{
     SeenBy, MIN_CORRELATION_AREAS, MIN_EXACT_FRACTION, MIN_PIXELS_PER_LENGTH,
 };

@@ -320,7 +320,8 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
                 "- {s}: the mirror-tiled wall the particles met has ({x:.3}°, {z:.3}°) (its run.toml); \
                  [height map]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/height_map.svg), \
                  [slopes against the normal law]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/slope_angle_pdfs.svg), \
-                 [autocorrelation]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/autocorrelation.svg), \
+                 [autocorrelation]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/autocorrelation.svg) \
+                 and [its map with the lay]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/autocorrelation_map.svg), \
                  α⁺ on the scan against the calibrated model with the card: [PDFs]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_WITH_CARD}/calibrated/{COMPARE}/overlay_alpha_out.svg), \
                  against Gaussian walls with the tiled wall's deviations: [PDFs]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_WITH_TILED}/{STUDY_GAUSSIAN}/{COMPARE}/overlay_alpha_out.svg)."
             );

@@ -4,7 +4,7 @@
 #     ($P_NOMINAL_WALLS, name:Δξ:Δζ), the deviations as a user types them into [wall]:
 #     `deterministic` on an ensemble of $P_CALIBRATION_SURFACES surfaces built with the default
 #     `wall_deviations = "normal-angles"` (its triangles have the typed deviations) and on one
-#     built with Eq. (15) (`"eq15"`, as the papers build theirs: 0.5–2 % less), and both
+#     built with Eq. (15) (`"eq15"`, as the papers build theirs: 0.3–2.1 % less), and both
 #     stochastic models with the typed deviations against each.
 #  2. Real scans (part 7), $P_STUDY_SCANS (configs/scans/<name>.toml): `rebound scan` writes
 #     the wall card; `deterministic` bounces on the scan itself (mirror-tiled) and on Gaussian

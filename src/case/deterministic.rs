@@ -140,7 +140,7 @@ pub fn deterministic_options(case: &Case, height_file: bool) -> Result<Determini
             .as_deref()
             .unwrap_or(WallDeviations::default().name()),
         &names,
-        "\"normal-angles\" ([wall]'s deviations are those of the generated triangles' normal angles, as the models and `scan` take them; the default) or \"eq15\" (c_L = √2 h/Δ as the papers build their walls: the triangles have 0.5–2 % less)",
+        "\"normal-angles\" ([wall]'s deviations are those of the generated triangles' normal angles, as the models and `scan` take them; the default) or \"eq15\" (c_L = √2 h/Δ as the papers build their walls: the triangles have 0.3–2.1 % less)",
     )?;
     let deviations = WallDeviations::from_name(names[k])
         .ok_or_else(|| Error::Internal(format!("wall_deviations `{}`", names[k])))?;

@@ -66,7 +66,7 @@ pub fn surface_table(
             t.insert("side_per_corr_length".into(), f(opt.side_per_corr_length));
             t.insert("wall_deviations".into(), opt.deviations.name().into());
             // What the grid's triangles have on average (docs/physics.md §4): the
-            // deviations asked for with "normal-angles", 0.5–2 % less with "eq15".
+            // deviations asked for with "normal-angles", 0.3–2.1 % less with "eq15".
             let e = roughwall::surface::normal_angles::expected_deviations(
                 h,
                 [cx, cz],

@@ -60,15 +60,9 @@ pub fn relative_error_per_sqrt_area() -> f64 {
     (3.0 * std::f64::consts::PI / 16.0).sqrt()
 }
 
-/// `Δ` of a Gaussian wall's finite differences over the pixel `δ` against the wall's own,
-/// `√((1 − e^(−x²))/x²)` with `x = δ/c` (docs/physics.md §4); 1 at `x = 0`.
-pub fn finite_difference_ratio(pixel_over_length: f64) -> f64 {
-    let x2 = pixel_over_length * pixel_over_length;
-    if x2 < 1e-12 {
-        return 1.0;
-    }
-    (-(-x2).exp_m1() / x2).sqrt()
-}
+// `Δ` of a Gaussian wall's finite differences over the pixel against the wall's own: the
+// one formula of `surface::normal_angles` (docs/physics.md §4).
+pub use crate::surface::normal_angles::finite_difference_ratio;
 
 /// The footprint `√(2R·Sq) = √(D·Sq)` (m) of a sphere of diameter `diameter_m` on a wall of
 /// rms height `sq_m`: how wide the caps of its centre surface are.

@@ -6,6 +6,7 @@
 #   Debian packages (apt-get, after apt-get update, as root or through sudo):
 #     gfortran                      the Fortran example of the C library
 #     code-saturne (6.0.x)          the C library at every wall hit of a real CFD code
+#     gmsh                          the mesh of the pipe-flow study (examples/code_saturne/pipe)
 #     openfoam (v1912)              Finnie erosion reference (particleErosion)
 #     slurmctld slurmd slurm-client munge iproute2 util-linux
 #                                   shards on a local Slurm cluster
@@ -24,7 +25,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 say() { echo "install-deps: $*" >&2; }
 die() { echo "install-deps: $*" >&2; exit 1; }
 
-apt_packages=(gfortran code-saturne openfoam slurmctld slurmd slurm-client munge iproute2 util-linux)
+apt_packages=(gfortran code-saturne gmsh openfoam slurmctld slurmd slurm-client munge iproute2 util-linux)
 pip_packages=("pysand==2.0.0" numpy "surfacetopography==1.27.1")
 venv=${REBOUND_VENV:-$root/.venv}
 

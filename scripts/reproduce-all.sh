@@ -2,6 +2,10 @@
 # Regenerates every reproducible table and figure of the three papers into results/,
 # then writes results/REPORT.md. Stops at the first failure; safe to re-run.
 #   REBOUND_QUICK=1 scripts/reproduce-all.sh   # reduced mode (minutes → seconds)
+# The pipe-flow study runs in its quick mode (scripts/pipe-flow.sh --quick, about a minute, into
+# pipe-flow-quick/; the full study is scripts/pipe-flow.sh, into pipe-flow/). It needs
+# code_saturne and gmsh (scripts/install-deps.sh); REBOUND_WITHOUT_CFD=1 leaves it out (the
+# hermetic tests do, needing nothing beyond the Rust toolchain).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 export REBOUND_NESTED=1
 : > "$STAGE_LOG"
@@ -15,6 +19,12 @@ for part in radenkovic2021 wall-models calibrate measured-walls mirror hu2021 er
   echo "=== scripts/$part.sh"
   bash "$ROOT/scripts/$part.sh"
 done
+if [ "${REBOUND_WITHOUT_CFD:-0}" = 1 ]; then
+  echo "=== scripts/pipe-flow.sh --quick: left out (REBOUND_WITHOUT_CFD=1)"
+else
+  echo "=== scripts/pipe-flow.sh --quick"
+  bash "$ROOT/scripts/pipe-flow.sh" --quick
+fi
 if [ -s "$BEFORE" ]; then
   (cd "$OUT" && sha256sum --quiet -c "$BEFORE" 2>/dev/null) > "$OUT/.changed" || true
   total=$(wc -l < "$BEFORE")

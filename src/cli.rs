@@ -67,6 +67,14 @@ pub enum Command {
         after_help = "Example: rebound scan --scan wall.x3p --out results/wall/scan --diameter-um 100,500\n   then: rebound stochastic --wall-card results/wall/scan/wall_card.toml"
     )]
     Scan(ScanArgs),
+    /// Statistics of a pipe-flow study (code_saturne runs whose wall hook calls roughwall,
+    /// written by scripts/pipe-flow.sh): profiles, collision frequency, impact angles,
+    /// erosion, and the differences between walls, with standard errors.
+    #[command(
+        name = "pipe-stats",
+        after_help = "Example: rebound pipe-stats --study target/pipe-flow --out results/pipe-flow"
+    )]
+    PipeStats(PipeStatsArgs),
 }
 
 /// Options every simulation subcommand takes.
@@ -226,6 +234,16 @@ pub struct CompareArgs {
 }
 
 #[derive(Args, Debug, Clone)]
+pub struct PipeStatsArgs {
+    /// The study directory scripts/pipe-flow.sh wrote (its study.tsv lists the runs).
+    #[arg(long, value_name = "DIR")]
+    pub study: PathBuf,
+    /// Where to write the tables and figures (replaced as a whole).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+}
+
+#[derive(Args, Debug, Clone)]
 pub struct ReportArgs {
     /// Root of the reproduction outputs (as written by scripts/reproduce-all.sh).
     #[arg(long, value_name = "DIR", default_value = "results")]
@@ -245,6 +263,7 @@ impl Command {
             Command::Merge(_) => "merge",
             Command::Calibrate(_) => "calibrate",
             Command::Scan(_) => "scan",
+            Command::PipeStats(_) => "pipe-stats",
         }
     }
 }

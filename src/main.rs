@@ -7,8 +7,9 @@
 //! drives the library's tally engine with a `progress` bar, or writes and merges the shards'
 //! `partial` tallies; `writers` write each command's tables (columns named in `schema`),
 //! figures (`figures`, the one place that imports `plotters`) and `run.toml`, on the
-//! primitives of `output`; `compare` reads two runs and computes their distances; `report`
-//! writes `results/REPORT.md`. Files import each other without cycles (checked by the test
+//! primitives of `output`; `compare` reads two runs and computes their distances;
+//! `pipe_flow` reduces a code_saturne pipe-flow study (`pipe-stats`); `report` writes
+//! `results/REPORT.md`. Files import each other without cycles (checked by the test
 //! `tests/layering.rs`).
 
 mod case;
@@ -18,6 +19,7 @@ mod compare;
 mod figures;
 mod output;
 mod partial;
+mod pipe_flow;
 mod progress;
 mod report;
 mod run_context;

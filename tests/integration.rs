@@ -22,6 +22,7 @@ mod erosion_cli;
 mod force_sweep_cli;
 mod layering;
 mod out_dir_safety;
+mod pipe_stats_cli;
 mod scan_cli;
 mod scripts;
 mod shards_cli;

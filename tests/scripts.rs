@@ -18,6 +18,8 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
     let status = Command::new("bash")
         .arg(root.join("scripts/reproduce-all.sh"))
         .env("REBOUND_QUICK", "1")
+        // The pipe-flow study needs code_saturne: tests/real_systems/pipe_flow.rs runs it.
+        .env("REBOUND_WITHOUT_CFD", "1")
         .env("REBOUND_BIN", rebound_bin())
         .env("REBOUND_RESULTS", out.path())
         .status()
@@ -123,6 +125,7 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         "Finite spheres",
         "Incident spin",
         "Speed against error",
+        "Pneumatic conveying in a pipe",
     ] {
         assert!(report.contains(section), "REPORT.md lacks {section}");
     }

@@ -7,6 +7,7 @@ pub mod compare;
 pub mod deterministic;
 pub mod force_sweep;
 pub mod merge;
+pub mod pipe_stats;
 pub mod report;
 pub mod scan;
 pub mod stochastic;
@@ -201,7 +202,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Merge(a) => a.threads,
         Command::Calibrate(a) => a.common.threads,
         Command::Scan(a) => a.common.threads,
-        Command::Compare(_) | Command::Report(_) => None,
+        Command::Compare(_) | Command::Report(_) | Command::PipeStats(_) => None,
     };
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     // More threads than a few per core only cost memory (a stack each) and scheduling.
@@ -261,5 +262,6 @@ fn dispatch(cli: &Cli) -> Result<Summary> {
         Command::Merge(a) => merge::run(a),
         Command::Calibrate(a) => calibrate::run(a),
         Command::Scan(a) => scan::run(a),
+        Command::PipeStats(a) => pipe_stats::run(a),
     }
 }

@@ -9,7 +9,8 @@
 //!   shared by `deterministic`, `stochastic` and `compare`.
 //! * One module per command: [`surface`] (height map, normal-angle PDFs, effective
 //!   roughness), [`deterministic`], [`stochastic`], [`compare`] (overlays of two runs),
-//!   [`force_sweep`], [`scan`] (a measured wall's height map and slope-angle PDFs).
+//!   [`force_sweep`], [`scan`] (a measured wall's height map and slope-angle PDFs),
+//!   [`pipe_flow`] (`pipe-stats`: profiles, wall hits and erosion in a pipe).
 //! * [`png`]: the small indexed-colour PNG the height map embeds.
 //!
 //! A new figure of a command goes into that command's module, built from [`Plot`]s; the
@@ -18,6 +19,7 @@
 pub mod compare;
 pub mod deterministic;
 pub mod force_sweep;
+pub mod pipe_flow;
 pub mod plot;
 pub mod png;
 pub mod scan;

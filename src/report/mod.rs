@@ -12,6 +12,7 @@ pub mod hu2021;
 pub mod measured_walls;
 pub mod mirror;
 pub mod paths;
+pub mod pipe_flow;
 pub mod radenkovic2021;
 pub mod speed_vs_error;
 pub mod spin;
@@ -40,6 +41,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     wall_models::wall_models(results, &mut md)?;
     calibration::calibration(results, &mut md)?;
     measured_walls::measured_walls(results, &mut md)?;
+    pipe_flow::pipe_flow(results, &mut md)?;
     mirror::mirror(results, &mut md)?;
     erosion::erosion(results, &mut md)?;
     finite_size::finite_size(results, &mut md)?;

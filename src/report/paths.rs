@@ -31,6 +31,11 @@ pub const SPEED_VS_ERROR: &str = "speed-vs-error";
 pub const MIRROR: &str = "mirror";
 /// Your own wall: nominal deviations and real scans (`scripts/measured-walls.sh`).
 pub const MEASURED_WALLS: &str = "measured-walls";
+/// Pneumatic conveying in a pipe with rough walls, in code_saturne (`scripts/pipe-flow.sh`).
+pub const PIPE_FLOW: &str = "pipe-flow";
+/// The same study in quick mode (`scripts/pipe-flow.sh --quick`, what `reproduce-all.sh`
+/// runs): the report falls back on it when the full study is missing.
+pub const PIPE_FLOW_QUICK: &str = "pipe-flow-quick";
 
 /// A scene's `rebound deterministic` run.
 pub const DETERMINISTIC: &str = "deterministic";
@@ -210,7 +215,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
 #[cfg(test)]
-pub const SHELL: [(&str, &[&str]); 61] = [
+pub const SHELL: [(&str, &[&str]); 63] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -262,6 +267,8 @@ pub const SHELL: [(&str, &[&str]); 61] = [
     ("MIRROR_SEEDS", &MIRROR_SEEDS),
     ("MIRROR_SEED", &[MIRROR_SEED]),
     ("MEASURED_WALLS", &[MEASURED_WALLS]),
+    ("PIPE_FLOW", &[PIPE_FLOW]),
+    ("PIPE_FLOW_QUICK", &[PIPE_FLOW_QUICK]),
     ("NOMINAL_WALLS", &NOMINAL_WALLS),
     ("NOMINAL", &[NOMINAL]),
     ("NOMINAL_EQ15", &[NOMINAL_EQ15]),

@@ -19,6 +19,7 @@ mod common;
 mod code_saturne;
 mod erosion_references;
 mod fortran;
+mod pipe_flow;
 mod slurm;
 mod surfacetopography;
 

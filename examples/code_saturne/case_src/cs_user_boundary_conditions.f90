@@ -1,8 +1,9 @@
 !-------------------------------------------------------------------------------
 ! Fluid boundary conditions (required as no setup.xml is used).
-! All boundary faces are smooth walls: the fluid, initially at rest, stays
-! at rest. Particle boundary conditions are set separately, per boundary
-! zone, in cs_user_lagr_boundary_conditions.c.
+! All boundary faces are smooth walls: in the box cases the fluid, initially
+! at rest, stays at rest; the periodic pipe (pipe/) has no other boundary.
+! Particle boundary conditions are set separately, per boundary zone, in
+! cs_user_lagr_boundary_conditions.c.
 !-------------------------------------------------------------------------------
 subroutine cs_f_user_boundary_conditions &
  ( nvar   , nscal  ,                                              &

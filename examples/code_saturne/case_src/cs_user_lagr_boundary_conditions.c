@@ -24,6 +24,7 @@
 #include "cs_headers.h"
 #include "cs_lagr_tracking.h"
 #include "cswm_common.h"
+#include "cswm_wall_hit.h"
 
 #if CSWM_USER_MODE
 #include "roughwall.h"
@@ -169,59 +170,14 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
 {
 #if CSWM_USER_MODE
 
-  const cs_real_t bc_epsilon = 1.e-2;  /* the built-in rebound's constant */
-
-  const cs_lagr_attribute_map_t *p_am = particles->p_am;
-  unsigned char *particle = particles->p_buffer + p_am->extents * p_id;
-
-  _cs60_tracking_info_t *p_info = (_cs60_tracking_info_t *)particle;
-
-  cs_real_t *particle_coord
-    = cs_lagr_particle_attr(particle, p_am, CS_LAGR_COORDS);
   cs_real_t *particle_velocity
-    = cs_lagr_particle_attr(particle, p_am, CS_LAGR_VELOCITY);
-  cs_real_t *particle_velocity_seen
-    = cs_lagr_particle_attr(particle, p_am, CS_LAGR_VELOCITY_SEEN);
+    = cs_lagr_particles_attr(particles, p_id, CS_LAGR_VELOCITY);
   const cs_real_t diameter
-    = cs_lagr_particle_get_real(particle, p_am, CS_LAGR_DIAMETER);
+    = cs_lagr_particles_get_real(particles, p_id, CS_LAGR_DIAMETER);
 
-  /* Layout guard (6.0.x private struct): the record starts with the tracking info, and
-     c_intersect is what the tracker computed from start_coords: I = (x - start) t + start. */
+  /* 1.-2. Restart point and remaining displacement, as built in */
 
-  if (p_am->lb < sizeof(_cs60_tracking_info_t))
-    bft_error(__FILE__, __LINE__, 0,
-              "cswm: particle lower bound %d < replica tracking info size %d: "
-              "code_saturne version is not 6.0.x?",
-              (int)p_am->lb, (int)sizeof(_cs60_tracking_info_t));
-  for (int k = 0; k < 3; k++) {
-    cs_real_t d = particle_coord[k] - p_info->start_coords[k];
-    cs_real_t ik = d*t_intersect + p_info->start_coords[k];
-    if (fabs(ik - c_intersect[k]) > 1e-9 * (1. + fabs(c_intersect[k])))
-      bft_error(__FILE__, __LINE__, 0,
-                "cswm: tracking info layout mismatch (start_coords does not "
-                "reproduce c_intersect): the hook is pinned to code_saturne 6.0.x");
-  }
-
-  cs_lnum_t cell_id
-    = cs_lagr_particle_get_lnum(particle, p_am, CS_LAGR_CELL_ID);
-  const cs_real_t *cell_cen = cs_glob_mesh_quantities->cell_cen + 3*cell_id;
-
-  /* 1. Reset the tracking restart point (private start_coords) */
-
-  for (int k = 0; k < 3; k++) {
-    cs_real_t vect_cen = (cell_cen[k] - c_intersect[k]);
-    p_info->start_coords[k] = c_intersect[k] + bc_epsilon * vect_cen;
-  }
-
-  /* 2. Reflect the remaining displacement (new end point) */
-
-  cs_real_t disp[3];
-  for (int k = 0; k < 3; k++)
-    disp[k] = particle_coord[k] - c_intersect[k];
-
-  cs_real_t tmp = 2. * cs_math_3_dot_product(disp, face_norm);
-  for (int k = 0; k < 3; k++)
-    particle_coord[k] -= tmp * face_norm[k];
+  cswm_hit_begin(particles, p_id, face_norm, c_intersect, t_intersect);
 
   /* 3. Rebound velocity from the rough-wall model */
 
@@ -250,16 +206,9 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
 
   cswm_set_key(particles, p_id, pid, cidx + 1);
 
-  /* 4. Velocity seen: reflected as in the built-in rebound */
+  /* 4.-5. Velocity seen, event flag and state, as built in */
 
-  tmp = 2. * cs_math_3_dot_product(particle_velocity_seen, face_norm);
-  for (int k = 0; k < 3; k++)
-    particle_velocity_seen[k] -= tmp * face_norm[k];
-
-  /* 5. Event flag and state */
-
-  *event_flag = *event_flag | CS_EVENT_REBOUND;
-  *tracking_state = CS_LAGR_PART_TO_SYNC;
+  cswm_hit_end(particles, p_id, face_norm, event_flag, tracking_state);
 
   /* Log the hit; n_dot_outward = face_norm . (unit outward b_face_normal). */
 

@@ -1,0 +1,48 @@
+/* Lagrangian options of the pipe-flow study. The fluid run (phase 0) has no particles; the
+ * injection run (phase 1) and the particle runs (phase 2) freeze the converged carrier phase
+ * (one-way coupling on a frozen field), with code_saturne's own Langevin dispersion model on
+ * or off (pipe.params `dispersion`). The particle runs restart from the injection run's
+ * particles, so every wall of a study starts from the same particles, whatever the number
+ * of MPI ranks.                                                                          */
+#include "cs_defs.h"
+
+#include "cs_headers.h"
+#include "pipe_params.h"
+
+BEGIN_C_DECLS
+
+void
+cs_user_lagr_model(void)
+{
+  const pipe_params_t *pp = pipe_params();
+  if (pp->phase == 0) {
+    cs_glob_lagr_time_scheme->iilagr = CS_LAGR_OFF;
+    return;
+  }
+  cs_glob_lagr_time_scheme->iilagr = CS_LAGR_FROZEN_CONTINUOUS_PHASE;
+  cs_glob_lagr_time_scheme->isuila = (pp->phase == 2);  /* particles from the injection run */
+  cs_glob_lagr_time_scheme->isttio = 1;
+  cs_glob_lagr_time_scheme->t_order = 1;
+  cs_glob_lagr_time_scheme->idistu = pp->dispersion;    /* Langevin dispersion of the fluid seen */
+  cs_glob_lagr_time_scheme->idiffl = 0;
+  cs_glob_lagr_time_scheme->modcpl = 0;
+  cs_glob_lagr_time_scheme->ilapoi = 0;
+  cs_glob_lagr_model->physical_model = 0;               /* transport only */
+  cs_glob_lagr_model->deposition = 0;
+  cs_glob_lagr_model->resuspension = 0;
+  cs_glob_lagr_model->roughness = 0;
+  cs_glob_lagr_model->clogging = 0;
+  cs_glob_lagr_model->dlvo = 0;
+  cs_glob_lagr_model->n_stat_classes = 0;
+  cs_glob_lagr_brownian->lamvbr = 0;
+  /* one user particle variable: the packed (particle id, collision count) key of the wall
+     model (../case_src/cswm_common.h; no more than one in 6.0.2) */
+  cs_lagr_set_n_user_variables(1);
+  /* no code_saturne statistics (the study keeps its own, pipe_tally.c): they would start
+     after the last step, and a restart need not carry them */
+  cs_glob_lagr_stat_options->isuist = 0;
+  cs_glob_lagr_stat_options->idstnt = pp->nt + 1;
+  cs_glob_lagr_stat_options->nstist = pp->nt + 1;
+}
+
+END_C_DECLS

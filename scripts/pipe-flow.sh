@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Pneumatic conveying in a horizontal pipe with rough walls (issue 30), in code_saturne 6.0:
+# air at a bulk velocity of 20 m/s in a 50 mm pipe (k-epsilon RANS, a streamwise-periodic
+# section 4 D long, meshed by gmsh), glass beads of 100 and 200 um, one-way coupled, with
+# gravity and code_saturne's Langevin dispersion, on the frozen converged flow; every wall hit
+# goes to roughwall (examples/code_saturne/pipe/, docs/pipe-flow.md). The walls, on the same
+# flow and the same particles:
+#   smooth; isotropic (5.95, 5.95) deg; (3.8, 7.5) deg with the lay along the axis (a drawn
+#   tube) and around the circumference,
+# each rough wall with the paper's model and `calibrated`, the isotropic one also with
+# Sommerfeld-Huber 1999; the Sec. 4 glass-steel collision law everywhere.
+# Full mode: 4000 particles per run, 0.5 s (about 170 D) before a 0.4 s sampling window, plus
+# a finer mesh and a later window for one wall (the checks of docs/pipe-flow.md). Quick mode
+# (REBOUND_QUICK=1 or --quick; what reproduce-all.sh runs): 400 particles, 0.1 s + 0.1 s, no
+# checks. `rebound pipe-stats` turns the runs into $REBOUND_RESULTS/pipe-flow/ (quick mode:
+# pipe-flow-quick/; CSV, SVG).
+# Environment: PIPE_WORK (the runs, default target/pipe-flow[-quick]), PIPE_JOBS (runs at
+# once, default 2), ROUGHWALL_LIB (the directory of the libroughwall.so to link; default: build
+# target/release).
+# Usage: scripts/pipe-flow.sh [--quick]
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+if [ "${1:-}" = --quick ]; then QUICK=1; fi
+[ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
+if [ "$QUICK" = 1 ]; then P=$OUT/$P_PIPE_FLOW_QUICK; else P=$OUT/$P_PIPE_FLOW; fi
+PIPE_EX=$ROOT/examples/code_saturne/pipe
+source "$PIPE_EX/study_lib.sh"
+if [ "$QUICK" = 1 ]; then WORK=${PIPE_WORK:-$ROOT/target/pipe-flow-quick}; else WORK=${PIPE_WORK:-$ROOT/target/pipe-flow}; fi
+JOBS=${PIPE_JOBS:-2}
+
+# The study (docs/pipe-flow.md).
+D=0.05 L=0.2 UB=20 RHO=2500
+DIAMETERS_UM="100 200"
+WALLS="smooth:0:0:0 iso:1:5.95:5.95 axial:2:3.8:7.5 circ:3:3.8:7.5"
+models_of() { case $1 in smooth) echo paper ;; iso) echo "paper calibrated sh1999" ;; *) echo "paper calibrated" ;; esac; }
+DT_FLUID=0.001 NT_FLUID=$(particles 600 400)
+DT=0.0005
+NPART=$(particles 4000 400)
+T_DEV=$(particles 0.5 0.1) T_WIN=$(particles 0.4 0.1)
+MESH="8 8 1.1 20" FINE="12 12 1.05 30"
+NP=$(steps "$(awk -v a="$T_DEV" -v b="$T_WIN" 'BEGIN { print a + b }')")
+
+stage_start "pipe flow: build and mesh"
+# the C library the hook links (ROUGHWALL_LIB names another build: the tests give theirs)
+if [ -z "${ROUGHWALL_LIB:-}" ]; then (cd "$ROOT" && cargo build --release --quiet -p roughwall); fi
+study_init
+# shellcheck disable=SC2086 # MESH is a list of arguments
+"$PIPE_EX/setup_pipe.sh" "$WORK/coarse" $MESH > /dev/null
+stage_end
+
+stage_start "pipe flow: fluid and injection"
+fluid "$WORK/coarse"
+for d in $DIAMETERS_UM; do inject "$WORK/coarse" "$d"; done
+if [ "$QUICK" != 1 ]; then
+  # shellcheck disable=SC2086
+  "$PIPE_EX/setup_pipe.sh" "$WORK/fine" $FINE > /dev/null
+  fluid "$WORK/fine"
+  inject "$WORK/fine" 200
+fi
+stage_end
+
+stage_start "pipe flow: particles"
+for d in $DIAMETERS_UM; do
+  for w in $WALLS; do
+    wall=${w%%:*}
+    for m in $(models_of "$wall"); do
+      particles_run "${d}um-$wall-$m" main "$WORK/coarse" "$d" "$wall" "$m"
+    done
+  done
+done
+if [ "$QUICK" != 1 ]; then
+  particles_run 200um-iso-paper-fine mesh "$WORK/fine" 200 iso paper
+  # the same wall sampled after 0.9 s instead of 0.5 s: is the flow of particles developed?
+  late=$(awk -v a="$T_DEV" -v b="$T_WIN" 'BEGIN { print a + b }')
+  particles_run 200um-iso-paper-late development "$WORK/coarse" 200 iso paper \
+    t_sample "$late" np "$(steps "$(awk -v a="$late" -v b="$T_WIN" 'BEGIN { print a + b }')")"
+fi
+run_all || { echo "pipe-flow: nothing written to $P" >&2; exit 1; }
+stage_end
+
+stage_start "pipe flow: statistics"
+cp "$WORK/coarse/mesh.txt" "$WORK/mesh-coarse.txt"
+if [ -f "$WORK/fine/mesh.txt" ]; then cp "$WORK/fine/mesh.txt" "$WORK/mesh-fine.txt"; fi
+cat "$WORK"/*/fluid/converged.txt > "$WORK/fluid.txt"
+run pipe-stats --study "$WORK" --out "$P"
+stage_end
+[ -n "${REBOUND_NESTED:-}" ] || print_stages "pipe-flow.sh"

@@ -1,0 +1,84 @@
+//! `rebound pipe-stats --study DIR --out DIR`: the statistics of a pipe-flow study
+//! (`crate::pipe_flow` reads and computes; this writes the tables, figures and `run.toml`).
+
+use crate::cli::PipeStatsArgs;
+use crate::commands::{begin_out, counted, Summary, Wrote};
+use crate::output::{out_dir, write_atomic};
+use crate::pipe_flow::{read, sums, tables};
+use roughwall::erosion::finnie::Finnie;
+use roughwall::error::{Error, Result};
+
+/// Finnie's law for the erosion tallies: a steel wall (flow stress 1 GPa) with OpenFOAM's
+/// ψ = K = 2, as in `configs/cases/erosion-glass-steel.toml`.
+pub const FINNIE: Finnie = Finnie {
+    flow_stress_pa: 1e9,
+    psi: 2.0,
+    k: 2.0,
+};
+
+/// Runs the subcommand.
+pub fn run(args: &PipeStatsArgs) -> Result<Summary> {
+    out_dir::check_out(&args.out, "--out")?;
+    out_dir::check_distinct(&args.out, "--out", &[("--study", args.study.as_path())])?;
+    let runs = read::study(&args.study)?;
+    let analysed: Vec<tables::Analysed> = runs
+        .iter()
+        .map(|run| tables::Analysed {
+            run,
+            sums: sums::sums(run, &FINNIE),
+        })
+        .collect();
+    let hits: usize = runs.iter().map(|r| r.hits.len()).sum();
+    let particles: usize = runs.iter().map(|r| r.particles.len()).sum();
+    let staged = begin_out(&args.out)?;
+    let dir = staged.path();
+    tables::summary(&analysed).write(&dir.join("summary.csv"))?;
+    tables::profiles(&analysed).write(&dir.join("profiles.csv"))?;
+    tables::distributions(&analysed).write(&dir.join("distributions.csv"))?;
+    tables::comparisons(&analysed).write(&dir.join("comparisons.csv"))?;
+    let figures = crate::figures::pipe_flow::write(dir, &analysed)?;
+    let mut run = toml::Table::new();
+    run.insert("command".into(), "pipe-stats".into());
+    run.insert("version".into(), crate::BUILD_VERSION.into());
+    run.insert("study".into(), args.study.display().to_string().into());
+    run.insert("runs".into(), toml::Value::Integer(runs.len() as i64));
+    run.insert("hits".into(), toml::Value::Integer(hits as i64));
+    run.insert(
+        "finnie".into(),
+        format!(
+            "flow stress {} Pa, psi {}, K {}",
+            FINNIE.flow_stress_pa, FINNIE.psi, FINNIE.k
+        )
+        .into(),
+    );
+    let mut root = toml::Table::new();
+    root.insert("run".into(), toml::Value::Table(run));
+    // The study's own records (mesh, fluid convergence), as the script wrote them.
+    for (key, file) in [
+        ("mesh_coarse", "mesh-coarse.txt"),
+        ("mesh_fine", "mesh-fine.txt"),
+        ("fluid", "fluid.txt"),
+    ] {
+        if let Ok(text) = std::fs::read_to_string(args.study.join(file)) {
+            root.insert(key.into(), text.trim().to_string().into());
+        }
+    }
+    root.insert(
+        "figures".into(),
+        toml::Value::Array(figures.into_iter().map(toml::Value::String).collect()),
+    );
+    let text =
+        toml::to_string_pretty(&root).map_err(|e| Error::Internal(format!("run.toml: {e}")))?;
+    write_atomic(&dir.join("run.toml"), text.as_bytes())?;
+    staged.commit()?;
+    Ok(Summary {
+        work: format!(
+            "{}, {} particles, {} wall hits",
+            counted(runs.len(), "run"),
+            particles,
+            hits
+        ),
+        rate: None,
+        wrote: Wrote::Dir(args.out.clone()),
+    })
+}

@@ -1,0 +1,225 @@
+//! The quantities of the pipe-flow study, as functions of a run's sums ([`super::sums`]),
+//! each given a standard error by [`super::jackknife`].
+//!
+//! Conventions (docs/pipe-flow.md): the pipe axis is x, y is up (gravity −y), z horizontal;
+//! `R` the pipe radius. Profiles are slab averages: the vertical profile bins y over
+//! [−R, R] (each slab a chord band of the cross-section, all z), the horizontal one bins z.
+//! Concentration is normalised by the mean: the fraction of samples in a slab over the
+//! slab's share of the cross-section's area (1 everywhere for a uniform suspension).
+//! The wall-normal velocity is the radial component `u_r = (u_y y + u_z z)/r`, positive
+//! towards the wall. Erosion is Finnie's volume per particle mass summed over the hits
+//! and divided by the wall area and by the mass of particles conveyed through a
+//! cross-section (`Σ_p m_p x_p / L` for particles that travelled `x_p`): the loss of wall
+//! thickness per mass conveyed, in µm per tonne.
+
+use super::jackknife::{estimate, Estimate};
+use super::sums::{Layout, RunSums, ALPHA_BINS, LAY_BINS, THETA_BINS};
+
+/// The area of the band of a circle of radius `r` between the chords at `a < b` (|a|, |b| ≤ r).
+pub fn band_area(r: f64, a: f64, b: f64) -> f64 {
+    let f = |y: f64| {
+        let y = y.clamp(-r, r);
+        y * (r * r - y * y).max(0.0).sqrt() + r * r * (y / r).asin()
+    };
+    f(b) - f(a)
+}
+
+/// The centre of bin `b` of `nb` across a diameter, over R.
+pub fn bin_centre_over_r(b: usize, nb: usize) -> f64 {
+    -1.0 + (b as f64 + 0.5) * 2.0 / nb as f64
+}
+
+/// A slab's share of the cross-section's area.
+fn area_share(b: usize, nb: usize) -> f64 {
+    let w = 2.0 / nb as f64;
+    let lo = -1.0 + b as f64 * w;
+    band_area(1.0, lo, lo + w) / std::f64::consts::PI
+}
+
+/// A whole-run quantity: its column name (docs/outputs.md says what each is) and its
+/// statistic of one run's sums.
+pub struct Quantity {
+    pub name: &'static str,
+    pub f: fn(&Layout, &[f64]) -> f64,
+}
+
+fn total_over_bins(l: &Layout, s: &[f64], at: fn(&Layout, usize) -> usize) -> f64 {
+    (0..l.nb).map(|b| s[at(l, b)]).sum()
+}
+
+/// The square root of a variance computed as a difference of means, which round-off may
+/// push below 0; NaN (no sample) stays NaN (`f64::max` would make it 0).
+fn sqrt_var(var: f64) -> f64 {
+    if var.is_nan() {
+        f64::NAN
+    } else {
+        var.max(0.0).sqrt()
+    }
+}
+
+/// m/kg of wall thickness per mass conveyed → µm per tonne.
+const M_PER_KG_TO_UM_PER_T: f64 = 1e9;
+
+/// The study's whole-run quantities (`summary.csv`, `comparisons.csv`). The erosion
+/// quantities need the pipe radius and are in [`erosion_um_per_t`].
+pub const QUANTITIES: [Quantity; 9] = [
+    Quantity {
+        name: "collisions_per_m",
+        f: |_, s| s[Layout::HITS] / s[Layout::DIST],
+    },
+    Quantity {
+        name: "mean_ux_m_s",
+        f: |l, s| total_over_bins(l, s, Layout::ux) / s[Layout::SAMPLES],
+    },
+    Quantity {
+        name: "rms_ux_m_s",
+        f: |l, s| {
+            let n = s[Layout::SAMPLES];
+            let m = total_over_bins(l, s, Layout::ux) / n;
+            sqrt_var(total_over_bins(l, s, Layout::ux2) / n - m * m)
+        },
+    },
+    Quantity {
+        name: "rms_ur_m_s",
+        f: |l, s| {
+            let n = s[Layout::SAMPLES];
+            let m = total_over_bins(l, s, Layout::ur) / n;
+            sqrt_var(total_over_bins(l, s, Layout::ur2) / n - m * m)
+        },
+    },
+    Quantity {
+        name: "mean_height_over_r",
+        f: |l, s| {
+            (0..l.nb)
+                .map(|b| s[l.cy(b)] * bin_centre_over_r(b, l.nb))
+                .sum::<f64>()
+                / s[Layout::SAMPLES]
+        },
+    },
+    Quantity {
+        name: "bottom_half_fraction",
+        f: |l, s| (0..l.nb / 2).map(|b| s[l.cy(b)]).sum::<f64>() / s[Layout::SAMPLES],
+    },
+    Quantity {
+        name: "mean_alpha_in_deg",
+        f: |l, s| s[l.sum_alpha_in()] / s[l.logged_hits()],
+    },
+    Quantity {
+        name: "mean_alpha_change_deg",
+        f: |l, s| s[l.sum_alpha_change()] / s[l.logged_hits()],
+    },
+    Quantity {
+        name: "mean_deflection_deg",
+        f: |l, s| s[l.sum_deflection()] / s[l.logged_hits()],
+    },
+];
+
+/// Erosion averaged over the whole wall (µm per tonne conveyed), pipe radius `r` (m).
+pub fn erosion_um_per_t(l: &Layout, s: &[f64], r: f64) -> f64 {
+    s[l.sum_erosion()] / (2.0 * std::f64::consts::PI * r * s[Layout::DIST]) * M_PER_KG_TO_UM_PER_T
+}
+
+/// Erosion in circumferential bin `k` (folded: both sides), µm per tonne conveyed.
+pub fn erosion_theta_um_per_t(l: &Layout, s: &[f64], r: f64, k: usize) -> f64 {
+    let dtheta = std::f64::consts::PI / THETA_BINS as f64;
+    s[l.erosion_theta(k)] / (2.0 * r * dtheta * s[Layout::DIST]) * M_PER_KG_TO_UM_PER_T
+}
+
+/// One profile point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProfilePoint {
+    pub position_over_r: f64,
+    pub concentration: Estimate,
+    /// Velocity statistics of the slab (vertical profile only).
+    pub ux_mean: Option<Estimate>,
+    pub ux_rms: Option<Estimate>,
+    pub ur_mean: Option<Estimate>,
+    pub ur_rms: Option<Estimate>,
+}
+
+/// The vertical (`vertical`: bins of y, with velocities) or horizontal profile of a run.
+pub fn profile(run: &RunSums, vertical: bool) -> Vec<ProfilePoint> {
+    let l = run.layout;
+    (0..l.nb)
+        .map(|b| {
+            let share = area_share(b, l.nb);
+            let at = if vertical { l.cy(b) } else { l.cz(b) };
+            let concentration = estimate(&[run], |s| s[0][at] / s[0][Layout::SAMPLES] / share);
+            let (cy, ux, ux2, ur, ur2) = (l.cy(b), l.ux(b), l.ux2(b), l.ur(b), l.ur2(b));
+            let mean = move |sum: usize| move |s: &[&[f64]]| s[0][sum] / s[0][cy];
+            let rms = move |sum: usize, sq: usize| {
+                move |s: &[&[f64]]| {
+                    let m = s[0][sum] / s[0][cy];
+                    sqrt_var(s[0][sq] / s[0][cy] - m * m)
+                }
+            };
+            ProfilePoint {
+                position_over_r: bin_centre_over_r(b, l.nb),
+                concentration,
+                ux_mean: vertical.then(|| estimate(&[run], mean(ux))),
+                ux_rms: vertical.then(|| estimate(&[run], rms(ux, ux2))),
+                ur_mean: vertical.then(|| estimate(&[run], mean(ur))),
+                ur_rms: vertical.then(|| estimate(&[run], rms(ur, ur2))),
+            }
+        })
+        .collect()
+}
+
+/// One bin of a distribution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DistBin {
+    pub lo: f64,
+    pub hi: f64,
+    pub value: Estimate,
+}
+
+/// The PDF (per degree) of the impact angle, or (`lay`) of the angle between the incident
+/// plane and the lay.
+pub fn angle_pdf(run: &RunSums, lay: bool) -> Vec<DistBin> {
+    let l = run.layout;
+    let (n, width) = if lay {
+        (LAY_BINS, 90.0 / LAY_BINS as f64)
+    } else {
+        (ALPHA_BINS, 90.0 / ALPHA_BINS as f64)
+    };
+    (0..n)
+        .map(|k| {
+            let at = if lay { l.lay_hist(k) } else { l.alpha_hist(k) };
+            DistBin {
+                lo: k as f64 * width,
+                hi: (k + 1) as f64 * width,
+                value: estimate(&[run], |s| s[0][at] / s[0][l.logged_hits()] / width),
+            }
+        })
+        .collect()
+}
+
+/// Erosion around the circumference (folded), pipe radius `r`.
+pub fn erosion_profile(run: &RunSums, r: f64) -> Vec<DistBin> {
+    let l = run.layout;
+    let width = 180.0 / THETA_BINS as f64;
+    (0..THETA_BINS)
+        .map(|k| DistBin {
+            lo: k as f64 * width,
+            hi: (k + 1) as f64 * width,
+            value: estimate(&[run], |s| erosion_theta_um_per_t(&l, s[0], r, k)),
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slab_shares_cover_the_circle() {
+        for nb in [2, 7, 20] {
+            let total: f64 = (0..nb).map(|b| area_share(b, nb)).sum();
+            assert!((total - 1.0).abs() < 1e-12, "{nb}: {total}");
+        }
+        // the half circle
+        assert!((band_area(2.0, -2.0, 0.0) - 2.0 * std::f64::consts::PI).abs() < 1e-12);
+        // symmetric slabs have equal areas
+        assert!((area_share(0, 20) - area_share(19, 20)).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,273 @@
+//! The CSV tables of `rebound pipe-stats` (docs/outputs.md, "pipe-stats"): `summary.csv`
+//! (one row per run), `profiles.csv`, `distributions.csv` and `comparisons.csv` (the
+//! difference between two walls, or meshes, or windows, with its paired standard error).
+
+use super::jackknife::{estimate, Estimate};
+use super::read::Run;
+use super::stats::{angle_pdf, erosion_profile, erosion_um_per_t, profile, QUANTITIES};
+use super::sums::RunSums;
+use crate::output::csv::CsvTable;
+use roughwall::format::fmt_num;
+
+/// A run with its sums.
+pub struct Analysed<'a> {
+    pub run: &'a Run,
+    pub sums: RunSums,
+}
+
+impl Analysed<'_> {
+    fn radius(&self) -> f64 {
+        0.5 * self.run.params.pipe_diameter_m
+    }
+}
+
+/// The whole-run quantities of `runs` (same order): `(name, estimate)` per quantity, the
+/// erosion last.
+pub fn quantities(runs: &[&Analysed]) -> Vec<(&'static str, Estimate)> {
+    let sums: Vec<&RunSums> = runs.iter().map(|a| &a.sums).collect();
+    let l = sums[0].layout;
+    let mut out: Vec<(&'static str, Estimate)> = QUANTITIES
+        .iter()
+        .map(|q| {
+            let f = q.f;
+            let e = match sums.len() {
+                1 => estimate(&sums, |s| f(&l, s[0])),
+                _ => estimate(&sums, |s| f(&l, s[0]) - f(&l, s[1])),
+            };
+            (q.name, e)
+        })
+        .collect();
+    let r: Vec<f64> = runs.iter().map(|a| a.radius()).collect();
+    let e = match sums.len() {
+        1 => estimate(&sums, |s| erosion_um_per_t(&l, s[0], r[0])),
+        _ => estimate(&sums, |s| {
+            erosion_um_per_t(&l, s[0], r[0]) - erosion_um_per_t(&l, s[1], r[1])
+        }),
+    };
+    out.push(("erosion_um_per_t", e));
+    out
+}
+
+fn id_cells(a: &Analysed) -> Vec<String> {
+    let i = &a.run.info;
+    vec![
+        i.name.clone(),
+        i.kind.clone(),
+        fmt_num(i.diameter_um),
+        i.wall.clone(),
+        i.model.clone(),
+    ]
+}
+
+/// `summary.csv`.
+pub fn summary(runs: &[Analysed]) -> CsvTable {
+    let mut header: Vec<String> = [
+        "run",
+        "kind",
+        "diameter_um",
+        "wall",
+        "model",
+        "delta_xi_deg",
+        "delta_zeta_deg",
+        "particles",
+        "samples",
+        "hits",
+    ]
+    .map(String::from)
+    .to_vec();
+    let names: Vec<&str> = QUANTITIES
+        .iter()
+        .map(|q| q.name)
+        .chain(["erosion_um_per_t"])
+        .collect();
+    for n in &names {
+        header.push(n.to_string());
+        header.push(format!("{n}_se"));
+    }
+    let mut t = CsvTable {
+        header,
+        rows: Vec::new(),
+    };
+    for a in runs {
+        let mut row = id_cells(a);
+        let p = &a.run.params;
+        row.push(fmt_num(p.delta_xi_deg));
+        row.push(fmt_num(p.delta_zeta_deg));
+        row.push(a.run.particles.len().to_string());
+        row.push(fmt_num(a.run.particles.iter().map(|p| p.samples).sum()));
+        row.push(a.run.hits.len().to_string());
+        for (_, e) in quantities(&[a]) {
+            row.push(fmt_num(e.value));
+            row.push(fmt_num(e.se));
+        }
+        t.push(row);
+    }
+    t
+}
+
+fn est_cells(e: Option<Estimate>) -> [String; 2] {
+    match e {
+        Some(e) => [fmt_num(e.value), fmt_num(e.se)],
+        None => [String::new(), String::new()],
+    }
+}
+
+/// `profiles.csv`: the vertical (with velocities) and horizontal profiles of every run.
+pub fn profiles(runs: &[Analysed]) -> CsvTable {
+    let mut t = CsvTable::new(&[
+        "run",
+        "kind",
+        "diameter_um",
+        "wall",
+        "model",
+        "profile",
+        "position_over_r",
+        "concentration",
+        "concentration_se",
+        "ux_mean_m_s",
+        "ux_mean_se",
+        "ux_rms_m_s",
+        "ux_rms_se",
+        "ur_mean_m_s",
+        "ur_mean_se",
+        "ur_rms_m_s",
+        "ur_rms_se",
+    ]);
+    for a in runs {
+        for vertical in [true, false] {
+            for p in profile(&a.sums, vertical) {
+                let mut row = id_cells(a);
+                row.push(if vertical { "vertical" } else { "horizontal" }.into());
+                row.push(fmt_num(p.position_over_r));
+                row.extend(est_cells(Some(p.concentration)));
+                for e in [p.ux_mean, p.ux_rms, p.ur_mean, p.ur_rms] {
+                    row.extend(est_cells(e));
+                }
+                t.push(row);
+            }
+        }
+    }
+    t
+}
+
+/// `distributions.csv`: impact-angle and lay-angle PDFs (per degree) and erosion around the
+/// circumference (µm per tonne, angle from the bottom, folded).
+pub fn distributions(runs: &[Analysed]) -> CsvTable {
+    let mut t = CsvTable::new(&[
+        "run",
+        "kind",
+        "diameter_um",
+        "wall",
+        "model",
+        "quantity",
+        "lo_deg",
+        "hi_deg",
+        "value",
+        "se",
+    ]);
+    for a in runs {
+        let sets = [
+            ("impact_angle_pdf", angle_pdf(&a.sums, false)),
+            ("lay_angle_pdf", angle_pdf(&a.sums, true)),
+            ("erosion_um_per_t", erosion_profile(&a.sums, a.radius())),
+        ];
+        for (q, bins) in sets {
+            for b in bins {
+                let mut row = id_cells(a);
+                row.push(q.into());
+                row.push(fmt_num(b.lo));
+                row.push(fmt_num(b.hi));
+                row.extend(est_cells(Some(b.value)));
+                t.push(row);
+            }
+        }
+    }
+    t
+}
+
+/// The pairs the study compares, as indices into `runs`: `(a, b)` for "a − b".
+pub fn pairs(runs: &[Analysed]) -> Vec<(usize, usize)> {
+    let find = |kind: &str, d: f64, wall: &str, model: &str| {
+        runs.iter().position(|a| {
+            let i = &a.run.info;
+            i.kind == kind && i.diameter_um == d && i.wall == wall && i.model == model
+        })
+    };
+    let mut out = Vec::new();
+    let mut push = |a: Option<usize>, b: Option<usize>| {
+        if let (Some(a), Some(b)) = (a, b) {
+            if !out.contains(&(a, b)) {
+                out.push((a, b));
+            }
+        }
+    };
+    for a in runs {
+        let i = &a.run.info;
+        let d = i.diameter_um;
+        if i.kind != "main" {
+            // the finer mesh, the later window: against the study's run of the same wall
+            push(
+                find(&i.kind, d, &i.wall, &i.model),
+                find("main", d, &i.wall, &i.model),
+            );
+            continue;
+        }
+        let m = i.model.as_str();
+        let smooth = find("main", d, "smooth", "paper");
+        match i.wall.as_str() {
+            "axial" | "circ" => {
+                push(find("main", d, &i.wall, m), find("main", d, "iso", m));
+                push(find("main", d, &i.wall, m), smooth);
+            }
+            "iso" => push(find("main", d, "iso", m), smooth),
+            _ => {}
+        }
+        if i.wall == "circ" {
+            push(find("main", d, "circ", m), find("main", d, "axial", m));
+        }
+        if i.wall == "iso" && m != "paper" {
+            push(find("main", d, "iso", m), find("main", d, "iso", "paper"));
+        }
+    }
+    out
+}
+
+/// `comparisons.csv`: for each pair, every whole-run quantity of both runs and their
+/// difference with its paired jackknife standard error and z.
+pub fn comparisons(runs: &[Analysed]) -> CsvTable {
+    let mut t = CsvTable::new(&[
+        "diameter_um",
+        "a",
+        "b",
+        "quantity",
+        "value_a",
+        "se_a",
+        "value_b",
+        "se_b",
+        "difference",
+        "se",
+        "z",
+    ]);
+    for (ia, ib) in pairs(runs) {
+        let (a, b) = (&runs[ia], &runs[ib]);
+        let qa = quantities(&[a]);
+        let qb = quantities(&[b]);
+        let qd = quantities(&[a, b]);
+        for ((name, ea), ((_, eb), (_, ed))) in qa.iter().zip(qb.iter().zip(qd.iter())) {
+            t.push(vec![
+                fmt_num(a.run.info.diameter_um),
+                a.run.info.name.clone(),
+                b.run.info.name.clone(),
+                name.to_string(),
+                fmt_num(ea.value),
+                fmt_num(ea.se),
+                fmt_num(eb.value),
+                fmt_num(eb.se),
+                fmt_num(ed.value),
+                fmt_num(ed.se),
+                fmt_num(ed.z()),
+            ]);
+        }
+    }
+    t
+}

@@ -1,0 +1,191 @@
+//! `rebound pipe-stats` on a small study written by hand (no code_saturne): every statistic
+//! against its value computed here, and bad input refused with one line and status 2. The
+//! real study is checked in `tests/real_systems/pipe_flow.rs`.
+
+use crate::common::*;
+use std::collections::HashMap;
+use std::path::Path;
+
+const PARAMS: &str = "phase 2\nnt 100\ndt 0.0005\ndiameter_pipe 0.05\nlength 0.2\nu_bulk 20\n\
+wall 1\ndelta_xi_deg 5\ndelta_zeta_deg 5\nmodel 0\nlaw 1\npreset 1\nseed 1\nn_particles 40\n\
+d_p 0.0001\nrho_p 2500\ndispersion 1\nt_sample 0.01\nn_bins 2\nlog_hits 1\n";
+
+/// A run of 40 particles, each sampled 10 times, all in the lower slab, at u_x = `ux`
+/// (u_r = 0), 1 m travelled and `hits` hits at the bottom with α⁻ = 10°, α⁺ = 10° + `dalpha`.
+fn write_run(dir: &Path, ux: f64, hits: usize, dalpha: f64) {
+    std::fs::create_dir_all(dir).unwrap();
+    std::fs::write(dir.join("pipe.params"), PARAMS).unwrap();
+    let mut p = String::from(
+        "particle_id,n,dist,hits,cy_0,cy_1,cz_0,cz_1,ux_0,ux_1,ux2_0,ux2_1,ur_0,ur_1,ur2_0,ur2_1\n",
+    );
+    for id in 0..40 {
+        p.push_str(&format!(
+            "{id},10,1,{hits},10,0,5,5,{},0,{},0,0,0,0,0\n",
+            10.0 * ux,
+            10.0 * ux * ux
+        ));
+    }
+    std::fs::write(dir.join("particles.csv"), p).unwrap();
+    let mut h = String::from("particle_id,collision_index,step,y,z,alpha_in_deg,lay_angle_deg,speed_in,speed_out,alpha_out_deg,deflection_deg,status,candidate_walls\n");
+    for id in 0..40 {
+        for k in 0..hits {
+            h.push_str(&format!(
+                "{id},{k},50,-0.025,0,10,3,20,18,{},1,0,1\n",
+                10.0 + dalpha
+            ));
+        }
+    }
+    std::fs::write(dir.join("hits_rank0000.csv"), h).unwrap();
+}
+
+fn study(root: &Path) {
+    std::fs::create_dir_all(root).unwrap();
+    std::fs::write(
+        root.join("study.tsv"),
+        "name\tkind\tdiameter_um\twall\tmodel\tdir\n\
+         100um-smooth-paper\tmain\t100\tsmooth\tpaper\truns/a\n\
+         100um-iso-paper\tmain\t100\tiso\tpaper\truns/b\n",
+    )
+    .unwrap();
+    write_run(&root.join("runs/a"), 15.0, 1, 0.0);
+    write_run(&root.join("runs/b"), 18.0, 3, 2.0);
+}
+
+fn rows(path: &Path) -> Vec<HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    r.records()
+        .map(|rec| {
+            header
+                .iter()
+                .cloned()
+                .zip(rec.unwrap().iter().map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+fn num(r: &HashMap<String, String>, k: &str) -> f64 {
+    r[k].parse().unwrap_or_else(|_| panic!("{k} = {:?}", r[k]))
+}
+
+#[test]
+fn pipe_stats_gives_each_statistic_and_its_error() {
+    let d = Dir::new();
+    let s = d.path().join("study");
+    study(&s);
+    let out = d.path().join("out");
+    rebound(&[
+        "pipe-stats",
+        "--study",
+        s.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .ok();
+    let summary = rows(&out.join("summary.csv"));
+    assert_eq!(summary.len(), 2);
+    let iso = summary
+        .iter()
+        .find(|r| r["run"] == "100um-iso-paper")
+        .unwrap();
+    // every particle the same: the values exactly, no spread between batches
+    assert_eq!(num(iso, "collisions_per_m"), 3.0);
+    assert_eq!(num(iso, "collisions_per_m_se"), 0.0);
+    assert_eq!(num(iso, "mean_ux_m_s"), 18.0);
+    assert_eq!(num(iso, "rms_ux_m_s"), 0.0);
+    assert_eq!(num(iso, "bottom_half_fraction"), 1.0);
+    assert_eq!(num(iso, "mean_height_over_r"), -0.5);
+    assert_eq!(num(iso, "mean_alpha_in_deg"), 10.0);
+    assert!((num(iso, "mean_alpha_change_deg") - 2.0).abs() < 1e-6);
+    // Finnie, p = 1 GPa, ψ = K = 2: 20²/(4e9) (sin 20° − 3 sin² 10°) m³/kg per hit; 3 hits
+    // per metre; over the wall 2πR per metre of pipe; in µm per tonne (×1e9)
+    let a = 10f64.to_radians();
+    let v = 400.0 / 4e9 * ((2.0 * a).sin() - 3.0 * a.sin().powi(2));
+    let expect = 3.0 * v / (2.0 * std::f64::consts::PI * 0.025) * 1e9;
+    let got = num(iso, "erosion_um_per_t");
+    assert!((got - expect).abs() < 1e-6 * expect, "{got} vs {expect}");
+    // concentration: all samples in the lower half, whose share of the area is 1/2
+    let prof = rows(&out.join("profiles.csv"));
+    let c0 = prof
+        .iter()
+        .find(|r| {
+            r["run"] == "100um-iso-paper"
+                && r["profile"] == "vertical"
+                && r["position_over_r"] == "-0.5"
+        })
+        .unwrap();
+    assert_eq!(num(c0, "concentration"), 2.0);
+    // the upper slab has no sample: its velocities are empty, never 0 or NaN
+    let c1 = prof
+        .iter()
+        .find(|r| {
+            r["run"] == "100um-iso-paper"
+                && r["profile"] == "vertical"
+                && r["position_over_r"] == "0.5"
+        })
+        .unwrap();
+    assert_eq!(num(c1, "concentration"), 0.0);
+    assert_eq!(c1["ux_mean_m_s"], "");
+    assert_eq!(c1["ux_rms_m_s"], "");
+    // the paired difference iso − smooth
+    let cmp = rows(&out.join("comparisons.csv"));
+    let d = cmp
+        .iter()
+        .find(|r| {
+            r["a"] == "100um-iso-paper"
+                && r["b"] == "100um-smooth-paper"
+                && r["quantity"] == "collisions_per_m"
+        })
+        .unwrap();
+    assert_eq!(num(d, "difference"), 2.0);
+    for name in [
+        "concentration_100um.svg",
+        "velocity_100um.svg",
+        "wall_hits_100um.svg",
+        "run.toml",
+    ] {
+        assert!(out.join(name).is_file(), "{name}");
+    }
+    let text = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    assert!(!text.to_lowercase().contains("nan"));
+}
+
+#[test]
+fn pipe_stats_refuses_what_is_not_a_study() {
+    let d = Dir::new();
+    let out = d.path().join("out");
+    let missing = d.path().join("nothing");
+    rebound(&[
+        "pipe-stats",
+        "--study",
+        missing.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .refused("study.tsv");
+    let s = d.path().join("bad");
+    std::fs::create_dir_all(&s).unwrap();
+    std::fs::write(s.join("study.tsv"), "run,dir\n").unwrap();
+    rebound(&[
+        "pipe-stats",
+        "--study",
+        s.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .refused("wrong header");
+    // a run whose particles.csv lacks a column
+    let s = d.path().join("study");
+    study(&s);
+    std::fs::write(s.join("runs/b/particles.csv"), "particle_id,n\n0,1\n").unwrap();
+    rebound(&[
+        "pipe-stats",
+        "--study",
+        s.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .refused("particles.csv");
+    assert!(!out.exists(), "a refused run wrote --out");
+}

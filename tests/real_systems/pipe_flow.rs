@@ -1,0 +1,261 @@
+//! The pipe-flow study in code_saturne (issue 30), coarse: `examples/code_saturne/pipe/
+//! run_checks.sh` runs a periodic pipe section (gmsh mesh, k-ε RANS, frozen) with 300 glass
+//! beads of 150 µm on four elastic walls, then on 2 ranks and without dispersion, and
+//! `rebound pipe-stats` reduces the runs. This test checks the physics, not that it ran:
+//! * a smooth elastic wall conserves the particle's kinetic energy at every hit (and
+//!   reflects it specularly: α⁺ = α⁻);
+//! * rough walls raise the rebound angle over the impact angle, and the lay decides by how
+//!   much as the models predict: particles move mostly along the axis, so the roughness in
+//!   their incident plane is Δξ = 3.8° with the lay along the axis and Δζ = 7.5° with the lay
+//!   around the circumference, which rebounds them more steeply, more often, with faster
+//!   wall-normal fluctuations;
+//! * rough walls keep the particles suspended (higher, faster across the pipe) where the
+//!   smooth wall lets them settle;
+//! * without code_saturne's dispersion, 1 and 2 MPI ranks give the same wall hits for the
+//!   same keys (particle id, collision index) and the same per-particle statistics, to
+//!   round-off; with it, the same statistics within their standard errors.
+
+use crate::common::*;
+use std::collections::{BTreeMap, HashMap};
+use std::path::Path;
+use std::process::Command;
+
+fn rows(path: &Path) -> Vec<HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    r.records()
+        .map(|rec| {
+            let rec = rec.unwrap();
+            header
+                .iter()
+                .cloned()
+                .zip(rec.iter().map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+fn num(row: &HashMap<String, String>, key: &str) -> f64 {
+    row[key]
+        .parse()
+        .unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
+}
+
+/// Every hit of a run, keyed by (particle id, collision index).
+fn hits(run: &Path) -> BTreeMap<(u64, u64), HashMap<String, String>> {
+    let mut out = BTreeMap::new();
+    for e in std::fs::read_dir(run).unwrap() {
+        let p = e.unwrap().path();
+        let name = p.file_name().unwrap().to_string_lossy().into_owned();
+        if name.starts_with("hits_rank") {
+            for r in rows(&p) {
+                let key = (
+                    num(&r, "particle_id") as u64,
+                    num(&r, "collision_index") as u64,
+                );
+                assert!(out.insert(key, r).is_none(), "key {key:?} twice");
+            }
+        }
+    }
+    out
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
+}
+
+#[test]
+fn pipe_flow_physics_and_rank_independence() {
+    crate::require(&["code_saturne", "gmsh", "gfortran", "mpiexec"]);
+    let root = repo_root();
+    let tmp = tempfile::Builder::new()
+        .prefix("pipe")
+        .tempdir_in("/tmp")
+        .unwrap();
+    let work = tmp.path().join("study");
+    let out = Command::new(root.join("examples/code_saturne/pipe/run_checks.sh"))
+        .arg(&work)
+        .env("ROUGHWALL_INCLUDE", root.join("include"))
+        .env("ROUGHWALL_LIB", c_library_dir())
+        .env("REBOUND_BIN", rebound_bin())
+        .output()
+        .expect("run examples/code_saturne/pipe/run_checks.sh");
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    eprintln!("{stdout}");
+    let runs = work.join("runs");
+
+    // Energy at every hit of the smooth elastic wall.
+    let smooth = hits(&runs.join("150um-smooth-paper"));
+    assert!(
+        smooth.len() > 50,
+        "only {} hits on the smooth wall",
+        smooth.len()
+    );
+    for (key, h) in &smooth {
+        let (a, b) = (num(h, "speed_in"), num(h, "speed_out"));
+        assert!((a - b).abs() <= 1e-12 * a, "{key:?}: |u| {a} -> {b}");
+        let (ai, ao) = (num(h, "alpha_in_deg"), num(h, "alpha_out_deg"));
+        assert!((ai - ao).abs() < 1e-6, "{key:?}: alpha {ai} -> {ao}");
+    }
+
+    let summary: HashMap<String, HashMap<String, String>> = rows(&work.join("stats/summary.csv"))
+        .into_iter()
+        .map(|r| (r["run"].clone(), r))
+        .collect();
+    let q = |run: &str, k: &str| {
+        let r = &summary[run];
+        (num(r, k), num(r, &format!("{k}_se")))
+    };
+    // Rough walls steepen the rebound; the smooth one does not.
+    let (d, _) = q("150um-smooth-paper", "mean_alpha_change_deg");
+    assert!(d.abs() < 1e-6, "smooth wall: mean alpha change {d}");
+    for w in ["iso", "axial", "circ"] {
+        let (v, se) = q(&format!("150um-{w}-paper"), "mean_alpha_change_deg");
+        assert!(v > 5.0 * se && v > 0.5, "{w}: mean alpha change {v} ± {se}");
+    }
+
+    let comparisons = rows(&work.join("stats/comparisons.csv"));
+    let diff = |a: &str, b: &str, quantity: &str| {
+        let r = comparisons
+            .iter()
+            .find(|r| r["a"] == a && r["b"] == b && r["quantity"] == quantity)
+            .unwrap_or_else(|| panic!("no comparison {a} - {b} of {quantity}"));
+        (num(r, "difference"), num(r, "se"))
+    };
+    // The lay decides, as the models predict.
+    for quantity in ["mean_alpha_change_deg", "collisions_per_m", "rms_ur_m_s"] {
+        let (v, se) = diff("150um-circ-paper", "150um-axial-paper", quantity);
+        assert!(v > 3.0 * se, "circ - axial {quantity}: {v} ± {se}");
+    }
+    // Rough walls keep particles suspended.
+    for quantity in ["mean_height_over_r", "rms_ur_m_s"] {
+        let (v, se) = diff("150um-iso-paper", "150um-smooth-paper", quantity);
+        assert!(v > 3.0 * se, "iso - smooth {quantity}: {v} ± {se}");
+    }
+
+    // Ranks, dispersion off: the same hits for the same keys, the same tallies.
+    let h1 = hits(&runs.join("150um-iso-paper-nodisp-1"));
+    let h2 = hits(&runs.join("150um-iso-paper-nodisp-2"));
+    assert!(h1.len() > 50, "only {} hits", h1.len());
+    assert_eq!(
+        h1.keys().collect::<Vec<_>>(),
+        h2.keys().collect::<Vec<_>>(),
+        "1 and 2 ranks hit the wall with different keys"
+    );
+    for (key, a) in &h1 {
+        let b = &h2[key];
+        for col in [
+            "y",
+            "z",
+            "alpha_in_deg",
+            "speed_in",
+            "speed_out",
+            "alpha_out_deg",
+            "deflection_deg",
+        ] {
+            assert!(
+                close(num(a, col), num(b, col)),
+                "{key:?} {col}: {} (1 rank) vs {} (2 ranks)",
+                a[col],
+                b[col]
+            );
+        }
+    }
+    let p1 = rows(&runs.join("150um-iso-paper-nodisp-1/particles.csv"));
+    let p2 = rows(&runs.join("150um-iso-paper-nodisp-2/particles.csv"));
+    assert_eq!(p1.len(), 300);
+    assert_eq!(p1.len(), p2.len());
+    for (a, b) in p1.iter().zip(&p2) {
+        for (k, v) in a {
+            assert!(
+                close(v.parse().unwrap(), num(b, k)),
+                "particle {}: {k} {v} vs {}",
+                a["particle_id"],
+                b[k]
+            );
+        }
+    }
+    // Ranks, dispersion on: the same statistics within their standard errors.
+    let ranked: Vec<_> = comparisons
+        .iter()
+        .filter(|r| r["a"] == "150um-iso-paper-2ranks" && r["b"] == "150um-iso-paper")
+        .collect();
+    assert!(
+        ranked.len() >= 10,
+        "{} comparisons of 2 ranks with 1",
+        ranked.len()
+    );
+    for r in ranked {
+        let (v, se) = (num(r, "difference"), num(r, "se"));
+        assert!(
+            v.abs() <= 4.5 * se,
+            "2 ranks - 1 rank {}: {v} ± {se}",
+            r["quantity"]
+        );
+    }
+}
+
+/// `scripts/pipe-flow.sh --quick` (what `reproduce-all.sh` runs) writes every table and
+/// figure of the study, and `rebound report` turns them into its section.
+#[test]
+fn pipe_flow_script_quick_mode_writes_the_study() {
+    crate::require(&["code_saturne", "gmsh", "gfortran", "mpiexec"]);
+    let root = repo_root();
+    let tmp = tempfile::Builder::new()
+        .prefix("pipeq")
+        .tempdir_in("/tmp")
+        .unwrap();
+    let results = tmp.path().join("results");
+    let out = Command::new("bash")
+        .arg(root.join("scripts/pipe-flow.sh"))
+        .arg("--quick")
+        .env("REBOUND_BIN", rebound_bin())
+        .env("REBOUND_RESULTS", &results)
+        .env("PIPE_WORK", tmp.path().join("work"))
+        .env("ROUGHWALL_LIB", c_library_dir())
+        .output()
+        .expect("run scripts/pipe-flow.sh --quick");
+    assert!(
+        out.status.success(),
+        "{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let dir = results.join("pipe-flow-quick");
+    let summary = rows(&dir.join("summary.csv"));
+    assert_eq!(summary.len(), 16, "2 diameters x 8 walls and models");
+    for r in &summary {
+        assert!(num(r, "hits") > 0.0, "{}: no hit", r["run"]);
+        for (k, v) in r {
+            assert!(!v.eq_ignore_ascii_case("nan"), "{}: {k} = {v}", r["run"]);
+        }
+    }
+    for f in [
+        "profiles.csv",
+        "distributions.csv",
+        "comparisons.csv",
+        "run.toml",
+        "concentration_100um.svg",
+        "velocity_200um.svg",
+        "wall_hits_100um.svg",
+    ] {
+        assert!(dir.join(f).is_file(), "no {f}");
+    }
+    let report = Command::new(rebound_bin())
+        .args(["report", "--results"])
+        .arg(&results)
+        .output()
+        .unwrap();
+    assert!(
+        report.status.success(),
+        "{}",
+        String::from_utf8_lossy(&report.stderr)
+    );
+    let md = std::fs::read_to_string(results.join("REPORT.md")).unwrap();
+    assert!(md.contains("Quick mode only") && md.contains("lay around the circumference"));
+}

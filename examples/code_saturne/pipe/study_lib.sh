@@ -15,6 +15,10 @@ model_code() { case $1 in paper) echo 0 ;; sh1999) echo 1 ;; calibrated) echo 5 
 steps() { awk -v t="$1" -v dt="$DT" 'BEGIN { printf "%d", t / dt + 0.5 }'; }
 
 study_init() {
+  # one run at a time per study directory: a second one would delete the first one's runs
+  mkdir -p "$(dirname "$WORK")"
+  exec 9> "$WORK.lock"
+  flock -n 9 || { echo "pipe-flow: $WORK is in use by another run (lock $WORK.lock)" >&2; exit 1; }
   rm -rf "$WORK"
   mkdir -p "$WORK/runs" "$WORK/params"
   printf 'name\tkind\tdiameter_um\twall\tmodel\tdir\n' > "$WORK/study.tsv"

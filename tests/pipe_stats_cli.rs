@@ -107,24 +107,19 @@ fn pipe_stats_gives_each_statistic_and_its_error() {
     assert!((got - expect).abs() < 1e-6 * expect, "{got} vs {expect}");
     // concentration: all samples in the lower half, whose share of the area is 1/2
     let prof = rows(&out.join("profiles.csv"));
-    let c0 = prof
-        .iter()
-        .find(|r| {
-            r["run"] == "100um-iso-paper"
-                && r["profile"] == "vertical"
-                && r["position_over_r"] == "-0.5"
-        })
-        .unwrap();
+    let slab = |at: &str| {
+        prof.iter()
+            .find(|r| {
+                r["run"] == "100um-iso-paper"
+                    && r["profile"] == "vertical"
+                    && r["position_over_r"] == at
+            })
+            .unwrap()
+    };
+    let c0 = slab("-0.5");
     assert_eq!(num(c0, "concentration"), 2.0);
     // the upper slab has no sample: its velocities are empty, never 0 or NaN
-    let c1 = prof
-        .iter()
-        .find(|r| {
-            r["run"] == "100um-iso-paper"
-                && r["profile"] == "vertical"
-                && r["position_over_r"] == "0.5"
-        })
-        .unwrap();
+    let c1 = slab("0.5");
     assert_eq!(num(c1, "concentration"), 0.0);
     assert_eq!(c1["ux_mean_m_s"], "");
     assert_eq!(c1["ux_rms_m_s"], "");

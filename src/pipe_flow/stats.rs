@@ -57,6 +57,19 @@ fn sqrt_var(var: f64) -> f64 {
     }
 }
 
+/// The rms about its mean of a velocity component over every sample: its sums and sums of
+/// squares per slab are at `sum` and `sq`.
+fn overall_rms(
+    l: &Layout,
+    s: &[f64],
+    sum: fn(&Layout, usize) -> usize,
+    sq: fn(&Layout, usize) -> usize,
+) -> f64 {
+    let n = s[Layout::SAMPLES];
+    let m = total_over_bins(l, s, sum) / n;
+    sqrt_var(total_over_bins(l, s, sq) / n - m * m)
+}
+
 /// m/kg of wall thickness per mass conveyed → µm per tonne.
 const M_PER_KG_TO_UM_PER_T: f64 = 1e9;
 
@@ -73,19 +86,11 @@ pub const QUANTITIES: [Quantity; 9] = [
     },
     Quantity {
         name: "rms_ux_m_s",
-        f: |l, s| {
-            let n = s[Layout::SAMPLES];
-            let m = total_over_bins(l, s, Layout::ux) / n;
-            sqrt_var(total_over_bins(l, s, Layout::ux2) / n - m * m)
-        },
+        f: |l, s| overall_rms(l, s, Layout::ux, Layout::ux2),
     },
     Quantity {
         name: "rms_ur_m_s",
-        f: |l, s| {
-            let n = s[Layout::SAMPLES];
-            let m = total_over_bins(l, s, Layout::ur) / n;
-            sqrt_var(total_over_bins(l, s, Layout::ur2) / n - m * m)
-        },
+        f: |l, s| overall_rms(l, s, Layout::ur, Layout::ur2),
     },
     Quantity {
         name: "mean_height_over_r",

@@ -28,6 +28,7 @@
 
 #if CSWM_USER_MODE
 #include "roughwall.h"
+#include "cswm_wall.h"
 #endif
 
 BEGIN_C_DECLS
@@ -108,18 +109,13 @@ _the_wall(void)
 {
   if (_wall == NULL) {
     rw_wall_params p;
-    char msg[512];
     rw_wall_params_default(&p);
     p.delta_xi_deg = CSWM_DELTA_XI_DEG;
     p.delta_zeta_deg = CSWM_DELTA_ZETA_DEG;
     p.law = CSWM_LAW;
     p.preset = CSWM_PRESET;
     p.seed = CSWM_SEED;
-    int s = rw_wall_new(&p, &_wall, msg, sizeof msg);
-    if (s != RW_OK)
-      bft_error(__FILE__, __LINE__, 0, "roughwall: %s (%s)", rw_status_string(s), msg);
-    bft_printf("roughwall %s: wall (%g, %g) deg, law %d, preset %d %s\n",
-               rw_version(), p.delta_xi_deg, p.delta_zeta_deg, p.law, p.preset, msg);
+    _wall = cswm_wall_new(&p, "wall");
   }
   return _wall;
 }

@@ -123,6 +123,30 @@ typedef struct {
   cs_lagr_tracking_state_t  state;
 } _cs60_tracking_info_t;
 
+/* The Lagrangian options every roughwall case shares (cs_user_lagr_model): transport only
+ * (no heat or mass transfer, deposition, resuspension, clogging, DLVO, Brownian motion,
+ * statistical classes), no diffusion or Poisson correction, and the one user particle
+ * variable that holds the packed (particle id, collision count) key above (do NOT use more
+ * than 1 in 6.0.2). The coupling mode, time scheme and dispersion are the case's.     */
+static inline void
+cswm_lagr_transport_only(void)
+{
+  cs_glob_lagr_time_scheme->idiffl = 0;
+  cs_glob_lagr_time_scheme->modcpl = 0;
+  cs_glob_lagr_time_scheme->ilapoi = 0;          /* no Poisson correction */
+
+  cs_glob_lagr_model->physical_model = 0;        /* transport only */
+  cs_glob_lagr_model->deposition = 0;
+  cs_glob_lagr_model->resuspension = 0;
+  cs_glob_lagr_model->roughness = 0;
+  cs_glob_lagr_model->clogging = 0;
+  cs_glob_lagr_model->dlvo = 0;
+  cs_glob_lagr_model->n_stat_classes = 0;
+  cs_glob_lagr_brownian->lamvbr = 0;
+
+  cs_lagr_set_n_user_variables(1);
+}
+
 /* flush the wall-hit log (defined in cs_user_lagr_boundary_conditions.c) */
 void cswm_flush_hits(void);
 

@@ -25,6 +25,7 @@
 #include "pipe_params.h"
 #include "pipe_tally.h"
 #include "roughwall.h"
+#include "cswm_wall.h"
 
 BEGIN_C_DECLS
 
@@ -47,7 +48,7 @@ _the_wall(void)
   if (_wall == NULL) {
     const pipe_params_t *pp = pipe_params();
     rw_wall_params p;
-    char msg[512];
+    char what[32];
     rw_wall_params_default(&p);
     p.delta_xi_deg = pp->delta_xi_deg;
     p.delta_zeta_deg = pp->delta_zeta_deg;
@@ -55,12 +56,8 @@ _the_wall(void)
     p.preset = pp->preset;
     p.model = pp->model;
     p.seed = pp->seed;
-    int s = rw_wall_new(&p, &_wall, msg, sizeof msg);
-    if (s != RW_OK)
-      bft_error(__FILE__, __LINE__, 0, "roughwall: %s (%s)", rw_status_string(s), msg);
-    bft_printf("roughwall %s: pipe wall %d (%g, %g) deg, model %d, law %d, preset %d %s\n",
-               rw_version(), pp->wall, p.delta_xi_deg, p.delta_zeta_deg, p.model, p.law,
-               p.preset, msg);
+    snprintf(what, sizeof what, "pipe wall %d", pp->wall);
+    _wall = cswm_wall_new(&p, what);
   }
   return _wall;
 }

@@ -7,6 +7,7 @@
 #include "cs_defs.h"
 
 #include "cs_headers.h"
+#include "cswm_common.h"
 #include "pipe_params.h"
 
 BEGIN_C_DECLS
@@ -24,20 +25,7 @@ cs_user_lagr_model(void)
   cs_glob_lagr_time_scheme->isttio = 1;
   cs_glob_lagr_time_scheme->t_order = 1;
   cs_glob_lagr_time_scheme->idistu = pp->dispersion;    /* Langevin dispersion of the fluid seen */
-  cs_glob_lagr_time_scheme->idiffl = 0;
-  cs_glob_lagr_time_scheme->modcpl = 0;
-  cs_glob_lagr_time_scheme->ilapoi = 0;
-  cs_glob_lagr_model->physical_model = 0;               /* transport only */
-  cs_glob_lagr_model->deposition = 0;
-  cs_glob_lagr_model->resuspension = 0;
-  cs_glob_lagr_model->roughness = 0;
-  cs_glob_lagr_model->clogging = 0;
-  cs_glob_lagr_model->dlvo = 0;
-  cs_glob_lagr_model->n_stat_classes = 0;
-  cs_glob_lagr_brownian->lamvbr = 0;
-  /* one user particle variable: the packed (particle id, collision count) key of the wall
-     model (../case_src/cswm_common.h; no more than one in 6.0.2) */
-  cs_lagr_set_n_user_variables(1);
+  cswm_lagr_transport_only();                           /* ../case_src/cswm_common.h */
   /* no code_saturne statistics (the study keeps its own, pipe_tally.c): they would start
      after the last step, and a restart need not carry them */
   cs_glob_lagr_stat_options->isuist = 0;

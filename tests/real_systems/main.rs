@@ -19,6 +19,7 @@ mod common;
 mod code_saturne;
 mod erosion_references;
 mod fortran;
+mod python;
 mod slurm;
 mod surfacetopography;
 

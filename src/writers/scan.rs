@@ -242,6 +242,7 @@ pub fn manifest_table(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use roughwall::surface::scan::notes::notes;
     use roughwall::surface::scan::{characterise, ScanField};
 
     /// A sinusoid along x with its grooves along y, some points missing.

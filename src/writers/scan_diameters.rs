@@ -125,6 +125,7 @@ pub fn manifest_rows(rows: &[SeenBy], f: &ScanField) -> toml::Value {
 mod tests {
     use super::*;
     use roughwall::surface::scan::characterise;
+    use roughwall::surface::scan::notes::labelled;
     use roughwall::surface::scan::resolution::seen_by;
 
     /// A Gaussian wall generated as a `size`-node scan read every `every`-th node (h = 1 µm,

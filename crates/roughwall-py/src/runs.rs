@@ -36,6 +36,16 @@ pub struct Scene {
     threads: usize,
 }
 
+/// The Sommerfeld–Huber parameters `(e_h, alpha_e_deg, mu_0, mu_h, alpha_mu_deg)`, each
+/// `None` for the preset's.
+type Collision = (
+    Option<f64>,
+    Option<f64>,
+    Option<f64>,
+    Option<f64>,
+    Option<f64>,
+);
+
 /// The scene's keyword parameters as Python passes them.
 #[derive(FromPyObject)]
 #[pyo3(from_item_all)]
@@ -44,13 +54,7 @@ pub struct SceneArgs {
     delta_zeta_deg: f64,
     law: Option<String>,
     preset: Option<String>,
-    collision: (
-        Option<f64>,
-        Option<f64>,
-        Option<f64>,
-        Option<f64>,
-        Option<f64>,
-    ),
+    collision: Collision,
     model: Option<String>,
     delta_gamma_deg: Option<f64>,
     psi: Option<f64>,

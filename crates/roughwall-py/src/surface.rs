@@ -40,7 +40,7 @@ fn checked(spec: &SurfaceSpec) -> PyResult<()> {
         let Some(c) = c else { continue };
         length(key, c)?;
         let slope = roughwall::wall::deviation_from_surface(h, c).to_degrees();
-        if h > 0.0 && !(slope <= MAX_SLOPE_DEG) {
+        if h > 0.0 && (slope.is_nan() || slope > MAX_SLOPE_DEG) {
             return Err(invalid(
                 key,
                 c,
@@ -60,6 +60,7 @@ fn checked(spec: &SurfaceSpec) -> PyResult<()> {
 /// Generates the surface; returns (heights `(nz, nx)` in metres, `dx`, `dz` in metres).
 #[pyfunction]
 #[pyo3(signature = (length_m, nodes, rms_height_m, corr_length_x_m, corr_length_z_m, seed, threads))]
+#[allow(clippy::too_many_arguments)]
 pub fn surface<'py>(
     py: Python<'py>,
     length_m: f64,

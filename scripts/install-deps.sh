@@ -15,6 +15,10 @@
 #     numpy                         the NumPy rsgeng2D of scripts/bench-surface-numpy.sh
 #     surfacetopography==1.27.1     the reference reader of the instrument scans that
 #                                   crates/topography reads (tests/real_systems/surfacetopography.rs)
+#     maturin==1.16.0               builds the Python package's wheel (crates/roughwall-py;
+#                                   tests/real_systems/python.rs, scripts/bench-python.sh)
+#     pytest==9.2.0                 runs the Python package's tests (crates/roughwall-py/tests)
+#     matplotlib==3.11.2            the figure of examples/python/channel.py
 #
 # The Rust toolchain (cargo, rustc) and a C compiler are assumed: `cargo test --workspace`
 # needs nothing else.
@@ -26,7 +30,7 @@ say() { echo "install-deps: $*" >&2; }
 die() { echo "install-deps: $*" >&2; exit 1; }
 
 apt_packages=(gfortran code-saturne gmsh openfoam slurmctld slurmd slurm-client munge iproute2 util-linux)
-pip_packages=("pysand==2.0.0" numpy "surfacetopography==1.27.1")
+pip_packages=("pysand==2.0.0" numpy "surfacetopography==1.27.1" "maturin==1.16.0" "pytest==9.2.0" "matplotlib==3.11.2")
 venv=${REBOUND_VENV:-$root/.venv}
 
 # ---- Debian packages --------------------------------------------------------------------

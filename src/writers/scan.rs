@@ -4,10 +4,9 @@
 
 use super::scan_diameters::card_tables;
 use crate::output::{fmt_num, fmt_opt, toml_float, toml_str, CsvTable};
-use roughwall::surface::scan::lay::Lay;
+use roughwall::surface::scan::notes::{missing_fraction, spread};
 use roughwall::surface::scan::resolution::SeenBy;
 use roughwall::surface::scan::Characterisation;
-use roughwall::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 
 /// The columns of `scan_summary.csv`.
 pub const SUMMARY_HEADER: [&str; 27] = [
@@ -40,35 +39,14 @@ pub const SUMMARY_HEADER: [&str; 27] = [
     "corr_length_across_um",
 ];
 
-/// Below this spread (rad) an angle is constant: its shape (skewness, kurtosis, correlation)
-/// is undefined, as the library's `lay` takes it.
-const NO_SPREAD_RAD: f64 = 1e-12;
-
 /// Below this Sq (m), a femtometre, far below any instrument's resolution, the heights are
 /// the round-off of the levelling (a plane): their shape (Ssk, Sku) is undefined.
 const NO_SPREAD_M: f64 = 1e-15;
-
-/// Bounds of the notes: slopes far from Gaussian, missing points, small scans.
-pub const MAX_ABS_SKEWNESS: f64 = 0.5;
-pub const MAX_EXCESS_KURTOSIS: f64 = 1.0;
-pub const MAX_MISSING_FRACTION: f64 = 0.10;
-pub const MIN_SIDE_POINTS: usize = 100;
 
 /// What was characterised: the file as read (empty for a generated wall) and its format.
 pub struct Source<'a> {
     pub file: &'a str,
     pub format: &'a str,
-}
-
-/// The fraction of the scan's points that are missing.
-pub fn missing_fraction(c: &Characterisation) -> f64 {
-    let f = &c.levelled;
-    1.0 - c.parameters.valid_points as f64 / (f.nx * f.ny) as f64
-}
-
-/// The lay's statistics that are defined: `[ξ', ζ']` has a spread.
-fn spread(l: &Lay) -> [bool; 2] {
-    [l.delta_xi > NO_SPREAD_RAD, l.delta_zeta > NO_SPREAD_RAD]
 }
 
 /// `x` when `defined`, else an empty cell.
@@ -129,75 +107,6 @@ pub fn summary_table(src: &Source, c: &Characterisation) -> CsvTable {
     let mut t = CsvTable::new(&SUMMARY_HEADER);
     t.push(row);
     t
-}
-
-/// The notes of the wall card (and the run's warnings): where the wall is outside what the
-/// models assume, or the scan too small or too holed to trust.
-pub fn notes(c: &Characterisation) -> Vec<String> {
-    let mut out = Vec::new();
-    match &c.lay {
-        None => out.push(
-            "no cell of the scan has four valid corners: no lay and no deviations ([wall] and [lay] are left out)"
-                .to_string(),
-        ),
-        Some(l) => {
-            for (symbol, where_, d) in [
-                ("Δξ", "along the lay", l.delta_xi),
-                ("Δζ", "across the lay", l.delta_zeta),
-            ] {
-                let deg = d.to_degrees();
-                if deg > MAX_DEVIATION_DEG {
-                    out.push(format!(
-                        "{symbol} = {}° ({where_}) is beyond {MAX_DEVIATION_DEG}°: the wall models refuse it (they stop at {MAX_DEVIATION_DEG}°; the low-roughness approximation, Eq. 6, at ~{LOW_ROUGHNESS_LIMIT_DEG}°)",
-                        fmt_num(deg)
-                    ));
-                } else if deg > LOW_ROUGHNESS_LIMIT_DEG {
-                    out.push(format!(
-                        "{symbol} = {}° ({where_}) is beyond {LOW_ROUGHNESS_LIMIT_DEG}°, outside the low-roughness approximation (Eq. 6): the models' results are extrapolated",
-                        fmt_num(deg)
-                    ));
-                }
-            }
-            for (k, (angle, where_)) in [("ξ'", "along the lay"), ("ζ'", "across the lay")]
-                .into_iter()
-                .enumerate()
-            {
-                if !spread(l)[k] {
-                    continue;
-                }
-                let (sk, ku) = (l.skewness[k], l.kurtosis[k]);
-                let mut far = Vec::new();
-                if sk.abs() > MAX_ABS_SKEWNESS {
-                    far.push(format!("skewness {sk:.2} (|skewness| > {MAX_ABS_SKEWNESS})"));
-                }
-                if (ku - 3.0).abs() > MAX_EXCESS_KURTOSIS {
-                    far.push(format!("kurtosis {ku:.2} (|kurtosis − 3| > {MAX_EXCESS_KURTOSIS})"));
-                }
-                if !far.is_empty() {
-                    out.push(format!(
-                        "slopes far from Gaussian: {angle} ({where_}) has {}; Gaussian slopes have 0 and 3, and the models assume them",
-                        far.join(" and ")
-                    ));
-                }
-            }
-        }
-    }
-    let missing = missing_fraction(c);
-    if missing > MAX_MISSING_FRACTION {
-        out.push(format!(
-            "{:.1} % of the points are missing (more than {:.0} %): the statistics are those of the measured part",
-            100.0 * missing,
-            100.0 * MAX_MISSING_FRACTION
-        ));
-    }
-    let f = &c.levelled;
-    if f.nx < MIN_SIDE_POINTS || f.ny < MIN_SIDE_POINTS {
-        out.push(format!(
-            "a {} × {} scan has fewer than {MIN_SIDE_POINTS} × {MIN_SIDE_POINTS} points: its statistics are uncertain",
-            f.nx, f.ny
-        ));
-    }
-    out
 }
 
 /// `wall_card.toml`: `[wall]` ready to paste into a case, the lay, the scan, the notes and
@@ -333,6 +242,7 @@ pub fn manifest_table(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use roughwall::surface::scan::notes::notes;
     use roughwall::surface::scan::{characterise, ScanField};
 
     /// A sinusoid along x with its grooves along y, some points missing.

@@ -6,9 +6,8 @@
 //! `[[diameter]]` tables, the `[[diameter]]` of `run.toml` and the notes.
 
 use crate::output::{fmt_num, toml_float, toml_str, CsvTable};
-use roughwall::surface::scan::resolution::{
-    SeenBy, MIN_CORRELATION_AREAS, MIN_EXACT_FRACTION, MIN_PIXELS_PER_LENGTH,
-};
+use roughwall::surface::scan::notes::{criteria, reach_um};
+use roughwall::surface::scan::resolution::SeenBy;
 use roughwall::surface::scan::ScanField;
 
 /// The columns of `wall_card_diameters.csv`.
@@ -24,103 +23,6 @@ pub const DIAMETERS_HEADER: [&str; 10] = [
     "delta_rel_se",
     "note",
 ];
-
-/// Where the scan is too small or too coarse for the particle of `s`, one line per
-/// criterion met (none: the scan serves it).
-pub fn criteria(s: &SeenBy, f: &ScanField) -> Vec<String> {
-    let r = &s.resolution;
-    let point = s.seen.diameter_m == 0.0;
-    let mut out = Vec::new();
-    let [rx, ry] = reach_um(s, f);
-    let band = format!(
-        "the edges lose a band of √(2RΔh) = {} µm along x, {} µm along y",
-        fmt_num(significant(rx, 3)),
-        fmt_num(significant(ry, 3))
-    );
-    if s.seen.lay.is_none() {
-        out.push(format!(
-            "too small: no triangle of the centre surface is exact ({band}): no deviations"
-        ));
-    } else if r.too_small() {
-        let mut why = Vec::new();
-        if r.correlation_areas < MIN_CORRELATION_AREAS {
-            let part = if point { "valid part" } else { "exact part" };
-            let areas = r.correlation_areas.round();
-            let se = (100.0 * r.relative_error()).round();
-            // A length only bounded by a quarter of the scan makes the count an upper bound.
-            why.push(match r.bounded {
-                [false, false] => format!(
-                    "its {part} holds {areas} correlation areas (fewer than {MIN_CORRELATION_AREAS}): Δ is uncertain by about {se} %"
-                ),
-                [along, _] => format!(
-                    "its {part} holds at most {areas} correlation areas (fewer than {MIN_CORRELATION_AREAS}; the autocorrelation does not fall to 1/e within a quarter of the scan {} the lay): Δ is uncertain by about {se} % or more",
-                    if along { "along" } else { "across" }
-                ),
-            });
-        }
-        if r.exact_fraction < MIN_EXACT_FRACTION {
-            let what = if point {
-                "of its points are valid".to_string()
-            } else {
-                format!("of it is exact ({band})")
-            };
-            why.push(format!(
-                "only {} % {what}, less than {} %",
-                fmt_num(significant(100.0 * r.exact_fraction, 3)),
-                100.0 * MIN_EXACT_FRACTION
-            ));
-        }
-        out.push(format!("too small: {}", why.join("; ")));
-    }
-    if r.too_coarse() {
-        let (k, ratio) = r.coarsest();
-        let sphere = match point {
-            true => "",
-            false => "; a sphere's Δ falls at least as much (docs/models.md, \"Measured walls\")",
-        };
-        out.push(format!(
-            "too coarse: {} pixels per correlation length {} the lay (fewer than {MIN_PIXELS_PER_LENGTH}): on a Gaussian wall the triangles' Δ is {} % below the wall's (√((1 − e^(−δ²/c²)) c²/δ²) = {}){sphere}",
-            fmt_num(round(r.pixels_per_length()[k], 2)),
-            ["along", "across"][k],
-            fmt_num(round(100.0 * (1.0 - ratio), 1)),
-            fmt_num(round(ratio, 3)),
-        ));
-    }
-    out
-}
-
-/// The notes of one particle for the run's warnings and the card's `notes`: each criterion
-/// met, labelled with the particle.
-pub fn labelled(s: &SeenBy, f: &ScanField) -> Vec<String> {
-    let label = match s.seen.diameter_m {
-        0.0 => "point particle ([wall])".to_string(),
-        d => format!("D = {} µm", fmt_num(d * 1e6)),
-    };
-    criteria(s, f)
-        .into_iter()
-        .map(|n| format!("{label}: the scan is {n}"))
-        .collect()
-}
-
-/// The reach `√(2RΔh)` (µm) along the scan's `x` and `y`: the band the edges lose.
-fn reach_um(s: &SeenBy, f: &ScanField) -> [f64; 2] {
-    let [rx, ry] = s.seen.reach;
-    [rx as f64 * f.dx * 1e6, ry as f64 * f.dy * 1e6]
-}
-
-/// `x` rounded to `digits` decimals.
-fn round(x: f64, digits: i32) -> f64 {
-    let p = 10f64.powi(digits);
-    (x * p).round() / p
-}
-
-/// `x` rounded to `digits` significant digits.
-fn significant(x: f64, digits: i32) -> f64 {
-    if x == 0.0 || !x.is_finite() {
-        return x;
-    }
-    round(x, digits - 1 - x.abs().log10().floor() as i32)
-}
 
 /// `wall_card_diameters.csv`: one row per particle, the point first; an undefined value (no
 /// exact triangle, no correlation area) is an empty cell.
@@ -223,6 +125,7 @@ pub fn manifest_rows(rows: &[SeenBy], f: &ScanField) -> toml::Value {
 mod tests {
     use super::*;
     use roughwall::surface::scan::characterise;
+    use roughwall::surface::scan::notes::labelled;
     use roughwall::surface::scan::resolution::seen_by;
 
     /// A Gaussian wall generated as a `size`-node scan read every `every`-th node (h = 1 µm,

@@ -19,12 +19,15 @@
 //!   particle of each diameter sees.
 //! * [`resolution`]: whether the scan is large and fine enough for those deviations.
 //! * [`correlation_map`]: the areal autocorrelation over a window of lags.
+//! * [`notes`]: the wall card's notes, in words: where the wall or the scan falls outside
+//!   what the models assume or what the deviations need.
 
 pub mod centre_surface;
 pub mod correlation;
 pub mod correlation_map;
 pub mod lay;
 pub mod levelling;
+pub mod notes;
 pub mod parameters;
 pub mod periodic;
 pub mod resolution;

@@ -1,0 +1,121 @@
+"""Generated and measured walls: Garcia–Stoll surfaces, instrument scans, wall cards."""
+
+from __future__ import annotations
+
+import os
+from typing import NamedTuple, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _args, _roughwall
+
+
+class Surface(NamedTuple):
+    """A height field: heights[iz, ix] (m) at (ix·dx, iz·dz); x along the first correlation
+    length (Δξ), z across it. A generated surface is periodic; a scan's rows are its y."""
+
+    heights: np.ndarray
+    dx: float
+    dz: float
+
+
+def surface(
+    *,
+    length_m: float,
+    nodes: int,
+    rms_height_m: float,
+    corr_length_x_m: Optional[float],
+    corr_length_z_m: Optional[float],
+    seed: int = 0,
+    threads: Optional[int] = None,
+) -> Surface:
+    """A Garcia–Stoll Gaussian rough surface (Radenkovic & Simonin 2021, Eqs. 1–2): a square
+    periodic `nodes` × `nodes` grid of side `length_m` (m), rms height `rms_height_m` (m),
+    Gaussian autocorrelation with correlation lengths `corr_length_x_m`, `corr_length_z_m`
+    (m; None: constant along that axis, e.g. 2-D roughness with `corr_length_z_m=None`,
+    stored as one row). Its normal angles have Δ ≈ √2 h/c_L (Eq. 15). The same seed gives the
+    same surface on any number of threads (`roughwall::surface::generate`, the generator of
+    `rebound surface`)."""
+    heights, dx, dz = _roughwall.surface(
+        float(length_m),
+        _args.count("nodes", nodes, 16, 40_000),
+        float(rms_height_m),
+        None if corr_length_x_m is None else float(corr_length_x_m),
+        None if corr_length_z_m is None else float(corr_length_z_m),
+        _args.seed(seed),
+        _args.threads(threads),
+    )
+    return Surface(heights, dx, dz)
+
+
+class Scan(NamedTuple):
+    """A measured height field: heights[iy, ix] (m, NaN where the instrument measured
+    nothing) at (ix·dx, iy·dy); the file's format and what it states beside the heights."""
+
+    heights: np.ndarray
+    dx: float
+    dy: float
+    format: str
+    info: list
+
+
+def read_scan(
+    path: Union[str, os.PathLike],
+    *,
+    format: Optional[str] = None,
+    pixel_m: Optional[Sequence[float]] = None,
+    height_unit_m: Optional[float] = None,
+) -> Scan:
+    """Reads an instrument scan (X3P, Digital Surf SUR, Gwyddion GSF and text, phase-map
+    text, Zygo MetroPro, Wyko OPD, Sensofar PLU; the readers of `rebound scan`) into heights
+    in metres. `format` None detects it; a plain "matrix" or "xyz" text states no units, so
+    give `pixel_m=(dx, dy)` and `height_unit_m` with it. A file that cannot be read raises
+    OSError, one that is malformed ValueError, with one line naming the file."""
+    heights, dx, dy, fmt, info = _roughwall.read_scan(
+        os.fspath(path),
+        format,
+        None if pixel_m is None else tuple(float(p) for p in pixel_m),
+        None if height_unit_m is None else float(height_unit_m),
+    )
+    return Scan(heights, dx, dy, fmt, info)
+
+
+def wall_card(
+    scan,
+    *,
+    dy: Optional[float] = None,
+    dx: Optional[float] = None,
+    diameters_m: Sequence[float] = (),
+    level_degree: int = 1,
+    threads: Optional[int] = None,
+) -> dict:
+    """The wall card of a measured wall, as `rebound scan` writes it (wall_card.toml): the
+    scan levelled by its least-squares polynomial of `level_degree` (1: plane), ISO 25178
+    parameters, the lay, the normal-angle deviations along and across it (the Δξ, Δζ a Wall
+    takes) and, for each particle diameter in `diameters_m` (m), those of the surface that
+    sphere's centre rides on, with where the scan is too small or too coarse for it.
+
+    `scan` is a Scan (from read_scan), a path to one, or a 2-D height array (m, NaN for a
+    missing point; then give `dx`, `dy` in m). Returns a dict: "wall" (delta_xi_deg,
+    delta_zeta_deg; None without a lay), "lay" (angle_deg in the scan's axes,
+    direction_scan_xy, …), "parameters" (sq_m, sdq, …), "correlation", "diameters" (one
+    dict per particle, the point particle first), "notes", "levelled", "spacing_m".
+    Angles in degrees, lengths in metres."""
+    if isinstance(scan, (str, os.PathLike)):
+        scan = read_scan(scan)
+    if isinstance(scan, Scan):
+        heights, dx, dy = scan.heights, scan.dx, scan.dy
+    else:
+        heights = _args.float_array("scan", scan)
+        if heights.ndim != 2:
+            raise ValueError(f"`scan` has shape {heights.shape}: allowed a 2-D array (ny, nx)")
+        if dx is None or dy is None:
+            raise TypeError("`dx` and `dy`: give the pixel sizes (m) of a height array")
+    return _roughwall.wall_card(
+        heights,
+        float(dx),
+        float(dy),
+        _args.count("level_degree", level_degree, 1, 3),
+        [float(d) for d in diameters_m],
+        _args.threads(threads),
+    )

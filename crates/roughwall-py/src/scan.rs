@@ -1,0 +1,228 @@
+//! Measured walls: an instrument file read by `topography` (the readers `rebound scan`
+//! uses), and a height field levelled and characterised by
+//! `roughwall::surface::scan::characterise`, with the wall card's per-diameter deviations
+//! (`resolution::seen_by`) and notes (`notes`), as `rebound scan` writes them.
+
+use crate::errors::{guarded, invalid, on_threads, to_py};
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple};
+use roughwall::surface::scan::notes::{labelled, notes, spread};
+use roughwall::surface::scan::resolution::{seen_by, SeenBy};
+use roughwall::surface::scan::{characterise, levelling::MAX_DEGREE, Characterisation, ScanField};
+use std::path::PathBuf;
+use topography::{ErrorKind, Format};
+
+/// Diameters a card may hold, as a case's `[scan] diameters_um`.
+const MAX_DIAMETERS: usize = 64;
+
+/// Diameters allowed (m): a nanometre to a metre.
+const DIAMETER_RANGE_M: (f64, f64) = (1e-9, 1.0);
+
+/// Reads an instrument file; returns (heights `(ny, nx)` in metres with NaN for missing
+/// points, `dx`, `dy` in metres, the format's name, the file's other information).
+#[pyfunction]
+#[pyo3(signature = (path, format, pixel_m, height_unit_m))]
+pub fn read_scan<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    format: Option<String>,
+    pixel_m: Option<(f64, f64)>,
+    height_unit_m: Option<f64>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let format = match format.as_deref() {
+        None | Some("auto") => None,
+        Some(name) => Some(Format::from_name(name).ok_or_else(|| {
+            let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
+            invalid(
+                "format",
+                format!("\"{name}\""),
+                &format!("\"auto\" or one of {}", names.join(", ")),
+            )
+        })?),
+    };
+    let units = matches!(format, Some(Format::Matrix | Format::Xyz));
+    if units != (pixel_m.is_some() && height_unit_m.is_some()) || (!units && pixel_m.is_some()) {
+        return Err(PyValueError::new_err(
+            "`pixel_m` and `height_unit_m`: give both with format=\"matrix\" or \"xyz\" (their files state no units), and neither otherwise",
+        ));
+    }
+    let t = py.detach(|| {
+        guarded(|| {
+            let read = match (format, pixel_m, height_unit_m) {
+                (Some(Format::Matrix), Some((dx, dy)), Some(u)) => {
+                    topography::read_matrix(&path, dx, dy, u)
+                }
+                (Some(Format::Xyz), Some((dx, dy)), Some(u)) => topography::read_xyz(&path, 1.0, u)
+                    .map(|mut t| {
+                        t.dx_m = dx;
+                        t.dy_m = dy;
+                        t
+                    }),
+                (Some(f), _, _) => topography::read_as(&path, f),
+                (None, _, _) => topography::read(&path),
+            };
+            read.map_err(|e| match e.kind() {
+                ErrorKind::Io => PyOSError::new_err(e.to_string()),
+                _ => PyValueError::new_err(e.to_string()),
+            })
+        })
+    })?;
+    let heights = PyArray1::from_vec(py, t.heights_m).reshape([t.ny, t.nx])?;
+    PyTuple::new(
+        py,
+        [
+            heights.into_any(),
+            t.dx_m.into_pyobject(py)?.into_any(),
+            t.dy_m.into_pyobject(py)?.into_any(),
+            t.format.name().into_pyobject(py)?.into_any(),
+            PyList::new(py, t.info)?.into_any(),
+        ],
+    )
+}
+
+fn deg(x: f64) -> f64 {
+    x.to_degrees()
+}
+
+/// One particle's row of the card: what `wall_card_diameters.csv` holds.
+fn diameter_row<'py>(py: Python<'py>, s: &SeenBy, f: &ScanField) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let r = &s.resolution;
+    d.set_item("diameter_m", s.seen.diameter_m)?;
+    d.set_item("delta_xi_deg", s.seen.lay.map(|l| deg(l.delta_xi)))?;
+    d.set_item("delta_zeta_deg", s.seen.lay.map(|l| deg(l.delta_zeta)))?;
+    d.set_item("exact_fraction", r.exact_fraction)?;
+    let [rx, ry] = roughwall::surface::scan::notes::reach_um(s, f);
+    d.set_item("reach_m", (rx * 1e-6, ry * 1e-6))?;
+    d.set_item("footprint_m", r.footprint_m)?;
+    d.set_item("correlation_areas", r.correlation_areas)?;
+    let se = r.relative_error();
+    d.set_item("delta_rel_se", se.is_finite().then_some(se))?;
+    d.set_item("too_small", s.seen.lay.is_none() || r.too_small())?;
+    d.set_item("too_coarse", r.too_coarse())?;
+    d.set_item("notes", labelled(s, f))?;
+    Ok(d)
+}
+
+/// The characterisation as a dict (lengths in metres, angles in degrees).
+fn card<'py>(
+    py: Python<'py>,
+    c: Characterisation,
+    seen: &[SeenBy],
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    let p = &c.parameters;
+    let params = PyDict::new(py);
+    params.set_item("valid_points", p.valid_points)?;
+    params.set_item("mean_m", p.mean_m)?;
+    params.set_item("sq_m", p.sq_m)?;
+    params.set_item("ssk", p.ssk)?;
+    params.set_item("sku", p.sku)?;
+    params.set_item("sdq", p.sdq)?;
+    params.set_item("sdq_x", p.sdq_x)?;
+    params.set_item("sdq_y", p.sdq_y)?;
+    out.set_item("parameters", params)?;
+    out.set_item("level_degree", c.degree)?;
+    match &c.lay {
+        Some(l) => {
+            let wall = PyDict::new(py);
+            wall.set_item("delta_xi_deg", deg(l.delta_xi))?;
+            wall.set_item("delta_zeta_deg", deg(l.delta_zeta))?;
+            out.set_item("wall", wall)?;
+            let lay = PyDict::new(py);
+            let [sx, sz] = spread(l);
+            lay.set_item("angle_deg", (sx || sz).then_some(deg(l.angle)))?;
+            lay.set_item("direction_scan_xy", (l.angle.cos(), l.angle.sin()))?;
+            lay.set_item("rho", (sx && sz).then_some(l.rho))?;
+            lay.set_item("skewness", (l.skewness[0], l.skewness[1]))?;
+            lay.set_item("kurtosis", (l.kurtosis[0], l.kurtosis[1]))?;
+            lay.set_item(
+                "delta_scan_axes_deg",
+                (deg(l.delta_scan_axes[0]), deg(l.delta_scan_axes[1])),
+            )?;
+            lay.set_item("triangles", l.triangles)?;
+            out.set_item("lay", lay)?;
+        }
+        None => {
+            out.set_item("wall", py.None())?;
+            out.set_item("lay", py.None())?;
+        }
+    }
+    let corr = PyDict::new(py);
+    let k = &c.correlation;
+    corr.set_item("angle_deg", deg(k.angle))?;
+    corr.set_item("lags_m", PyArray1::from_slice(py, &k.lags_m))?;
+    corr.set_item("along", PyArray1::from_slice(py, &k.along))?;
+    corr.set_item("across", PyArray1::from_slice(py, &k.across))?;
+    corr.set_item("length_along_m", k.length_along_m)?;
+    corr.set_item("length_across_m", k.length_across_m)?;
+    out.set_item("correlation", corr)?;
+    // The card's notes: the wall's and the point particle's, as `rebound scan` writes them;
+    // a sphere's are in its row.
+    let mut card_notes = notes(&c);
+    let rows = PyList::empty(py);
+    for s in seen {
+        rows.append(diameter_row(py, s, &c.levelled)?)?;
+        if s.seen.diameter_m == 0.0 {
+            card_notes.extend(labelled(s, &c.levelled));
+        }
+    }
+    out.set_item("diameters", rows)?;
+    out.set_item("notes", card_notes)?;
+    let f = c.levelled;
+    out.set_item("spacing_m", (f.dx, f.dy))?;
+    out.set_item(
+        "levelled",
+        PyArray1::from_vec(py, f.heights).reshape([f.ny, f.nx])?,
+    )?;
+    Ok(out)
+}
+
+/// Levels the heights `(ny, nx)` (m, NaN for a missing point; spacings `dx`, `dy` in m) by
+/// a polynomial of degree `level_degree` and characterises them, with the deviations a
+/// particle of each of `diameters_m` sees (the point particle first).
+#[pyfunction]
+#[pyo3(signature = (heights, dx, dy, level_degree, diameters_m, threads))]
+pub fn wall_card<'py>(
+    py: Python<'py>,
+    heights: PyReadonlyArray2<'py, f64>,
+    dx: f64,
+    dy: f64,
+    level_degree: u32,
+    diameters_m: Vec<f64>,
+    threads: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    if !(1..=MAX_DEGREE).contains(&level_degree) {
+        return Err(invalid("level_degree", level_degree, "1, 2 or 3"));
+    }
+    if diameters_m.len() > MAX_DIAMETERS {
+        return Err(invalid(
+            "diameters_m",
+            format!("{} diameters", diameters_m.len()),
+            &format!("at most {MAX_DIAMETERS}"),
+        ));
+    }
+    let (lo, hi) = DIAMETER_RANGE_M;
+    if let Some(d) = diameters_m.iter().find(|d| !(lo..=hi).contains(*d)) {
+        return Err(invalid(
+            "diameters_m",
+            d,
+            &format!("diameters from {lo} to {hi} m"),
+        ));
+    }
+    let [ny, nx] = [heights.shape()[0], heights.shape()[1]];
+    let h = heights.as_array().iter().copied().collect::<Vec<f64>>();
+    let field = ScanField::new(nx, ny, dx, dy, h).map_err(to_py)?;
+    let (c, seen) = py.detach(|| {
+        guarded(|| {
+            on_threads(threads, || {
+                let c = characterise(field, level_degree).map_err(to_py)?;
+                let seen = seen_by(&c, &diameters_m).unwrap_or_default();
+                Ok((c, seen))
+            })?
+        })
+    })?;
+    card(py, c, &seen)
+}

@@ -1,0 +1,202 @@
+//! The notes of a wall card (`rebound scan`'s `wall_card.toml`, its warnings, and the
+//! Python package's `roughwall.wall_card`): where a characterised scan is outside what the
+//! models assume (deviations beyond the low-roughness range of Radenkovic & Simonin 2021,
+//! Eq. 6, slopes far from Gaussian), too holed or too small to trust, and, per particle
+//! diameter, where it is too small or too coarse for the deviations that particle sees (the
+//! criteria of [`super::resolution`]). One line per note, in words.
+
+use super::lay::Lay;
+use super::resolution::{SeenBy, MIN_CORRELATION_AREAS, MIN_EXACT_FRACTION, MIN_PIXELS_PER_LENGTH};
+use super::{Characterisation, ScanField};
+use crate::format::fmt_num;
+use crate::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
+
+/// Below this spread (rad) an angle is constant: its shape (skewness, kurtosis, correlation)
+/// is undefined, as the library's `lay` takes it.
+pub const NO_SPREAD_RAD: f64 = 1e-12;
+
+/// A slope angle whose |skewness| exceeds this is noted as far from Gaussian.
+pub const MAX_ABS_SKEWNESS: f64 = 0.5;
+/// A slope angle whose |kurtosis − 3| exceeds this is noted as far from Gaussian.
+pub const MAX_EXCESS_KURTOSIS: f64 = 1.0;
+/// More missing points than this fraction are noted.
+pub const MAX_MISSING_FRACTION: f64 = 0.10;
+/// A scan with fewer points than this along a side is noted as small.
+pub const MIN_SIDE_POINTS: usize = 100;
+
+/// The fraction of the scan's points that are missing.
+pub fn missing_fraction(c: &Characterisation) -> f64 {
+    let f = &c.levelled;
+    1.0 - c.parameters.valid_points as f64 / (f.nx * f.ny) as f64
+}
+
+/// The lay's statistics that are defined: `[ξ', ζ']` has a spread.
+pub fn spread(l: &Lay) -> [bool; 2] {
+    [l.delta_xi > NO_SPREAD_RAD, l.delta_zeta > NO_SPREAD_RAD]
+}
+
+/// The notes of the wall card (and the run's warnings): where the wall is outside what the
+/// models assume, or the scan too small or too holed to trust.
+pub fn notes(c: &Characterisation) -> Vec<String> {
+    let mut out = Vec::new();
+    match &c.lay {
+        None => out.push(
+            "no cell of the scan has four valid corners: no lay and no deviations ([wall] and [lay] are left out)"
+                .to_string(),
+        ),
+        Some(l) => {
+            for (symbol, where_, d) in [
+                ("Δξ", "along the lay", l.delta_xi),
+                ("Δζ", "across the lay", l.delta_zeta),
+            ] {
+                let deg = d.to_degrees();
+                if deg > MAX_DEVIATION_DEG {
+                    out.push(format!(
+                        "{symbol} = {}° ({where_}) is beyond {MAX_DEVIATION_DEG}°: the wall models refuse it (they stop at {MAX_DEVIATION_DEG}°; the low-roughness approximation, Eq. 6, at ~{LOW_ROUGHNESS_LIMIT_DEG}°)",
+                        fmt_num(deg)
+                    ));
+                } else if deg > LOW_ROUGHNESS_LIMIT_DEG {
+                    out.push(format!(
+                        "{symbol} = {}° ({where_}) is beyond {LOW_ROUGHNESS_LIMIT_DEG}°, outside the low-roughness approximation (Eq. 6): the models' results are extrapolated",
+                        fmt_num(deg)
+                    ));
+                }
+            }
+            for (k, (angle, where_)) in [("ξ'", "along the lay"), ("ζ'", "across the lay")]
+                .into_iter()
+                .enumerate()
+            {
+                if !spread(l)[k] {
+                    continue;
+                }
+                let (sk, ku) = (l.skewness[k], l.kurtosis[k]);
+                let mut far = Vec::new();
+                if sk.abs() > MAX_ABS_SKEWNESS {
+                    far.push(format!("skewness {sk:.2} (|skewness| > {MAX_ABS_SKEWNESS})"));
+                }
+                if (ku - 3.0).abs() > MAX_EXCESS_KURTOSIS {
+                    far.push(format!("kurtosis {ku:.2} (|kurtosis − 3| > {MAX_EXCESS_KURTOSIS})"));
+                }
+                if !far.is_empty() {
+                    out.push(format!(
+                        "slopes far from Gaussian: {angle} ({where_}) has {}; Gaussian slopes have 0 and 3, and the models assume them",
+                        far.join(" and ")
+                    ));
+                }
+            }
+        }
+    }
+    let missing = missing_fraction(c);
+    if missing > MAX_MISSING_FRACTION {
+        out.push(format!(
+            "{:.1} % of the points are missing (more than {:.0} %): the statistics are those of the measured part",
+            100.0 * missing,
+            100.0 * MAX_MISSING_FRACTION
+        ));
+    }
+    let f = &c.levelled;
+    if f.nx < MIN_SIDE_POINTS || f.ny < MIN_SIDE_POINTS {
+        out.push(format!(
+            "a {} × {} scan has fewer than {MIN_SIDE_POINTS} × {MIN_SIDE_POINTS} points: its statistics are uncertain",
+            f.nx, f.ny
+        ));
+    }
+    out
+}
+
+/// Where the scan is too small or too coarse for the particle of `s`, one line per
+/// criterion met (none: the scan serves it).
+pub fn criteria(s: &SeenBy, f: &ScanField) -> Vec<String> {
+    let r = &s.resolution;
+    let point = s.seen.diameter_m == 0.0;
+    let mut out = Vec::new();
+    let [rx, ry] = reach_um(s, f);
+    let band = format!(
+        "the edges lose a band of √(2RΔh) = {} µm along x, {} µm along y",
+        fmt_num(significant(rx, 3)),
+        fmt_num(significant(ry, 3))
+    );
+    if s.seen.lay.is_none() {
+        out.push(format!(
+            "too small: no triangle of the centre surface is exact ({band}): no deviations"
+        ));
+    } else if r.too_small() {
+        let mut why = Vec::new();
+        if r.correlation_areas < MIN_CORRELATION_AREAS {
+            let part = if point { "valid part" } else { "exact part" };
+            let areas = r.correlation_areas.round();
+            let se = (100.0 * r.relative_error()).round();
+            // A length only bounded by a quarter of the scan makes the count an upper bound.
+            why.push(match r.bounded {
+                [false, false] => format!(
+                    "its {part} holds {areas} correlation areas (fewer than {MIN_CORRELATION_AREAS}): Δ is uncertain by about {se} %"
+                ),
+                [along, _] => format!(
+                    "its {part} holds at most {areas} correlation areas (fewer than {MIN_CORRELATION_AREAS}; the autocorrelation does not fall to 1/e within a quarter of the scan {} the lay): Δ is uncertain by about {se} % or more",
+                    if along { "along" } else { "across" }
+                ),
+            });
+        }
+        if r.exact_fraction < MIN_EXACT_FRACTION {
+            let what = if point {
+                "of its points are valid".to_string()
+            } else {
+                format!("of it is exact ({band})")
+            };
+            why.push(format!(
+                "only {} % {what}, less than {} %",
+                fmt_num(significant(100.0 * r.exact_fraction, 3)),
+                100.0 * MIN_EXACT_FRACTION
+            ));
+        }
+        out.push(format!("too small: {}", why.join("; ")));
+    }
+    if r.too_coarse() {
+        let (k, ratio) = r.coarsest();
+        let sphere = match point {
+            true => "",
+            false => "; a sphere's Δ falls at least as much (docs/models.md, \"Measured walls\")",
+        };
+        out.push(format!(
+            "too coarse: {} pixels per correlation length {} the lay (fewer than {MIN_PIXELS_PER_LENGTH}): on a Gaussian wall the triangles' Δ is {} % below the wall's (√((1 − e^(−δ²/c²)) c²/δ²) = {}){sphere}",
+            fmt_num(round(r.pixels_per_length()[k], 2)),
+            ["along", "across"][k],
+            fmt_num(round(100.0 * (1.0 - ratio), 1)),
+            fmt_num(round(ratio, 3)),
+        ));
+    }
+    out
+}
+
+/// The notes of one particle for the run's warnings and the card's `notes`: each criterion
+/// met, labelled with the particle.
+pub fn labelled(s: &SeenBy, f: &ScanField) -> Vec<String> {
+    let label = match s.seen.diameter_m {
+        0.0 => "point particle ([wall])".to_string(),
+        d => format!("D = {} µm", fmt_num(d * 1e6)),
+    };
+    criteria(s, f)
+        .into_iter()
+        .map(|n| format!("{label}: the scan is {n}"))
+        .collect()
+}
+
+/// The reach `√(2RΔh)` (µm) along the scan's `x` and `y`: the band the edges lose.
+pub fn reach_um(s: &SeenBy, f: &ScanField) -> [f64; 2] {
+    let [rx, ry] = s.seen.reach;
+    [rx as f64 * f.dx * 1e6, ry as f64 * f.dy * 1e6]
+}
+
+/// `x` rounded to `digits` decimals.
+fn round(x: f64, digits: i32) -> f64 {
+    let p = 10f64.powi(digits);
+    (x * p).round() / p
+}
+
+/// `x` rounded to `digits` significant digits.
+fn significant(x: f64, digits: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    round(x, digits - 1 - x.abs().log10().floor() as i32)
+}

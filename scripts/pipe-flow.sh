@@ -10,7 +10,8 @@
 # each rough wall with the paper's model and `calibrated`, the isotropic one also with
 # Sommerfeld-Huber 1999; the Sec. 4 glass-steel collision law everywhere.
 # Full mode: 4000 particles per run, 0.5 s (about 170 D) before a 0.4 s sampling window, plus
-# a finer mesh and a later window for one wall (the checks of docs/pipe-flow.md). Quick mode
+# a finer mesh (the isotropic and the smooth wall) and a later window for one wall (the
+# checks of docs/pipe-flow.md). Quick mode
 # (REBOUND_QUICK=1 or --quick; what reproduce-all.sh runs): 400 particles, 0.1 s + 0.1 s, no
 # checks. `rebound pipe-stats` turns the runs into $REBOUND_RESULTS/pipe-flow/ (quick mode:
 # pipe-flow-quick/; CSV, SVG).
@@ -69,6 +70,8 @@ for d in $DIAMETERS_UM; do
 done
 if [ "$QUICK" != 1 ]; then
   particles_run 200um-iso-paper-fine mesh "$WORK/fine" 200 iso paper
+  # the smooth wall's settled bed moves with the flow of the first cells: check it too
+  particles_run 200um-smooth-paper-fine mesh "$WORK/fine" 200 smooth paper
   # the same wall sampled after 0.9 s instead of 0.5 s: is the flow of particles developed?
   late=$(awk -v a="$T_DEV" -v b="$T_WIN" 'BEGIN { print a + b }')
   particles_run 200um-iso-paper-late development "$WORK/coarse" 200 iso paper \

@@ -16,11 +16,12 @@ fn write_run(dir: &Path, ux: f64, hits: usize, dalpha: f64) {
     std::fs::create_dir_all(dir).unwrap();
     std::fs::write(dir.join("pipe.params"), PARAMS).unwrap();
     let mut p = String::from(
-        "particle_id,n,dist,hits,cy_0,cy_1,cz_0,cz_1,ux_0,ux_1,ux2_0,ux2_1,ur_0,ur_1,ur2_0,ur2_1\n",
+        "particle_id,n,dist,hits,sum_y,cy_0,cy_1,cz_0,cz_1,ux_0,ux_1,ux2_0,ux2_1,ur_0,ur_1,ur2_0,ur2_1\n",
     );
     for id in 0..40 {
+        // at y = −R/2: sum_y = 10 × −0.0125 m
         p.push_str(&format!(
-            "{id},10,1,{hits},10,0,5,5,{},0,{},0,0,0,0,0\n",
+            "{id},10,1,{hits},-0.125,10,0,5,5,{},0,{},0,0,0,0,0\n",
             10.0 * ux,
             10.0 * ux * ux
         ));
@@ -35,6 +36,8 @@ fn write_run(dir: &Path, ux: f64, hits: usize, dalpha: f64) {
             ));
         }
     }
+    // a hit the library found not approaching the wall (status 1) is logged, not counted
+    h.push_str("0,99,50,-0.025,0,10,3,20,20,10,0,1,1\n");
     std::fs::write(dir.join("hits_rank0000.csv"), h).unwrap();
 }
 
@@ -182,5 +185,17 @@ fn pipe_stats_refuses_what_is_not_a_study() {
         out.to_str().unwrap(),
     ])
     .refused("particles.csv");
+    // a run whose hit log is missing: its tallies count rebounds the logs do not hold
+    let s = d.path().join("study2");
+    study(&s);
+    std::fs::remove_file(s.join("runs/a/hits_rank0000.csv")).unwrap();
+    rebound(&[
+        "pipe-stats",
+        "--study",
+        s.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+    .refused("missing or truncated");
     assert!(!out.exists(), "a refused run wrote --out");
 }

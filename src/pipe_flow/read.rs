@@ -42,7 +42,10 @@ pub struct ParticleRow {
     pub samples: f64,
     /// Axial distance travelled (m).
     pub dist: f64,
+    /// Wall rebounds (status OK) in the window.
     pub hits: f64,
+    /// Sum of the heights y at the samples (m).
+    pub sum_y: f64,
     /// Samples per horizontal slab (bins of y), per vertical slab (bins of z).
     pub cy: Vec<f64>,
     pub cz: Vec<f64>,
@@ -53,7 +56,7 @@ pub struct ParticleRow {
     pub ur2: Vec<f64>,
 }
 
-/// One wall hit in the sampling window.
+/// One wall rebound in the sampling window (a logged hit whose status is `RW_OK`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
     pub particle_id: usize,
@@ -185,6 +188,7 @@ pub fn particles(dir: &Path, n_bins: usize) -> Result<Vec<ParticleRow>> {
             samples: num(r, "n", &path)?,
             dist: num(r, "dist", &path)?,
             hits: num(r, "hits", &path)?,
+            sum_y: num(r, "sum_y", &path)?,
             cy: group("cy")?,
             cz: group("cz")?,
             ux: group("ux")?,
@@ -199,7 +203,8 @@ pub fn particles(dir: &Path, n_bins: usize) -> Result<Vec<ParticleRow>> {
     Ok(out)
 }
 
-/// A run's wall hits (every `hits_rank*.csv`; none is no hit).
+/// A run's wall rebounds: the hits of every `hits_rank*.csv` whose `status` is 0 (`RW_OK`;
+/// a hit the library refused or found not approaching the wall is no rebound).
 pub fn hits(dir: &Path) -> Result<Vec<Hit>> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
         .map_err(|e| bad(dir, e))?
@@ -217,6 +222,9 @@ pub fn hits(dir: &Path) -> Result<Vec<Hit>> {
             continue;
         };
         for r in &rows.rows {
+            if num(r, "status", &path)? != 0.0 {
+                continue;
+            }
             out.push(Hit {
                 particle_id: num(r, "particle_id", &path)? as usize,
                 y: num(r, "y", &path)?,
@@ -241,6 +249,19 @@ pub fn study(study: &Path) -> Result<Vec<Run>> {
             let params = params(&info.dir)?;
             let particles = particles(&info.dir, params.n_bins)?;
             let hits = hits(&info.dir)?;
+            // Every rebound the tallies counted must be in the logs (a lost or truncated
+            // hits_rank*.csv would bias every hit statistic).
+            let counted: f64 = particles.iter().map(|p| p.hits).sum();
+            if counted != hits.len() as f64 {
+                return Err(bad(
+                    &info.dir,
+                    format!(
+                        "particles.csv counts {counted} rebounds but hits_rank*.csv log {} \
+                         (a log is missing or truncated)",
+                        hits.len()
+                    ),
+                ));
+            }
             Ok(Run {
                 info,
                 params,

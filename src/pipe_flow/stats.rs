@@ -37,10 +37,10 @@ fn area_share(b: usize, nb: usize) -> f64 {
 }
 
 /// A whole-run quantity: its column name (docs/outputs.md says what each is) and its
-/// statistic of one run's sums.
+/// statistic of one run's sums and the pipe radius (m).
 pub struct Quantity {
     pub name: &'static str,
-    pub f: fn(&Layout, &[f64]) -> f64,
+    pub f: fn(&Layout, &[f64], f64) -> f64,
 }
 
 fn total_over_bins(l: &Layout, s: &[f64], at: fn(&Layout, usize) -> usize) -> f64 {
@@ -57,65 +57,67 @@ fn sqrt_var(var: f64) -> f64 {
     }
 }
 
-/// The rms about its mean of a velocity component over every sample: its sums and sums of
-/// squares per slab are at `sum` and `sq`.
-fn overall_rms(
+/// The rms fluctuation of a velocity component about its local mean: the variance within
+/// each horizontal slab (about that slab's mean), averaged over the samples, so that the
+/// mean profile's variation across the pipe does not count as fluctuation. Its sums and sums
+/// of squares per slab are at `sum` and `sq`.
+fn fluctuation_rms(
     l: &Layout,
     s: &[f64],
     sum: fn(&Layout, usize) -> usize,
     sq: fn(&Layout, usize) -> usize,
 ) -> f64 {
-    let n = s[Layout::SAMPLES];
-    let m = total_over_bins(l, s, sum) / n;
-    sqrt_var(total_over_bins(l, s, sq) / n - m * m)
+    let within: f64 = (0..l.nb)
+        .filter(|&b| s[l.cy(b)] > 0.0)
+        .map(|b| s[sq(l, b)] - s[sum(l, b)] * s[sum(l, b)] / s[l.cy(b)])
+        .sum();
+    sqrt_var(within / s[Layout::SAMPLES])
 }
 
 /// m/kg of wall thickness per mass conveyed → µm per tonne.
 const M_PER_KG_TO_UM_PER_T: f64 = 1e9;
 
-/// The study's whole-run quantities (`summary.csv`, `comparisons.csv`). The erosion
-/// quantities need the pipe radius and are in [`erosion_um_per_t`].
-pub const QUANTITIES: [Quantity; 9] = [
+/// The study's whole-run quantities (`summary.csv`, `comparisons.csv`), in column order.
+pub const QUANTITIES: [Quantity; 10] = [
     Quantity {
         name: "collisions_per_m",
-        f: |_, s| s[Layout::HITS] / s[Layout::DIST],
+        f: |_, s, _| s[Layout::HITS] / s[Layout::DIST],
     },
     Quantity {
         name: "mean_ux_m_s",
-        f: |l, s| total_over_bins(l, s, Layout::ux) / s[Layout::SAMPLES],
+        f: |l, s, _| total_over_bins(l, s, Layout::ux) / s[Layout::SAMPLES],
     },
     Quantity {
         name: "rms_ux_m_s",
-        f: |l, s| overall_rms(l, s, Layout::ux, Layout::ux2),
+        f: |l, s, _| fluctuation_rms(l, s, Layout::ux, Layout::ux2),
     },
     Quantity {
         name: "rms_ur_m_s",
-        f: |l, s| overall_rms(l, s, Layout::ur, Layout::ur2),
+        f: |l, s, _| fluctuation_rms(l, s, Layout::ur, Layout::ur2),
     },
     Quantity {
         name: "mean_height_over_r",
-        f: |l, s| {
-            (0..l.nb)
-                .map(|b| s[l.cy(b)] * bin_centre_over_r(b, l.nb))
-                .sum::<f64>()
-                / s[Layout::SAMPLES]
-        },
+        f: |_, s, r| s[Layout::SUM_Y] / s[Layout::SAMPLES] / r,
     },
     Quantity {
         name: "bottom_half_fraction",
-        f: |l, s| (0..l.nb / 2).map(|b| s[l.cy(b)]).sum::<f64>() / s[Layout::SAMPLES],
+        f: |l, s, _| (0..l.nb / 2).map(|b| s[l.cy(b)]).sum::<f64>() / s[Layout::SAMPLES],
     },
     Quantity {
         name: "mean_alpha_in_deg",
-        f: |l, s| s[l.sum_alpha_in()] / s[l.logged_hits()],
+        f: |l, s, _| s[l.sum_alpha_in()] / s[l.logged_hits()],
     },
     Quantity {
         name: "mean_alpha_change_deg",
-        f: |l, s| s[l.sum_alpha_change()] / s[l.logged_hits()],
+        f: |l, s, _| s[l.sum_alpha_change()] / s[l.logged_hits()],
     },
     Quantity {
         name: "mean_deflection_deg",
-        f: |l, s| s[l.sum_deflection()] / s[l.logged_hits()],
+        f: |l, s, _| s[l.sum_deflection()] / s[l.logged_hits()],
+    },
+    Quantity {
+        name: "erosion_um_per_t",
+        f: erosion_um_per_t,
     },
 ];
 
@@ -226,5 +228,11 @@ mod tests {
         assert!((band_area(2.0, -2.0, 0.0) - 2.0 * std::f64::consts::PI).abs() < 1e-12);
         // symmetric slabs have equal areas
         assert!((area_share(0, 20) - area_share(19, 20)).abs() < 1e-15);
+        // a chord band against its closed form: ∫₀^½ 2√(1 − y²) dy = ½·√¾ + asin ½
+        let exact = 0.5 * 0.75f64.sqrt() + std::f64::consts::FRAC_PI_6;
+        assert!((band_area(1.0, 0.0, 0.5) - exact).abs() < 1e-14);
+        // the band at the wall is thinner than a rectangle of its height, the one at the axis
+        // wider than the mean
+        assert!(area_share(0, 20) < area_share(10, 20) / 2.0);
     }
 }

@@ -27,26 +27,28 @@ impl Layout {
     pub const SAMPLES: usize = 0;
     pub const DIST: usize = 1;
     pub const HITS: usize = 2;
+    /// Σ y over the samples (m).
+    pub const SUM_Y: usize = 3;
     pub fn cy(&self, b: usize) -> usize {
-        3 + b
+        4 + b
     }
     pub fn cz(&self, b: usize) -> usize {
-        3 + self.nb + b
+        4 + self.nb + b
     }
     pub fn ux(&self, b: usize) -> usize {
-        3 + 2 * self.nb + b
+        4 + 2 * self.nb + b
     }
     pub fn ux2(&self, b: usize) -> usize {
-        3 + 3 * self.nb + b
+        4 + 3 * self.nb + b
     }
     pub fn ur(&self, b: usize) -> usize {
-        3 + 4 * self.nb + b
+        4 + 4 * self.nb + b
     }
     pub fn ur2(&self, b: usize) -> usize {
-        3 + 5 * self.nb + b
+        4 + 5 * self.nb + b
     }
     fn h0(&self) -> usize {
-        3 + 6 * self.nb
+        4 + 6 * self.nb
     }
     /// Hits logged (equal to the `HITS` column's sum when every hit was logged).
     pub fn logged_hits(&self) -> usize {
@@ -113,6 +115,7 @@ pub fn sums(run: &Run, finnie: &Finnie) -> RunSums {
         s[Layout::SAMPLES] += p.samples;
         s[Layout::DIST] += p.dist;
         s[Layout::HITS] += p.hits;
+        s[Layout::SUM_Y] += p.sum_y;
         for b in 0..layout.nb {
             s[layout.cy(b)] += p.cy[b];
             s[layout.cz(b)] += p.cz[b];

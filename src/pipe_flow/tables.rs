@@ -4,7 +4,7 @@
 
 use super::jackknife::{estimate, Estimate};
 use super::read::Run;
-use super::stats::{angle_pdf, erosion_profile, erosion_um_per_t, profile, QUANTITIES};
+use super::stats::{angle_pdf, erosion_profile, profile, QUANTITIES};
 use super::sums::RunSums;
 use crate::output::csv::CsvTable;
 use roughwall::format::fmt_num;
@@ -21,31 +21,23 @@ impl Analysed<'_> {
     }
 }
 
-/// The whole-run quantities of `runs` (same order): `(name, estimate)` per quantity, the
-/// erosion last.
+/// The whole-run quantities of one run (`runs` = `[a]`) or of the difference of two
+/// (`[a, b]`: a − b, paired), `(name, estimate)` per quantity.
 pub fn quantities(runs: &[&Analysed]) -> Vec<(&'static str, Estimate)> {
     let sums: Vec<&RunSums> = runs.iter().map(|a| &a.sums).collect();
     let l = sums[0].layout;
-    let mut out: Vec<(&'static str, Estimate)> = QUANTITIES
+    let r: Vec<f64> = runs.iter().map(|a| a.radius()).collect();
+    QUANTITIES
         .iter()
         .map(|q| {
             let f = q.f;
             let e = match sums.len() {
-                1 => estimate(&sums, |s| f(&l, s[0])),
-                _ => estimate(&sums, |s| f(&l, s[0]) - f(&l, s[1])),
+                1 => estimate(&sums, |s| f(&l, s[0], r[0])),
+                _ => estimate(&sums, |s| f(&l, s[0], r[0]) - f(&l, s[1], r[1])),
             };
             (q.name, e)
         })
-        .collect();
-    let r: Vec<f64> = runs.iter().map(|a| a.radius()).collect();
-    let e = match sums.len() {
-        1 => estimate(&sums, |s| erosion_um_per_t(&l, s[0], r[0])),
-        _ => estimate(&sums, |s| {
-            erosion_um_per_t(&l, s[0], r[0]) - erosion_um_per_t(&l, s[1], r[1])
-        }),
-    };
-    out.push(("erosion_um_per_t", e));
-    out
+        .collect()
 }
 
 fn id_cells(a: &Analysed) -> Vec<String> {
@@ -75,11 +67,7 @@ pub fn summary(runs: &[Analysed]) -> CsvTable {
     ]
     .map(String::from)
     .to_vec();
-    let names: Vec<&str> = QUANTITIES
-        .iter()
-        .map(|q| q.name)
-        .chain(["erosion_um_per_t"])
-        .collect();
+    let names: Vec<&str> = QUANTITIES.iter().map(|q| q.name).collect();
     for n in &names {
         header.push(n.to_string());
         header.push(format!("{n}_se"));

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # run_checks.sh WORK: the coarse pipe-flow study the tests run (tests/real_systems/pipe_flow.rs),
-# in about a minute: a coarse mesh (6 x 6 cells per quarter and ring, 10 along the axis), 300
+# in about 15 s: a coarse mesh (6 x 6 cells per quarter and ring, 10 along the axis), 300
 # fluid steps, 300 particles of 150 um, 0.05 s before a 0.1 s window, the elastic law:
 #   main:        smooth, isotropic (5.95 deg), lay along the axis and around the circumference,
 #                (3.8, 7.5) deg, the paper's model, 1 rank, code_saturne's dispersion on;

@@ -15,10 +15,16 @@ model_code() { case $1 in paper) echo 0 ;; sh1999) echo 1 ;; calibrated) echo 5 
 steps() { awk -v t="$1" -v dt="$DT" 'BEGIN { printf "%d", t / dt + 0.5 }'; }
 
 study_init() {
+  WORK=${WORK%/}
   # one run at a time per study directory: a second one would delete the first one's runs
   mkdir -p "$(dirname "$WORK")"
   exec 9> "$WORK.lock"
   flock -n 9 || { echo "pipe-flow: $WORK is in use by another run (lock $WORK.lock)" >&2; exit 1; }
+  # never delete a directory that is not a previous study (or empty)
+  if [ -d "$WORK" ] && [ ! -f "$WORK/study.tsv" ] && [ -n "$(ls -A "$WORK")" ]; then
+    echo "pipe-flow: $WORK holds files that are not a pipe-flow study; give a new or empty directory" >&2
+    exit 1
+  fi
   rm -rf "$WORK"
   mkdir -p "$WORK/runs" "$WORK/params"
   printf 'name\tkind\tdiameter_um\twall\tmodel\tdir\n' > "$WORK/study.tsv"
@@ -71,32 +77,36 @@ inject() {
 particles_run() {
   local name=$1 kind=$2 s=$3 d=$4 wall=$5 model=$6
   shift 6
-  local code="" xi ze w wn np=$NP nprocs=1 extra=()
+  local code="" xi ze w wn np=$NP nprocs=1 extra=() mc
   for w in $WALLS; do
     IFS=: read -r wn code xi ze <<< "$w"
     [ "$wn" = "$wall" ] && break
     code=""
   done
-  [ -n "$code" ] || { echo "pipe-flow: unknown wall $wall" >&2; return 1; }
+  [ -n "$code" ] || { echo "pipe-flow: unknown wall $wall" >&2; exit 1; }
+  mc=$(model_code "$model") || exit 1
   while [ $# -gt 0 ]; do
     case $1 in np) np=$2 ;; nprocs) nprocs=$2 ;; *) extra+=("$1" "$2") ;; esac
     shift 2
   done
   params "$WORK/params/$name.params" 2 $((NT_FLUID + 1 + np)) dt "$DT" wall "$code" \
-    delta_xi_deg "$xi" delta_zeta_deg "$ze" model "$(model_code "$model")" law 1 preset 1 \
+    delta_xi_deg "$xi" delta_zeta_deg "$ze" model "$mc" law 1 preset 1 \
     seed 2021 n_particles "$NPART" d_p "$(awk -v d="$d" 'BEGIN { print d * 1e-6 }')" \
     rho_p "$RHO" dispersion 1 t_sample "$T_DEV" n_bins 20 log_hits 1 "${extra[@]}"
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$kind" "$d" "$wall" "$model" "runs/$name" >> "$WORK/study.tsv"
   RUNS+=("$s|$name|$d|$nprocs")
 }
 
-# run_all: the queued particle runs, JOBS at a time; stops at the first failure.
+# run_all: the queued particle runs, JOBS at a time; stops at the first failure (and on
+# INT or TERM, stopping the runs under way).
 run_all() {
-  local n=${#RUNS[@]} k=0 failed=0 t0 s name d np
+  local n=${#RUNS[@]} k=0 failed=0 t0 s name d np pid
+  local -a pids=()
   t0=$(date +%s)
   echo "  $n particle runs, $JOBS at a time, $NPART particles x $NP steps each"
   export PIPE_TTY_PROGRESS
   PIPE_TTY_PROGRESS=$([ "$JOBS" = 1 ] && echo 1 || echo 0)
+  trap 'kill -TERM "${pids[@]}" 2>/dev/null; wait; echo "pipe-flow: stopped" >&2; exit 130' INT TERM
   for r in "${RUNS[@]}"; do
     IFS='|' read -r s name d np <<< "$r"
     while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || failed=1; done
@@ -105,8 +115,11 @@ run_all() {
     echo "  [$k/$n] $name ($(($(date +%s) - t0)) s)"
     "$PIPE_EX/run_phase.sh" "$s/build" "$WORK/runs/$name" "$s/inject-$d/checkpoint" "$np" \
       "$WORK/params/$name.params" "$name" &
+    pids+=("$!")
   done
-  while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n || failed=1; done
+  # every run's own status (wait -n above may have missed one that ended meanwhile)
+  for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
+  trap - INT TERM
   [ "$failed" = 0 ] || { echo "pipe-flow: a particle run failed (above)" >&2; return 1; }
   echo "  particle runs done in $(($(date +%s) - t0)) s"
 }

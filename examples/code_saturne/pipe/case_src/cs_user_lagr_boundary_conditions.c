@@ -7,8 +7,10 @@
  * as any host passes it: the library builds the wall frame from the normal and the lay.
  * The key of the hit's random stream is (particle id, collision index), the id the
  * particle carries between ranks and through restarts (../case_src/cswm_ids.h).
- * In the sampling window every hit is counted (pipe_tally.c) and, with log_hits, written to
- * hits_rank<r>.csv: impact point, impact angle, angle to the lay, speeds before and after.
+ * In the sampling window every rebound (status RW_OK) is counted (pipe_tally.c) and, with
+ * log_hits, every hit is written to hits_rank<r>.csv: impact point, impact angle, angle to
+ * the lay, speeds before and after, status. The rest of the step after a hit follows the
+ * rebound velocity.
  * PINNED TO code_saturne 6.0.x (../case_src/cswm_wall_hit.h).                           */
 
 #include "cs_defs.h"
@@ -165,10 +167,25 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
     particle_velocity[k] = res.velocity[k];
   cswm_set_key(particles, p_id, pid, cidx + 1);
 
+  /* The rest of the step goes along the rebound velocity, not the specular reflection that
+     cswm_hit_begin made (built in, and right for a smooth wall only): the particle covers
+     the remaining path length |x - I| in the time tau = |x - I| / |u_in| at u_out. */
+  if (status == RW_OK) {
+    cs_real_t *particle_coord = cs_lagr_particles_attr(particles, p_id, CS_LAGR_COORDS);
+    cs_real_t rem[3];
+    for (int k = 0; k < 3; k++)
+      rem[k] = particle_coord[k] - c_intersect[k];
+    double speed_in = cs_math_3_norm(hit.velocity);
+    double tau = speed_in > 0. ? cs_math_3_norm(rem) / speed_in : 0.;
+    for (int k = 0; k < 3; k++)
+      particle_coord[k] = c_intersect[k] + tau * res.velocity[k];
+  }
+
   cswm_hit_end(particles, p_id, face_norm, event_flag, tracking_state);
 
   if (pipe_in_window()) {
-    pipe_tally_hit(pid);
+    if (status == RW_OK)
+      pipe_tally_hit(pid);
     if (pipe_params()->log_hits)
       _log_hit(pid, cidx, c_intersect, face_norm, lay, hit.velocity, res.velocity, status,
                res.candidate_walls);

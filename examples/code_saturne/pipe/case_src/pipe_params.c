@@ -44,8 +44,11 @@ pipe_params(void)
   char line[256];
   while (fgets(line, sizeof line, f) != NULL) {
     char key[64], val[128];
-    if (line[0] == '#' || sscanf(line, "%63s %127s", key, val) != 2)
+    int n = sscanf(line, "%63s %127s", key, val);
+    if (line[0] == '#' || n <= 0)
       continue;
+    if (n == 1)
+      bft_error(__FILE__, __LINE__, 0, "pipe.params: key %s has no value", key);
     _set(key, val);
   }
   fclose(f);

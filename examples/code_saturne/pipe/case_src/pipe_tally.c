@@ -21,7 +21,7 @@ _row(unsigned long long pid)
 {
   const pipe_params_t *pp = pipe_params();
   if (_rows == NULL) {
-    _width = 3 + 6 * pp->n_bins;
+    _width = 4 + 6 * pp->n_bins;
     _rows = calloc((size_t)pp->n_particles * (size_t)_width, sizeof(double));
     if (_rows == NULL)
       bft_error(__FILE__, __LINE__, 0, "pipe: cannot allocate the tallies of %d particles",
@@ -66,12 +66,13 @@ pipe_tally_sample(const cs_lagr_particle_set_t *p_set)
     int by = _bin(x[1], r, nb), bz = _bin(x[2], r, nb);
     row[0] += 1.;
     row[1] += u[0] * pp->dt;
-    row[3 + by] += 1.;
-    row[3 + nb + bz] += 1.;
-    row[3 + 2 * nb + by] += u[0];
-    row[3 + 3 * nb + by] += u[0] * u[0];
-    row[3 + 4 * nb + by] += ur;
-    row[3 + 5 * nb + by] += ur * ur;
+    row[3] += x[1];
+    row[4 + by] += 1.;
+    row[4 + nb + bz] += 1.;
+    row[4 + 2 * nb + by] += u[0];
+    row[4 + 3 * nb + by] += u[0] * u[0];
+    row[4 + 4 * nb + by] += ur;
+    row[4 + 5 * nb + by] += ur * ur;
   }
 }
 
@@ -96,7 +97,7 @@ pipe_tally_write(void)
     if (f == NULL)
       bft_error(__FILE__, __LINE__, 0, "pipe: cannot write particles.csv");
     const char *names[6] = {"cy", "cz", "ux", "ux2", "ur", "ur2"};
-    fprintf(f, "particle_id,n,dist,hits");
+    fprintf(f, "particle_id,n,dist,hits,sum_y");
     for (int g = 0; g < 6; g++)
       for (int b = 0; b < pp->n_bins; b++)
         fprintf(f, ",%s_%d", names[g], b);

@@ -9,7 +9,8 @@
  * Row of one particle (nb = n_bins, bins of width D/nb across the pipe, from -R to R):
  *   n            samples (end of each time step in the window)
  *   dist         axial distance travelled in the window, sum of u_x dt (m)
- *   hits         wall hits in the window
+ *   hits         wall rebounds in the window (status RW_OK)
+ *   sum_y        sum of the heights y at the samples (m)
  *   cy[nb]       samples in each horizontal slab (bins of y: the vertical diameter)
  *   cz[nb]       samples in each vertical slab (bins of z: the horizontal diameter)
  *   ux[nb], ux2[nb], ur[nb], ur2[nb]

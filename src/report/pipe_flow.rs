@@ -325,7 +325,9 @@ fn trends(md: &mut String, d: &str, c: &Rows) {
     ];
     let _ = writeln!(
         md,
-        "Published trends against this study ({d} µm, isotropic − smooth):\n"
+        "Published trends (the experiments behind the Sommerfeld–Huber model: Huber & \
+         Sommerfeld 1998, Sommerfeld & Huber 1999) against this study ({d} µm, isotropic − \
+         smooth):\n"
     );
     for (claim, q, sign) in claims {
         let verdict = match diff(c, &a, &b, q) {

@@ -16,12 +16,12 @@ fn write_run(dir: &Path, ux: f64, hits: usize, dalpha: f64) {
     std::fs::create_dir_all(dir).unwrap();
     std::fs::write(dir.join("pipe.params"), PARAMS).unwrap();
     let mut p = String::from(
-        "particle_id,n,dist,hits,sum_y,cy_0,cy_1,cz_0,cz_1,ux_0,ux_1,ux2_0,ux2_1,ur_0,ur_1,ur2_0,ur2_1\n",
+        "particle_id,n,dist,hits,sum_y,cy_0,cy_1,cz_0,cz_1,ux_0,ux_1,ux2_0,ux2_1,ur_0,ur_1,ur2_0,ur2_1,sy_0,sy_1,sz_0,sz_1\n",
     );
     for id in 0..40 {
         // at y = −R/2: sum_y = 10 × −0.0125 m
         p.push_str(&format!(
-            "{id},10,1,{hits},-0.125,10,0,5,5,{},0,{},0,0,0,0,0\n",
+            "{id},10,1,{hits},-0.125,10,0,5,5,{},0,{},0,0,0,0,0,4,0,0,0\n",
             10.0 * ux,
             10.0 * ux * ux
         ));
@@ -120,7 +120,23 @@ fn pipe_stats_gives_each_statistic_and_its_error() {
             .unwrap()
     };
     let c0 = slab("-0.5");
-    assert_eq!(num(c0, "concentration"), 2.0);
+    assert!((num(c0, "concentration") - 2.0).abs() < 1e-6);
+    // along the vertical diameter: 4 of 10 samples in the strip |z| < R/5 of the lower half:
+    // a 0.4 R wide rectangle down to y = −√0.96 R, then the circle's cap below it
+    let d0 = prof
+        .iter()
+        .find(|r| {
+            r["run"] == "100um-iso-paper"
+                && r["profile"] == "vertical_diameter"
+                && r["position_over_r"] == "-0.5"
+        })
+        .unwrap();
+    let g = |y: f64| y * (1.0 - y * y).sqrt() + y.asin();
+    let yw = 0.96f64.sqrt();
+    let area = 0.4 * yw + (g(-yw) - g(-1.0));
+    let expect = 0.4 / (area / std::f64::consts::PI);
+    let got = num(d0, "concentration");
+    assert!((got - expect).abs() < 1e-5 * expect, "{got} vs {expect}");
     // the upper slab has no sample: its velocities are empty, never 0 or NaN
     let c1 = slab("0.5");
     assert_eq!(num(c1, "concentration"), 0.0);

@@ -1,10 +1,10 @@
 //! The figures of `rebound pipe-stats`, one set per particle diameter: concentration
-//! profiles (`concentration_<d>um.svg`), velocity profiles (`velocity_<d>um.svg`) and the
+//! profiles along the two diameters and in slabs (`concentration_<d>um.svg`), velocity profiles (`velocity_<d>um.svg`) and the
 //! wall hits (`wall_hits_<d>um.svg`: impact-angle and lay-angle PDFs, erosion around the
 //! circumference). Every point carries its standard error as an error bar.
 
 use super::plot::{plot_grid_svg, Kind, Plot, Series};
-use crate::pipe_flow::stats::{angle_pdf, erosion_profile, profile, ProfilePoint};
+use crate::pipe_flow::stats::{angle_pdf, erosion_profile, profile, Profile, ProfilePoint};
 use crate::pipe_flow::tables::Analysed;
 use roughwall::error::Result;
 use std::path::Path;
@@ -81,27 +81,38 @@ pub fn write(dir: &Path, runs: &[Analysed]) -> Result<Vec<String>> {
     let mut names = Vec::new();
     for d in diameters {
         let tag = format!("{}um", roughwall::format::fmt_num(d));
-        // Concentration: vertical and horizontal, both models.
+        // Concentration along the vertical and horizontal diameters and in slabs across the
+        // section, both models.
         let mut plots = Vec::new();
-        for vertical in [true, false] {
+        for kind in [
+            Profile::VerticalDiameter,
+            Profile::HorizontalDiameter,
+            Profile::VerticalSlabs,
+        ] {
+            // The smooth wall's bed on the bottom is 50–80 times the mean: the vertical
+            // profiles need a log axis to show the others, which leaves out the bins known to
+            // less than a third of their value (empty, or a few samples).
+            let log = kind != Profile::HorizontalDiameter;
             for model in ["paper", "calibrated"] {
                 let series = runs_of(runs, d, model)
                     .into_iter()
                     .map(|(a, c, label)| {
-                        profile_series(&label, c, &profile(&a.sums, vertical), |p| {
-                            Some(p.concentration)
+                        profile_series(&label, c, &profile(&a.sums, &a.section(), kind), |p| {
+                            Some(p.concentration).filter(|e| !log || e.value > 3.0 * e.se)
                         })
                     })
                     .collect();
+                let (what, x_label) = match kind {
+                    Profile::VerticalDiameter => ("along the vertical diameter", "y/R (up)"),
+                    Profile::HorizontalDiameter => ("along the horizontal diameter", "z/R"),
+                    _ => ("in horizontal slabs", "y/R (up)"),
+                };
                 plots.push(Plot {
-                    title: format!(
-                        "{d} µm, {}, {} profile",
-                        model_title(model),
-                        if vertical { "vertical" } else { "horizontal" }
-                    ),
-                    x_label: if vertical { "y/R (up)" } else { "z/R" }.into(),
+                    title: format!("{d} µm, {}, {what}", model_title(model)),
+                    x_label: x_label.into(),
                     y_label: "concentration / mean".into(),
                     series,
+                    log_y: log,
                     ..Default::default()
                 });
             }
@@ -120,7 +131,7 @@ pub fn write(dir: &Path, runs: &[Analysed]) -> Result<Vec<String>> {
         let chosen = runs_of(runs, d, "paper");
         let profiles: Vec<Vec<ProfilePoint>> = chosen
             .iter()
-            .map(|(a, _, _)| profile(&a.sums, true))
+            .map(|(a, _, _)| profile(&a.sums, &a.section(), Profile::VerticalSlabs))
             .collect();
         let plots: Vec<Plot> = panels
             .iter()

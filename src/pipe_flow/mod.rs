@@ -6,6 +6,8 @@
 //!
 //! * [`read`]: the study's runs (`study.tsv`, each run's `pipe.params`, `particles.csv`,
 //!   `hits_rank*.csv`).
+//! * [`section`]: the mesh's cross-section, whose slab and strip areas normalise the
+//!   concentration.
 //! * [`sums`]: one run's batch sums (particles in 20 batches by id).
 //! * [`jackknife`]: a statistic and its standard error from batch sums (delete-one-batch).
 //! * [`stats`]: the study's quantities.
@@ -13,6 +15,7 @@
 
 pub mod jackknife;
 pub mod read;
+pub mod section;
 pub mod stats;
 pub mod sums;
 pub mod tables;

@@ -33,6 +33,8 @@ pub struct Params {
     pub particle_density: f64,
     pub delta_xi_deg: f64,
     pub delta_zeta_deg: f64,
+    /// Sides of the mesh's polygonal wall (`mesh_sides`; `None`: not recorded, a circle).
+    pub mesh_sides: Option<usize>,
 }
 
 /// One particle's tallies over the sampling window.
@@ -54,6 +56,10 @@ pub struct ParticleRow {
     pub ux2: Vec<f64>,
     pub ur: Vec<f64>,
     pub ur2: Vec<f64>,
+    /// Samples along the vertical diameter (bins of y, |z| < R/5) and the horizontal one
+    /// (bins of z, |y| < R/5).
+    pub sy: Vec<f64>,
+    pub sz: Vec<f64>,
 }
 
 /// One wall rebound in the sampling window (a logged hit whose status is `RW_OK`).
@@ -157,6 +163,10 @@ pub fn params(dir: &Path) -> Result<Params> {
         particle_density: get("rho_p")?,
         delta_xi_deg: get("delta_xi_deg")?,
         delta_zeta_deg: get("delta_zeta_deg")?,
+        mesh_sides: kv
+            .get("mesh_sides")
+            .filter(|v| v.is_finite() && **v >= 8.0)
+            .map(|v| *v as usize),
     })
 }
 
@@ -195,6 +205,8 @@ pub fn particles(dir: &Path, n_bins: usize) -> Result<Vec<ParticleRow>> {
             ux2: group("ux2")?,
             ur: group("ur")?,
             ur2: group("ur2")?,
+            sy: group("sy")?,
+            sz: group("sz")?,
         });
     }
     if out.is_empty() {

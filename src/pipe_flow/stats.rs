@@ -2,10 +2,12 @@
 //! each given a standard error by [`super::jackknife`].
 //!
 //! Conventions (docs/pipe-flow.md): the pipe axis is x, y is up (gravity −y), z horizontal;
-//! `R` the pipe radius. Profiles are slab averages: the vertical profile bins y over
-//! [−R, R] (each slab a chord band of the cross-section, all z), the horizontal one bins z.
-//! Concentration is normalised by the mean: the fraction of samples in a slab over the
-//! slab's share of the cross-section's area (1 everywhere for a uniform suspension).
+//! `R` the pipe radius. Profiles bin y (vertical) or z (horizontal) over [−R, R]: slab
+//! averages (each bin a chord band across the whole section), or strips along the vertical
+//! and horizontal diameters (the other coordinate within ±R/5). Concentration is normalised
+//! by the mean: the fraction of samples in a bin over the bin's share of the cross-section's
+//! area, taken on the mesh's polygonal wall ([`super::section`]; 1 everywhere for a uniform
+//! suspension).
 //! The wall-normal velocity is the radial component `u_r = (u_y y + u_z z)/r`, positive
 //! towards the wall. Erosion is Finnie's volume per particle mass summed over the hits
 //! and divided by the wall area and by the mass of particles conveyed through a
@@ -13,27 +15,12 @@
 //! thickness per mass conveyed, in µm per tonne.
 
 use super::jackknife::{estimate, Estimate};
+use super::section::CrossSection;
 use super::sums::{Layout, RunSums, ALPHA_BINS, LAY_BINS, THETA_BINS};
-
-/// The area of the band of a circle of radius `r` between the chords at `a < b` (|a|, |b| ≤ r).
-pub fn band_area(r: f64, a: f64, b: f64) -> f64 {
-    let f = |y: f64| {
-        let y = y.clamp(-r, r);
-        y * (r * r - y * y).max(0.0).sqrt() + r * r * (y / r).asin()
-    };
-    f(b) - f(a)
-}
 
 /// The centre of bin `b` of `nb` across a diameter, over R.
 pub fn bin_centre_over_r(b: usize, nb: usize) -> f64 {
     -1.0 + (b as f64 + 0.5) * 2.0 / nb as f64
-}
-
-/// A slab's share of the cross-section's area.
-fn area_share(b: usize, nb: usize) -> f64 {
-    let w = 2.0 / nb as f64;
-    let lo = -1.0 + b as f64 * w;
-    band_area(1.0, lo, lo + w) / std::f64::consts::PI
 }
 
 /// A whole-run quantity: its column name (docs/outputs.md says what each is) and its
@@ -137,20 +124,70 @@ pub fn erosion_theta_um_per_t(l: &Layout, s: &[f64], r: f64, k: usize) -> f64 {
 pub struct ProfilePoint {
     pub position_over_r: f64,
     pub concentration: Estimate,
-    /// Velocity statistics of the slab (vertical profile only).
+    /// Velocity statistics of the slab (vertical slab profile only).
     pub ux_mean: Option<Estimate>,
     pub ux_rms: Option<Estimate>,
     pub ur_mean: Option<Estimate>,
     pub ur_rms: Option<Estimate>,
 }
 
-/// The vertical (`vertical`: bins of y, with velocities) or horizontal profile of a run.
-pub fn profile(run: &RunSums, vertical: bool) -> Vec<ProfilePoint> {
+/// Which profile: slab averages across the whole section, or strips along a diameter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Profile {
+    /// Bins of y, each a band across the whole width (with the velocities).
+    VerticalSlabs,
+    /// Bins of z, each a band across the whole height.
+    HorizontalSlabs,
+    /// Bins of y within the strip |z| < R/5: along the vertical diameter.
+    VerticalDiameter,
+    /// Bins of z within |y| < R/5: along the horizontal diameter.
+    HorizontalDiameter,
+}
+
+/// Half the width of the strips along the diameters, over R (pipe_tally.c).
+pub const STRIP_HALF_WIDTH: f64 = 0.2;
+
+impl Profile {
+    pub const ALL: [Profile; 4] = [
+        Profile::VerticalSlabs,
+        Profile::HorizontalSlabs,
+        Profile::VerticalDiameter,
+        Profile::HorizontalDiameter,
+    ];
+
+    /// Its name in `profiles.csv`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Profile::VerticalSlabs => "vertical",
+            Profile::HorizontalSlabs => "horizontal",
+            Profile::VerticalDiameter => "vertical_diameter",
+            Profile::HorizontalDiameter => "horizontal_diameter",
+        }
+    }
+
+    fn along_y(self) -> bool {
+        matches!(self, Profile::VerticalSlabs | Profile::VerticalDiameter)
+    }
+}
+
+/// A profile of a run; `section` gives the bins' areas.
+pub fn profile(run: &RunSums, section: &CrossSection, kind: Profile) -> Vec<ProfilePoint> {
     let l = run.layout;
+    let w = 2.0 / l.nb as f64;
     (0..l.nb)
         .map(|b| {
-            let share = area_share(b, l.nb);
-            let at = if vertical { l.cy(b) } else { l.cz(b) };
+            let lo = -1.0 + b as f64 * w;
+            let strip = match kind {
+                Profile::VerticalDiameter | Profile::HorizontalDiameter => Some(STRIP_HALF_WIDTH),
+                _ => None,
+            };
+            let share = section.share(kind.along_y(), lo, lo + w, strip);
+            let at = match kind {
+                Profile::VerticalSlabs => l.cy(b),
+                Profile::HorizontalSlabs => l.cz(b),
+                Profile::VerticalDiameter => l.sy(b),
+                Profile::HorizontalDiameter => l.sz(b),
+            };
             let concentration = estimate(&[run], |s| s[0][at] / s[0][Layout::SAMPLES] / share);
             let (cy, ux, ux2, ur, ur2) = (l.cy(b), l.ux(b), l.ux2(b), l.ur(b), l.ur2(b));
             let mean = move |sum: usize| move |s: &[&[f64]]| s[0][sum] / s[0][cy];
@@ -160,13 +197,14 @@ pub fn profile(run: &RunSums, vertical: bool) -> Vec<ProfilePoint> {
                     sqrt_var(s[0][sq] / s[0][cy] - m * m)
                 }
             };
+            let velocities = kind == Profile::VerticalSlabs;
             ProfilePoint {
                 position_over_r: bin_centre_over_r(b, l.nb),
                 concentration,
-                ux_mean: vertical.then(|| estimate(&[run], mean(ux))),
-                ux_rms: vertical.then(|| estimate(&[run], rms(ux, ux2))),
-                ur_mean: vertical.then(|| estimate(&[run], mean(ur))),
-                ur_rms: vertical.then(|| estimate(&[run], rms(ur, ur2))),
+                ux_mean: velocities.then(|| estimate(&[run], mean(ux))),
+                ux_rms: velocities.then(|| estimate(&[run], rms(ux, ux2))),
+                ur_mean: velocities.then(|| estimate(&[run], mean(ur))),
+                ur_rms: velocities.then(|| estimate(&[run], rms(ur, ur2))),
             }
         })
         .collect()
@@ -212,27 +250,4 @@ pub fn erosion_profile(run: &RunSums, r: f64) -> Vec<DistBin> {
             value: estimate(&[run], |s| erosion_theta_um_per_t(&l, s[0], r, k)),
         })
         .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn slab_shares_cover_the_circle() {
-        for nb in [2, 7, 20] {
-            let total: f64 = (0..nb).map(|b| area_share(b, nb)).sum();
-            assert!((total - 1.0).abs() < 1e-12, "{nb}: {total}");
-        }
-        // the half circle
-        assert!((band_area(2.0, -2.0, 0.0) - 2.0 * std::f64::consts::PI).abs() < 1e-12);
-        // symmetric slabs have equal areas
-        assert!((area_share(0, 20) - area_share(19, 20)).abs() < 1e-15);
-        // a chord band against its closed form: ∫₀^½ 2√(1 − y²) dy = ½·√¾ + asin ½
-        let exact = 0.5 * 0.75f64.sqrt() + std::f64::consts::FRAC_PI_6;
-        assert!((band_area(1.0, 0.0, 0.5) - exact).abs() < 1e-14);
-        // the band at the wall is thinner than a rectangle of its height, the one at the axis
-        // wider than the mean
-        assert!(area_share(0, 20) < area_share(10, 20) / 2.0);
-    }
 }

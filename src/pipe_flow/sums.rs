@@ -47,8 +47,16 @@ impl Layout {
     pub fn ur2(&self, b: usize) -> usize {
         4 + 5 * self.nb + b
     }
+    /// Samples along the vertical diameter, bin `b` of y.
+    pub fn sy(&self, b: usize) -> usize {
+        4 + 6 * self.nb + b
+    }
+    /// Samples along the horizontal diameter, bin `b` of z.
+    pub fn sz(&self, b: usize) -> usize {
+        4 + 7 * self.nb + b
+    }
     fn h0(&self) -> usize {
-        4 + 6 * self.nb
+        4 + 8 * self.nb
     }
     /// Hits logged (equal to the `HITS` column's sum when every hit was logged).
     pub fn logged_hits(&self) -> usize {
@@ -123,6 +131,8 @@ pub fn sums(run: &Run, finnie: &Finnie) -> RunSums {
             s[layout.ux2(b)] += p.ux2[b];
             s[layout.ur(b)] += p.ur[b];
             s[layout.ur2(b)] += p.ur2[b];
+            s[layout.sy(b)] += p.sy[b];
+            s[layout.sz(b)] += p.sz[b];
         }
     }
     for h in &run.hits {

@@ -4,7 +4,8 @@
 
 use super::jackknife::{estimate, Estimate};
 use super::read::Run;
-use super::stats::{angle_pdf, erosion_profile, profile, QUANTITIES};
+use super::section::CrossSection;
+use super::stats::{angle_pdf, erosion_profile, profile, Profile, QUANTITIES};
 use super::sums::RunSums;
 use crate::output::csv::CsvTable;
 use roughwall::format::fmt_num;
@@ -18,6 +19,11 @@ pub struct Analysed<'a> {
 impl Analysed<'_> {
     fn radius(&self) -> f64 {
         0.5 * self.run.params.pipe_diameter_m
+    }
+
+    /// The run's cross-section (the mesh's polygon when the run recorded it).
+    pub fn section(&self) -> CrossSection {
+        CrossSection::new(self.run.params.mesh_sides)
     }
 }
 
@@ -100,7 +106,7 @@ fn est_cells(e: Option<Estimate>) -> [String; 2] {
     }
 }
 
-/// `profiles.csv`: the vertical (with velocities) and horizontal profiles of every run.
+/// `profiles.csv`: every profile of every run (the vertical slabs with velocities).
 pub fn profiles(runs: &[Analysed]) -> CsvTable {
     let mut t = CsvTable::new(&[
         "run",
@@ -122,10 +128,11 @@ pub fn profiles(runs: &[Analysed]) -> CsvTable {
         "ur_rms_se",
     ]);
     for a in runs {
-        for vertical in [true, false] {
-            for p in profile(&a.sums, vertical) {
+        let section = a.section();
+        for kind in Profile::ALL {
+            for p in profile(&a.sums, &section, kind) {
                 let mut row = id_cells(a);
-                row.push(if vertical { "vertical" } else { "horizontal" }.into());
+                row.push(kind.name().into());
                 row.push(fmt_num(p.position_over_r));
                 row.extend(est_cells(Some(p.concentration)));
                 for e in [p.ux_mean, p.ux_rms, p.ur_mean, p.ur_rms] {

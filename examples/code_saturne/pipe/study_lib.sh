@@ -92,7 +92,8 @@ particles_run() {
   params "$WORK/params/$name.params" 2 $((NT_FLUID + 1 + np)) dt "$DT" wall "$code" \
     delta_xi_deg "$xi" delta_zeta_deg "$ze" model "$mc" law 1 preset 1 \
     seed 2021 n_particles "$NPART" d_p "$(awk -v d="$d" 'BEGIN { print d * 1e-6 }')" \
-    rho_p "$RHO" dispersion 1 t_sample "$T_DEV" n_bins 20 log_hits 1 "${extra[@]}"
+    rho_p "$RHO" dispersion 1 t_sample "$T_DEV" n_bins 20 log_hits 1 \
+    mesh_sides "$(awk '$1 == "NC" { print 4 * $2 }' "$s/mesh.txt")" "${extra[@]}"
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$kind" "$d" "$wall" "$model" "runs/$name" >> "$WORK/study.tsv"
   RUNS+=("$s|$name|$d|$nprocs")
 }

@@ -28,6 +28,7 @@ typedef struct {
   double t_sample;         /* start of the sampling window, from the start of this run (s) */
   int    n_bins;           /* bins across a diameter */
   int    log_hits;         /* write every wall hit in the window to hits_rank<r>.csv */
+  int    mesh_sides;       /* sides of the mesh's polygonal wall (for pipe-stats' areas; 0: unknown) */
 } pipe_params_t;
 
 /* The parameters, read once (aborts the run with a message naming the key on a bad line). */

@@ -21,7 +21,7 @@ _row(unsigned long long pid)
 {
   const pipe_params_t *pp = pipe_params();
   if (_rows == NULL) {
-    _width = 4 + 6 * pp->n_bins;
+    _width = 4 + 8 * pp->n_bins;
     _rows = calloc((size_t)pp->n_particles * (size_t)_width, sizeof(double));
     if (_rows == NULL)
       bft_error(__FILE__, __LINE__, 0, "pipe: cannot allocate the tallies of %d particles",
@@ -73,6 +73,11 @@ pipe_tally_sample(const cs_lagr_particle_set_t *p_set)
     row[4 + 3 * nb + by] += u[0] * u[0];
     row[4 + 4 * nb + by] += ur;
     row[4 + 5 * nb + by] += ur * ur;
+    /* the strips along the two diameters, a fifth of R either side */
+    if (fabs(x[2]) < 0.2 * r)
+      row[4 + 6 * nb + by] += 1.;
+    if (fabs(x[1]) < 0.2 * r)
+      row[4 + 7 * nb + bz] += 1.;
   }
 }
 
@@ -96,9 +101,9 @@ pipe_tally_write(void)
     FILE *f = fopen("particles.csv", "w");
     if (f == NULL)
       bft_error(__FILE__, __LINE__, 0, "pipe: cannot write particles.csv");
-    const char *names[6] = {"cy", "cz", "ux", "ux2", "ur", "ur2"};
+    const char *names[8] = {"cy", "cz", "ux", "ux2", "ur", "ur2", "sy", "sz"};
     fprintf(f, "particle_id,n,dist,hits,sum_y");
-    for (int g = 0; g < 6; g++)
+    for (int g = 0; g < 8; g++)
       for (int b = 0; b < pp->n_bins; b++)
         fprintf(f, ",%s_%d", names[g], b);
     fprintf(f, "\n");

@@ -15,7 +15,9 @@
  *   cz[nb]       samples in each vertical slab (bins of z: the horizontal diameter)
  *   ux[nb], ux2[nb], ur[nb], ur2[nb]
  *                per y slab: sums of the axial velocity u_x and the wall-normal (radial,
- *                positive towards the wall) velocity u_r, and of their squares          */
+ *                positive towards the wall) velocity u_r, and of their squares
+ *   sy[nb]       samples along the vertical diameter: bins of y within the strip |z| < R/5
+ *   sz[nb]       samples along the horizontal diameter: bins of z within |y| < R/5        */
 
 #include "cs_defs.h"
 #include "cs_headers.h"

@@ -68,6 +68,17 @@ fn rows(path: &Path) -> Vec<HashMap<String, String>> {
         .collect()
 }
 
+/// `rebound pipe-stats --study STUDY --out OUT`.
+fn pipe_stats(study: &Path, out: &Path) -> Run {
+    rebound(&[
+        "pipe-stats",
+        "--study",
+        study.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
 fn num(r: &HashMap<String, String>, k: &str) -> f64 {
     r[k].parse().unwrap_or_else(|_| panic!("{k} = {:?}", r[k]))
 }
@@ -78,14 +89,7 @@ fn pipe_stats_gives_each_statistic_and_its_error() {
     let s = d.path().join("study");
     study(&s);
     let out = d.path().join("out");
-    rebound(&[
-        "pipe-stats",
-        "--study",
-        s.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .ok();
+    pipe_stats(&s, &out).ok();
     let summary = rows(&out.join("summary.csv"));
     assert_eq!(summary.len(), 2);
     let iso = summary
@@ -170,48 +174,20 @@ fn pipe_stats_refuses_what_is_not_a_study() {
     let d = Dir::new();
     let out = d.path().join("out");
     let missing = d.path().join("nothing");
-    rebound(&[
-        "pipe-stats",
-        "--study",
-        missing.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .refused("study.tsv");
+    pipe_stats(&missing, &out).refused("study.tsv");
     let s = d.path().join("bad");
     std::fs::create_dir_all(&s).unwrap();
     std::fs::write(s.join("study.tsv"), "run,dir\n").unwrap();
-    rebound(&[
-        "pipe-stats",
-        "--study",
-        s.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .refused("wrong header");
+    pipe_stats(&s, &out).refused("wrong header");
     // a run whose particles.csv lacks a column
     let s = d.path().join("study");
     study(&s);
     std::fs::write(s.join("runs/b/particles.csv"), "particle_id,n\n0,1\n").unwrap();
-    rebound(&[
-        "pipe-stats",
-        "--study",
-        s.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .refused("particles.csv");
+    pipe_stats(&s, &out).refused("particles.csv");
     // a run whose hit log is missing: its tallies count rebounds the logs do not hold
     let s = d.path().join("study2");
     study(&s);
     std::fs::remove_file(s.join("runs/a/hits_rank0000.csv")).unwrap();
-    rebound(&[
-        "pipe-stats",
-        "--study",
-        s.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ])
-    .refused("missing or truncated");
+    pipe_stats(&s, &out).refused("missing or truncated");
     assert!(!out.exists(), "a refused run wrote --out");
 }

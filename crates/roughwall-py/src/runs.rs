@@ -9,6 +9,7 @@ use crate::errors::{guarded, invalid, on_threads, to_py};
 use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use roughwall::check::{check_int_range, check_range};
 use roughwall::collision::CollisionParams;
 use roughwall::deterministic::scene::{
     build_surfaces, realisations, SceneOptions, SurfacePlan, WallDeviations,
@@ -114,37 +115,42 @@ impl SceneArgs {
             ));
         }
         let (mean, std) = self.speed_m_s;
-        if !(1e-6..=1e4).contains(&mean) {
-            return Err(invalid(
-                "speed_m_s",
-                mean,
-                "a mean speed from 1e-6 to 10000 m/s",
-            ));
-        }
-        if !(std == 0.0 || (1e-6..=1e4).contains(&std)) {
-            return Err(invalid(
+        // The library's range checks (roughwall::check), with their one-line messages.
+        check_range(
+            "speed_m_s",
+            mean,
+            1e-6,
+            1e4,
+            "a mean speed from 1e-6 to 10000 m/s",
+        )
+        .map_err(to_py)?;
+        if std != 0.0 {
+            check_range(
                 "speed_m_s",
                 std,
+                1e-6,
+                1e4,
                 "a standard deviation of 0 or 1e-6 to 10000 m/s",
-            ));
+            )
+            .map_err(to_py)?;
         }
-        if !(1e-9..=1.0).contains(&self.diameter_m) {
-            return Err(invalid("diameter_m", self.diameter_m, "1e-9 to 1 m"));
-        }
-        if !(1..=MAX_PARTICLES).contains(&self.particles) {
-            return Err(invalid(
-                "particles",
-                self.particles,
-                "an integer from 1 to 100000000",
-            ));
-        }
-        if !(0.01..=10.0).contains(&self.bin_width_deg) {
-            return Err(invalid(
-                "bin_width_deg",
-                self.bin_width_deg,
-                "a width in [0.01, 10] degrees",
-            ));
-        }
+        check_range("diameter_m", self.diameter_m, 1e-9, 1.0, "1e-9 to 1 m").map_err(to_py)?;
+        check_int_range(
+            "particles",
+            i64::try_from(self.particles).unwrap_or(i64::MAX),
+            1,
+            MAX_PARTICLES as i64,
+            "an integer from 1 to 100000000",
+        )
+        .map_err(to_py)?;
+        check_range(
+            "bin_width_deg",
+            self.bin_width_deg,
+            0.01,
+            10.0,
+            "a width in [0.01, 10] degrees",
+        )
+        .map_err(to_py)?;
         if let Some(t) = self.target_se_deg.filter(|t| !(t.is_finite() && *t > 0.0)) {
             return Err(invalid("target_se_deg", t, "a standard error > 0 degrees"));
         }
@@ -316,34 +322,42 @@ pub fn deterministic<'py>(
     surface: SurfaceArgs,
 ) -> PyResult<Bound<'py, PyDict>> {
     let scene = args.checked()?;
-    if !(1..=1_000_000).contains(&surface.max_collisions) {
-        return Err(invalid(
-            "max_collisions",
-            surface.max_collisions,
-            "an integer from 1 to 1000000",
-        ));
-    }
-    if !(1..=1024).contains(&surface.surfaces) {
-        return Err(invalid(
+    let s = &surface;
+    check_int_range(
+        "max_collisions",
+        s.max_collisions.into(),
+        1,
+        1_000_000,
+        "an integer from 1 to 1000000",
+    )
+    .and_then(|_| {
+        check_int_range(
             "surfaces",
-            surface.surfaces,
+            s.surfaces.into(),
+            1,
+            1024,
             "an integer from 1 to 1024",
-        ));
-    }
-    if !(1.0..=64.0).contains(&surface.spacing_per_corr_length) {
-        return Err(invalid(
+        )
+    })
+    .and_then(|_| {
+        check_range(
             "spacing_per_corr_length",
-            surface.spacing_per_corr_length,
+            s.spacing_per_corr_length,
+            1.0,
+            64.0,
             "a number from 1 to 64",
-        ));
-    }
-    if !(1.0..=10_000.0).contains(&surface.side_per_corr_length) {
-        return Err(invalid(
+        )
+    })
+    .and_then(|_| {
+        check_range(
             "side_per_corr_length",
-            surface.side_per_corr_length,
+            s.side_per_corr_length,
+            1.0,
+            10_000.0,
             "a number from 1 to 10000",
-        ));
-    }
+        )
+    })
+    .map_err(to_py)?;
     let triangulation = Triangulation::from_name(&surface.triangulation).ok_or_else(|| {
         invalid(
             "triangulation",

@@ -8,6 +8,7 @@ use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
+use roughwall::check::check_int_range;
 use roughwall::surface::scan::notes::{labelled, notes, spread};
 use roughwall::surface::scan::resolution::{seen_by, SeenBy};
 use roughwall::surface::scan::{characterise, levelling::MAX_DEGREE, Characterisation, ScanField};
@@ -194,9 +195,14 @@ pub fn wall_card<'py>(
     diameters_m: Vec<f64>,
     threads: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
-    if !(1..=MAX_DEGREE).contains(&level_degree) {
-        return Err(invalid("level_degree", level_degree, "1, 2 or 3"));
-    }
+    check_int_range(
+        "level_degree",
+        level_degree.into(),
+        1,
+        MAX_DEGREE as i64,
+        "1, 2 or 3",
+    )
+    .map_err(to_py)?;
     if diameters_m.len() > MAX_DIAMETERS {
         return Err(invalid(
             "diameters_m",

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # run_checks.sh WORK: the coarse pipe-flow study the tests run (tests/real_systems/pipe_flow.rs),
-# in about 15 s: a coarse mesh (6 x 6 cells per quarter and ring, 10 along the axis), 300
+# in about 15 s: a coarse mesh (6 x 6 cells per quarter and ring, 10 along the axis), 500
 # fluid steps, 300 particles of 150 um, 0.05 s before a 0.1 s window, the elastic law:
 #   main:        smooth, isotropic (5.95 deg), lay along the axis and around the circumference,
 #                (3.8, 7.5) deg, the paper's model, 1 rank, code_saturne's dispersion on;
@@ -13,7 +13,7 @@ WORK=${1:?usage: run_checks.sh WORK}
 REBOUND_BIN=${REBOUND_BIN:?REBOUND_BIN: the rebound binary}
 source "$PIPE_EX/study_lib.sh"
 D=0.05 L=0.2 UB=20 RHO=2500 NPART=300
-DT_FLUID=0.001 NT_FLUID=300 DT=0.0005 T_DEV=0.05 JOBS=2
+DT_FLUID=0.001 NT_FLUID=500 DT=0.0005 T_DEV=0.05 JOBS=2
 NP=$(steps 0.15)
 WALLS="smooth:0:0:0 iso:1:5.95:5.95 axial:2:3.8:7.5 circ:3:3.8:7.5"
 study_init

@@ -43,7 +43,7 @@ params() {
 
 # fluid STUDY: the converged RANS flow of STUDY on 2 ranks; fails unless the pressure
 # gradient changed by less than 0.2 % over the last 100 steps and the bulk velocity is
-# within 0.5 % of UB. Writes STUDY/fluid/converged.txt.
+# within 0.1 % of UB. Writes STUDY/fluid/converged.txt.
 fluid() {
   local s=$1 name
   name=$(basename "$s")
@@ -56,7 +56,7 @@ fluid() {
       dg = (g[n] - g[n - 5]) / g[n]; du = (u[n] - ub) / ub
       printf "fluid %s: bulk velocity %.5g m/s, pressure gradient %.5g Pa/m (change over the last 100 steps %.2g)\n", name, u[n], g[n], dg
       if (dg < 0) dg = -dg; if (du < 0) du = -du
-      if (dg > 2e-3 || du > 5e-3) { print "pipe-flow: fluid " name " has not converged: see its run_solver.log" > "/dev/stderr"; exit 1 }
+      if (dg > 2e-3 || du > 1e-3) { print "pipe-flow: fluid " name " has not converged: see its run_solver.log" > "/dev/stderr"; exit 1 }
     }' > "$s/fluid/converged.txt"
   echo "  $(cat "$s/fluid/converged.txt")"
 }

@@ -21,9 +21,29 @@ export REBOUND_BIN REBOUND_RESULTS=$OUT REBOUND_QUICK=$QUICK
 # Shipped cases are found under configs/ from the repository root.
 cd "$ROOT"
 
+# Every run of this reproduction is logged, one command line each, so that a later stage can
+# reuse a run an earlier stage of the *same* invocation made (run_once), never a directory that
+# merely exists: a clone holds tables whose PDFs git does not keep. The log is emptied when a
+# top-level script starts (reproduce-all.sh, or a per-paper script run on its own).
+RUN_LOG=${REBOUND_RUN_LOG:-$OUT/.runs-this-reproduction}
+export REBOUND_RUN_LOG=$RUN_LOG
+mkdir -p "$OUT"
+[ -n "${REBOUND_NESTED:-}" ] || : > "$RUN_LOG"
+
 run() {
   echo "+ rebound $*"
   "$REBOUND_BIN" "$@"
+  printf '%s\n' "$*" >> "$RUN_LOG"
+}
+
+# run_once ARGS...: `run ARGS...` unless this very command already ran in this reproduction
+# (same subcommand, case, particles, seed and --out), whose outputs are then complete and current.
+run_once() {
+  if grep -qxF -- "$*" "$RUN_LOG"; then
+    echo "= rebound $* (already run by this reproduction)"
+  else
+    run "$@"
+  fi
 }
 
 # Particle counts: full mode, reduced mode.
@@ -32,7 +52,6 @@ particles() { if [ "$QUICK" = 1 ]; then echo "$2"; else echo "$1"; fi; }
 # Stage timings accumulate in one file so that reproduce-all.sh can print them all at the end.
 STAGE_LOG=${REBOUND_STAGE_LOG:-$OUT/.stage-times}
 export REBOUND_STAGE_LOG=$STAGE_LOG
-mkdir -p "$OUT"
 stage_start() { STAGE_NAME=$1; STAGE_T0=$(date +%s.%N); echo "== $1"; }
 stage_end() {
   local t1; t1=$(date +%s.%N)

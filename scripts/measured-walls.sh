@@ -46,9 +46,8 @@ models() {
   for v in $MODELS; do
     variant_case "$case_file" "$v" > "${case_file%.toml}-$v.toml"
     grep -q "^model = \"$v\"" "${case_file%.toml}-$v.toml" || { echo "measured-walls.sh: could not write ${case_file%.toml}-$v.toml" >&2; exit 1; }
-    if [ ! -f "$dir/$v/$P_STOCHASTIC/summary.csv" ]; then
-      run stochastic --case "${case_file%.toml}-$v.toml" --particles "$N" --out "$dir/$v/$P_STOCHASTIC"
-    fi
+    # One stochastic run serves both ensembles of a nominal wall: the second call reuses it.
+    run_once stochastic --case "${case_file%.toml}-$v.toml" --particles "$N" --out "$dir/$v/$P_STOCHASTIC"
     run compare --a "$det" --b "$dir/$v/$P_STOCHASTIC" --out "$dir/$v/${4:-$P_COMPARE}"
   done
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Which rough-wall model to trust: every stochastic variant (`[stochastic] model`) against
 # `deterministic` on every Sec. 3 and Sec. 4 scene of Radenkovic & Simonin 2021. Reuses the
-# deterministic runs of scripts/radenkovic2021.sh when they are there (runs them otherwise),
+# deterministic runs of scripts/radenkovic2021.sh when the same reproduce-all.sh made them
+# (same case, particles and directory; run_once), runs them otherwise,
 # runs each variant with the same particles per condition and compares. Writes
 # $REBOUND_RESULTS/wall-models/<scene>/<variant>/{stochastic,compare}/; `rebound report`
 # aggregates them into wall_models.csv and a REPORT.md table.
@@ -18,9 +19,7 @@ for sdir in $P_WALL_MODELS_SCENES; do
   scene=${scene#"$P_SEC4"}
   det="$R/$sdir/$P_DETERMINISTIC"
   stage_start "Wall models $scene"
-  if [ ! -f "$det/summary.csv" ] || [ "$(awk -F, 'NR==2{print $5}' "$det/summary.csv")" -lt "$((N / 2))" ]; then
-    run deterministic --case "cases/$scene.toml" --particles "$N" --out "$det"
-  fi
+  run_once deterministic --case "cases/$scene.toml" --particles "$N" --out "$det"
   for v in $VARIANTS; do
     case_file="$W/cases/$scene-$v.toml"
     variant_case "cases/$scene.toml" "$v" > "$case_file"

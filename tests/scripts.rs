@@ -1,6 +1,8 @@
-//! The reproduction scripts in reduced mode (issue 6): every expected file appears with its
-//! header, so a script cannot rot silently. Runs `scripts/reproduce-all.sh` with
-//! `REBOUND_QUICK=1` into a temporary directory, using the binary under test.
+//! The reproduction scripts in reduced mode (issues 6, 43): every expected file appears with
+//! its header, so a script cannot rot silently, and the reproduction runs from what a clone
+//! holds. Runs `scripts/reproduce-all.sh` with `REBOUND_QUICK=1`, using the binary under test,
+//! over a copy of the `results/` files git tracks — the tree a fresh clone has, whose tables
+//! lack the per-run PDFs `.gitignore` drops — then once more over its own output.
 
 use crate::common::{headers, rebound_bin, repo_root};
 use std::path::Path;
@@ -11,21 +13,96 @@ fn header(path: &Path) -> String {
     text.lines().next().unwrap_or("").to_string()
 }
 
-#[test]
-fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
+/// Copies the files of `results/` that git tracks into `dest`, as a clone would have them.
+fn copy_tracked_results(dest: &Path) {
     let root = repo_root();
-    let out = tempfile::tempdir().unwrap();
-    let status = Command::new("bash")
-        .arg(root.join("scripts/reproduce-all.sh"))
+    let listed = Command::new("git")
+        .args(["ls-files", "-z", "--", "results"])
+        .current_dir(root)
+        .output()
+        .expect("git ls-files (the test copies results/ as a clone has it)");
+    assert!(listed.status.success(), "git ls-files failed");
+    let files: Vec<&[u8]> = listed
+        .stdout
+        .split(|&b| b == 0)
+        .filter(|f| !f.is_empty())
+        .collect();
+    assert!(files.len() > 100, "git tracks only {} files under results/", files.len());
+    for f in files {
+        let rel = Path::new(std::str::from_utf8(f).unwrap())
+            .strip_prefix("results")
+            .unwrap();
+        let to = dest.join(rel);
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(root.join("results").join(rel), &to)
+            .unwrap_or_else(|e| panic!("results/{}: {e}", rel.display()));
+    }
+}
+
+fn reproduce_quick(out: &Path) -> String {
+    let run = Command::new("bash")
+        .arg(repo_root().join("scripts/reproduce-all.sh"))
         .env("REBOUND_QUICK", "1")
         // The pipe-flow study needs code_saturne: tests/real_systems/pipe_flow.rs runs it.
         .env("REBOUND_WITHOUT_CFD", "1")
         .env("REBOUND_BIN", rebound_bin())
-        .env("REBOUND_RESULTS", out.path())
-        .status()
+        .env("REBOUND_RESULTS", out)
+        .output()
         .unwrap();
-    assert!(status.success(), "reproduce-all.sh failed");
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "reproduce-all.sh failed over {}:\n{}\n{}",
+        out.display(),
+        &stdout[stdout.len().saturating_sub(3000)..],
+        String::from_utf8_lossy(&run.stderr)
+    );
+    std::fs::read_to_string(out.join("reproducibility.txt")).expect("reproducibility.txt")
+}
+
+/// The number after `key` on its line of a `reproducibility.txt`.
+fn count(text: &str, key: &str) -> usize {
+    let line = text
+        .lines()
+        .find(|l| l.starts_with(key))
+        .unwrap_or_else(|| panic!("no `{key}` in\n{text}"));
+    line[key.len()..]
+        .split_whitespace()
+        .next()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("{line}"))
+}
+
+#[test]
+fn reproduce_all_in_reduced_mode_runs_from_a_clone_and_writes_every_expected_file() {
+    let out = tempfile::tempdir().unwrap();
     let o = out.path();
+    copy_tracked_results(o);
+    let csvs_in_clone = walk_csvs(o);
+    // 1. From the clone's tree: every CSV it had is byte-identical or differs for a stated
+    //    reason (the clone's were made in full mode, this run is quick).
+    let first = reproduce_quick(o);
+    assert!(first.starts_with("mode: quick\n"), "{first}");
+    assert_eq!(
+        count(&first, "CSV files present before this run: "),
+        csvs_in_clone,
+        "{first}"
+    );
+    let different = count(&first, "different: ");
+    if different > 0 {
+        assert!(
+            first.contains("(explained: the files before were made in full mode, this run in quick mode)"),
+            "{first}"
+        );
+    }
+    // 2. Again over its own output: the same seeds give the same bytes, for every CSV.
+    let second = reproduce_quick(o);
+    assert_eq!(count(&second, "different: "), 0, "{second}");
+    assert_eq!(
+        count(&second, "byte-identical after re-running with the same seeds: "),
+        walk_csvs(o),
+        "{second}"
+    );
     let summary = headers::SUMMARY.to_string();
     let pdfs = headers::PDFS.to_string();
     let moments = headers::MOMENTS.to_string();
@@ -133,6 +210,22 @@ fn reproduce_all_in_reduced_mode_writes_every_expected_file() {
         !report.contains("*Not run"),
         "a stage did not run:\n{report}"
     );
+}
+
+/// The CSV files under `dir` that the reproduction fingerprints (all but speed_vs_error.csv).
+fn walk_csvs(dir: &Path) -> usize {
+    let mut n = 0;
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            n += walk_csvs(&p);
+        } else if p.extension().is_some_and(|x| x == "csv")
+            && p.file_name().is_some_and(|f| f != "speed_vs_error.csv")
+        {
+            n += 1;
+        }
+    }
+    n
 }
 
 /// The README's performance table is what `scripts/bench-readme.sh` prints (issue 33): the

@@ -27,7 +27,11 @@ fn copy_tracked_results(dest: &Path) {
         .split(|&b| b == 0)
         .filter(|f| !f.is_empty())
         .collect();
-    assert!(files.len() > 100, "git tracks only {} files under results/", files.len());
+    assert!(
+        files.len() > 100,
+        "git tracks only {} files under results/",
+        files.len()
+    );
     for f in files {
         let rel = Path::new(std::str::from_utf8(f).unwrap())
             .strip_prefix("results")
@@ -91,7 +95,9 @@ fn reproduce_all_in_reduced_mode_runs_from_a_clone_and_writes_every_expected_fil
     let different = count(&first, "different: ");
     if different > 0 {
         assert!(
-            first.contains("(explained: the files before were made in full mode, this run in quick mode)"),
+            first.contains(
+                "(explained: the files before were made in full mode, this run in quick mode)"
+            ),
             "{first}"
         );
     }
@@ -99,7 +105,10 @@ fn reproduce_all_in_reduced_mode_runs_from_a_clone_and_writes_every_expected_fil
     let second = reproduce_quick(o);
     assert_eq!(count(&second, "different: "), 0, "{second}");
     assert_eq!(
-        count(&second, "byte-identical after re-running with the same seeds: "),
+        count(
+            &second,
+            "byte-identical after re-running with the same seeds: "
+        ),
         walk_csvs(o),
         "{second}"
     );

@@ -28,6 +28,7 @@ use crate::writers::scan_diameters::{diameters_table, manifest_rows};
 use crate::writers::surface::round_ms;
 use roughwall::deterministic::scene::SurfacePlan;
 use roughwall::error::Result;
+use roughwall::surface::scan::centre_surface::centre_surface_bytes;
 use roughwall::surface::scan::correlation_map::{correlation_map, map_bytes};
 use roughwall::surface::scan::lay::angle_histograms;
 use roughwall::surface::scan::notes::{labelled, notes};
@@ -40,10 +41,6 @@ use std::time::Instant;
 
 /// Bins of the slope-angle histograms, over `±4` times the larger deviation.
 pub const HIST_BINS: usize = 100;
-
-/// Bytes a sphere's centre surface needs beside the levelled scan, per point: the two
-/// passes of the dilation and the exact field (f64), and the masks of the edges (bytes).
-const CENTRE_SURFACE_BYTES_PER_POINT: u64 = 2 * 8 + 2;
 
 /// Lags drawn at least on each side of the map's origin.
 const MAP_MIN_LAGS: f64 = 16.0;
@@ -157,8 +154,8 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         roughwall::memory::require(
             key,
             format!("[{}]", um.join(", ")),
-            CENTRE_SURFACE_BYTES_PER_POINT * (nx * ny) as u64,
-            &format!("the centre surface of a sphere over the {nx} × {ny} scan"),
+            centre_surface_bytes(nx, ny),
+            &format!("the centre surface of a sphere over the {nx} × {ny} scan {file}"),
         )?;
     }
     let size_key = match &setup.source {
@@ -166,9 +163,13 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         ScanSource::Generated(_) if ctx.case.surface.is_some() => "surface.nodes",
         ScanSource::Generated(_) => "wall (the automatic grid's nodes)",
     };
+    let size_value = match &setup.source {
+        ScanSource::File(_) => format!("{file} ({nx} × {ny} points)"),
+        ScanSource::Generated(_) => format!("{nx} × {ny} points"),
+    };
     roughwall::memory::require(
         size_key,
-        format!("{nx} × {ny} points"),
+        size_value,
         map_bytes(nx, ny),
         "the autocorrelation map",
     )?;
@@ -186,7 +187,13 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
     };
     let t_read = t0.elapsed().as_secs_f64();
     let points = (field.nx * field.ny) as u64;
-    let c = characterise(field, setup.level_degree)?;
+    // The library's refusals (levelling, memory) name the scan, not the file: add it.
+    let c = characterise(field, setup.level_degree).map_err(|e| match e {
+        roughwall::error::Error::Input(m) if !file.is_empty() => {
+            roughwall::error::Error::Input(format!("{file}: {m}"))
+        }
+        other => other,
+    })?;
     let t_char = t0.elapsed().as_secs_f64() - t_read;
 
     // The point particle costs no dilation; each sphere one over the whole scan.

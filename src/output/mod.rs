@@ -124,13 +124,23 @@ impl Manifest {
         self.started.elapsed().as_secs_f64()
     }
 
-    /// Writes `dir/run.toml` with the wall time so far.
+    /// Writes `dir/run.toml` with the wall time so far. A value that could not be computed
+    /// (NaN or infinite) is left out, its key listed in `[run] not_computed` (issue 42: a
+    /// scan offset by 1e300 m wrote `sq_um = inf`).
     pub fn write(mut self, dir: &Path) -> Result<PathBuf> {
         let wall = self.elapsed_s();
         self.set_run(
             "wall_time_s",
             toml::Value::Float((wall * 1e3).round() / 1e3),
         );
+        let mut dropped = Vec::new();
+        drop_non_finite(&mut self.root, "", &mut dropped);
+        if !dropped.is_empty() {
+            self.set_run(
+                "not_computed",
+                toml::Value::Array(dropped.into_iter().map(toml::Value::String).collect()),
+            );
+        }
         let text = toml::to_string_pretty(&self.root)
             .map_err(|e| Error::Internal(format!("run.toml: {e}")))?;
         let path = dir.join("run.toml");
@@ -139,9 +149,89 @@ impl Manifest {
     }
 }
 
+/// Whether `v` holds a NaN or an infinity (in a float, or anywhere in an array).
+fn non_finite(v: &toml::Value) -> bool {
+    match v {
+        toml::Value::Float(x) => !x.is_finite(),
+        toml::Value::Array(a) => a.iter().any(non_finite),
+        _ => false,
+    }
+}
+
+/// Removes from `t` (and the tables inside it, also those in arrays of tables) every entry
+/// holding a NaN or an infinity, pushing its dotted key (under `prefix`) to `dropped`.
+fn drop_non_finite(t: &mut toml::Table, prefix: &str, dropped: &mut Vec<String>) {
+    let path = |k: &str| {
+        if prefix.is_empty() {
+            k.to_string()
+        } else {
+            format!("{prefix}.{k}")
+        }
+    };
+    t.retain(|k, v| {
+        let keep = matches!(v, toml::Value::Array(a) if a.iter().all(toml::Value::is_table))
+            || !non_finite(v);
+        if !keep {
+            dropped.push(path(k));
+        }
+        keep
+    });
+    for (k, v) in t.iter_mut() {
+        match v {
+            toml::Value::Table(inner) => drop_non_finite(inner, &path(k), dropped),
+            toml::Value::Array(a) => {
+                for (i, item) in a.iter_mut().enumerate() {
+                    if let toml::Value::Table(inner) = item {
+                        drop_non_finite(inner, &format!("{}[{i}]", path(k)), dropped);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A manifest never holds a NaN or an infinity: the entry is left out and named.
+    #[test]
+    fn non_finite_values_are_left_out_of_the_manifest_and_named() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut m = Manifest::new("scan", &toml::Table::new(), 1, 1);
+        let mut scan = toml::Table::new();
+        scan.insert("sq_um".into(), toml::Value::Float(f64::INFINITY));
+        scan.insert("lay_deg".into(), toml::Value::Float(3.0));
+        scan.insert(
+            "pixel_um".into(),
+            toml::Value::Array(vec![1.0.into(), f64::NAN.into()]),
+        );
+        m.set("scan", toml::Value::Table(scan));
+        let mut row = toml::Table::new();
+        row.insert("fraction".into(), toml::Value::Float(f64::NAN));
+        m.set(
+            "diameter",
+            toml::Value::Array(vec![toml::Value::Table(row)]),
+        );
+        let text = std::fs::read_to_string(m.write(dir.path()).unwrap()).unwrap();
+        let back: toml::Table = text.parse().unwrap();
+        assert!(
+            !text.to_lowercase().contains("nan") && !text.contains("inf"),
+            "{text}"
+        );
+        assert_eq!(back["scan"]["lay_deg"].as_float(), Some(3.0));
+        let named: Vec<&str> = back["run"]["not_computed"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_str().unwrap())
+            .collect();
+        assert_eq!(
+            named,
+            ["diameter[0].fraction", "scan.pixel_um", "scan.sq_um"]
+        );
+    }
 
     #[test]
     fn numbers_are_short_and_stable() {

@@ -7,6 +7,7 @@
 
 use crate::errors::{guarded, invalid, on_threads, to_py};
 use numpy::PyArray1;
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use roughwall::check::{check_int_range, check_range};
@@ -20,6 +21,9 @@ use roughwall::surface::Triangulation;
 use roughwall::tally::engine::{self, Plan, Silent};
 use roughwall::tally::{ConditionResult, ConditionTally, Estimate};
 use roughwall::wall_model::{WallModel, WallParams};
+
+/// Incident conditions of a run.
+const MAX_CONDITIONS: usize = 10_000;
 
 /// Particles per condition, as a case's `[particles] count`.
 const MAX_PARTICLES: u64 = 100_000_000;
@@ -50,7 +54,7 @@ type Collision = (
 /// The scene's keyword parameters as Python passes them.
 #[derive(FromPyObject)]
 #[pyo3(from_item_all)]
-pub struct SceneArgs {
+pub struct SceneArgs<'py> {
     delta_xi_deg: f64,
     delta_zeta_deg: f64,
     law: Option<String>,
@@ -60,7 +64,9 @@ pub struct SceneArgs {
     delta_gamma_deg: Option<f64>,
     psi: Option<f64>,
     escape_table: Option<String>,
-    conditions: Vec<(f64, f64)>,
+    /// A sequence of `(alpha_in_deg, beta_in_deg)` pairs: its length is checked before it is
+    /// copied.
+    conditions: Bound<'py, PyAny>,
     speed_m_s: (f64, f64),
     diameter_m: f64,
     particles: u64,
@@ -70,7 +76,7 @@ pub struct SceneArgs {
     threads: usize,
 }
 
-impl SceneArgs {
+impl SceneArgs<'_> {
     /// The scene, with the checks of the case keys each value stands for.
     fn checked(self) -> PyResult<Scene> {
         let (e_h, alpha_e_deg, mu_0, mu_h, alpha_mu_deg) = self.collision;
@@ -93,15 +99,24 @@ impl SceneArgs {
             escape_table: self.escape_table,
         })
         .map_err(to_py)?;
-        if self.conditions.is_empty() || self.conditions.len() > 10_000 {
+        let allowed = "1 to 10000 (alpha_in_deg, beta_in_deg) pairs";
+        let count = self
+            .conditions
+            .len()
+            .map_err(|_| PyTypeError::new_err(format!("`conditions`: allowed {allowed}")))?;
+        if count == 0 || count > MAX_CONDITIONS {
             return Err(invalid(
                 "conditions",
-                format!("{} conditions", self.conditions.len()),
-                "1 to 10000 (alpha_in_deg, beta_in_deg) pairs",
+                format!("{count} conditions"),
+                allowed,
             ));
         }
+        let pairs: Vec<(f64, f64)> = self
+            .conditions
+            .extract()
+            .map_err(|_| PyTypeError::new_err(format!("`conditions`: allowed {allowed}")))?;
         let mut conditions = Vec::new();
-        for &(a, b) in &self.conditions {
+        for &(a, b) in &pairs {
             if !(-90.0..0.0).contains(&a) {
                 return Err(invalid("alpha_in_deg", a, "angles in [-90, 0) degrees"));
             }
@@ -262,43 +277,45 @@ impl Scene {
 
 /// The stochastic model on the scene (`rebound stochastic`): a dict of arrays.
 #[pyfunction]
-pub fn stochastic<'py>(py: Python<'py>, args: SceneArgs) -> PyResult<Bound<'py, PyDict>> {
-    let scene = args.checked()?;
-    let w = &scene.wall;
-    let setup = simulate::ModelSetup {
-        wall: w.wall,
-        law: w.law,
-        psi: w.psi,
-        diameter_m: scene.diameter_m,
-        speed: scene.speed,
-        erosion: None,
-        variant: w.variant,
-        spin: SpinLaw::default(),
-    };
-    let specs = scene
-        .conditions
-        .iter()
-        .map(|c| simulate::tally_spec(&w.wall, *c, scene.bin_width_deg, None))
-        .collect();
-    let plan = scene.plan(specs);
-    let tallies = py.detach(|| {
-        guarded(|| {
-            on_threads(scene.threads, || {
-                engine::run(&plan, &Silent, |k, start, end, block| {
-                    simulate::fill_block(
-                        &setup,
-                        &scene.conditions[k],
-                        k as u64,
-                        scene.seed,
-                        (start, end),
-                        block,
-                    )
+pub fn stochastic<'py>(py: Python<'py>, args: SceneArgs<'py>) -> PyResult<Bound<'py, PyDict>> {
+    guarded(|| {
+        let scene = args.checked()?;
+        let w = &scene.wall;
+        let setup = simulate::ModelSetup {
+            wall: w.wall,
+            law: w.law,
+            psi: w.psi,
+            diameter_m: scene.diameter_m,
+            speed: scene.speed,
+            erosion: None,
+            variant: w.variant,
+            spin: SpinLaw::default(),
+        };
+        let specs = scene
+            .conditions
+            .iter()
+            .map(|c| simulate::tally_spec(&w.wall, *c, scene.bin_width_deg, None))
+            .collect();
+        let plan = scene.plan(specs);
+        let tallies = py.detach(|| {
+            guarded(|| {
+                on_threads(scene.threads, || {
+                    engine::run(&plan, &Silent, |k, start, end, block| {
+                        simulate::fill_block(
+                            &setup,
+                            &scene.conditions[k],
+                            k as u64,
+                            scene.seed,
+                            (start, end),
+                            block,
+                        )
+                    })
                 })
             })
-        })
-    })?;
-    let tallies: Vec<ConditionTally> = tallies.into_iter().map(|(t, _)| t).collect();
-    results(py, &scene, &tallies)
+        })?;
+        let tallies: Vec<ConditionTally> = tallies.into_iter().map(|(t, _)| t).collect();
+        results(py, &scene, &tallies)
+    })
 }
 
 /// What the deterministic model adds to the scene.
@@ -318,114 +335,116 @@ pub struct SurfaceArgs {
 #[pyfunction]
 pub fn deterministic<'py>(
     py: Python<'py>,
-    args: SceneArgs,
+    args: SceneArgs<'py>,
     surface: SurfaceArgs,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let scene = args.checked()?;
-    let s = &surface;
-    check_int_range(
-        "max_collisions",
-        s.max_collisions.into(),
-        1,
-        1_000_000,
-        "an integer from 1 to 1000000",
-    )
-    .and_then(|_| {
+    guarded(|| {
+        let scene = args.checked()?;
+        let s = &surface;
         check_int_range(
-            "surfaces",
-            s.surfaces.into(),
+            "max_collisions",
+            s.max_collisions.into(),
             1,
-            1024,
-            "an integer from 1 to 1024",
+            1_000_000,
+            "an integer from 1 to 1000000",
         )
-    })
-    .and_then(|_| {
-        check_range(
-            "spacing_per_corr_length",
-            s.spacing_per_corr_length,
-            1.0,
-            64.0,
-            "a number from 1 to 64",
-        )
-    })
-    .and_then(|_| {
-        check_range(
-            "side_per_corr_length",
-            s.side_per_corr_length,
-            1.0,
-            10_000.0,
-            "a number from 1 to 10000",
-        )
-    })
-    .map_err(to_py)?;
-    let triangulation = Triangulation::from_name(&surface.triangulation).ok_or_else(|| {
-        invalid(
-            "triangulation",
-            format!("\"{}\"", surface.triangulation),
-            "\"alternating\" or \"uniform\"",
-        )
-    })?;
-    let deviations = WallDeviations::from_name(&surface.wall_deviations).ok_or_else(|| {
-        invalid(
-            "wall_deviations",
-            format!("\"{}\"", surface.wall_deviations),
-            "\"normal-angles\" or \"eq15\"",
-        )
-    })?;
-    let w = &scene.wall;
-    let options = SceneOptions {
-        spacing_per_corr_length: surface.spacing_per_corr_length,
-        side_per_corr_length: surface.side_per_corr_length,
-        deviations,
-        ..SceneOptions::default()
-    };
-    let surface_plan =
-        SurfacePlan::auto(w.wall.delta_xi, w.wall.delta_zeta, &options).map_err(to_py)?;
-    let setup = roughwall::deterministic::ModelSetup {
-        law: w.law,
-        diameter_m: scene.diameter_m,
-        speed: scene.speed,
-        wall: w.wall,
-        psi: w.psi,
-        erosion: None,
-        spin: SpinLaw::default(),
-    };
-    let specs = scene
-        .conditions
-        .iter()
-        .map(|c| {
-            roughwall::deterministic::tally_spec(&w.wall, *c, scene.bin_width_deg, None)
-                .with_realisations(surface.surfaces)
+        .and_then(|_| {
+            check_int_range(
+                "surfaces",
+                s.surfaces.into(),
+                1,
+                1024,
+                "an integer from 1 to 1024",
+            )
         })
-        .collect();
-    let plan = scene.plan(specs);
-    let tallies = py.detach(|| {
-        guarded(|| {
-            on_threads(scene.threads, || {
-                let built = build_surfaces(
-                    Some(&surface_plan),
-                    None,
-                    None,
-                    scene.seed,
-                    triangulation,
-                    surface.surfaces,
-                )
-                .map_err(to_py)?;
-                let real = realisations(&built, surface.max_collisions, None).map_err(to_py)?;
-                Ok(engine::run(&plan, &Silent, |k, start, end, block| {
-                    roughwall::deterministic::fill_block(
-                        &real,
-                        &setup,
-                        &scene.conditions[k],
-                        k as u64,
+        .and_then(|_| {
+            check_range(
+                "spacing_per_corr_length",
+                s.spacing_per_corr_length,
+                1.0,
+                64.0,
+                "a number from 1 to 64",
+            )
+        })
+        .and_then(|_| {
+            check_range(
+                "side_per_corr_length",
+                s.side_per_corr_length,
+                1.0,
+                10_000.0,
+                "a number from 1 to 10000",
+            )
+        })
+        .map_err(to_py)?;
+        let triangulation = Triangulation::from_name(&surface.triangulation).ok_or_else(|| {
+            invalid(
+                "triangulation",
+                format!("\"{}\"", surface.triangulation),
+                "\"alternating\" or \"uniform\"",
+            )
+        })?;
+        let deviations = WallDeviations::from_name(&surface.wall_deviations).ok_or_else(|| {
+            invalid(
+                "wall_deviations",
+                format!("\"{}\"", surface.wall_deviations),
+                "\"normal-angles\" or \"eq15\"",
+            )
+        })?;
+        let w = &scene.wall;
+        let options = SceneOptions {
+            spacing_per_corr_length: surface.spacing_per_corr_length,
+            side_per_corr_length: surface.side_per_corr_length,
+            deviations,
+            ..SceneOptions::default()
+        };
+        let surface_plan =
+            SurfacePlan::auto(w.wall.delta_xi, w.wall.delta_zeta, &options).map_err(to_py)?;
+        let setup = roughwall::deterministic::ModelSetup {
+            law: w.law,
+            diameter_m: scene.diameter_m,
+            speed: scene.speed,
+            wall: w.wall,
+            psi: w.psi,
+            erosion: None,
+            spin: SpinLaw::default(),
+        };
+        let specs = scene
+            .conditions
+            .iter()
+            .map(|c| {
+                roughwall::deterministic::tally_spec(&w.wall, *c, scene.bin_width_deg, None)
+                    .with_realisations(surface.surfaces)
+            })
+            .collect();
+        let plan = scene.plan(specs);
+        let tallies = py.detach(|| {
+            guarded(|| {
+                on_threads(scene.threads, || {
+                    let built = build_surfaces(
+                        Some(&surface_plan),
+                        None,
+                        None,
                         scene.seed,
-                        (start, end),
-                        block,
+                        triangulation,
+                        surface.surfaces,
                     )
-                }))
-            })?
-        })
-    })?;
-    let tallies: Vec<ConditionTally> = tallies.into_iter().map(|(t, _)| t).collect();
-    results(py, &scene, &tallies)
+                    .map_err(to_py)?;
+                    let real = realisations(&built, surface.max_collisions, None).map_err(to_py)?;
+                    Ok(engine::run(&plan, &Silent, |k, start, end, block| {
+                        roughwall::deterministic::fill_block(
+                            &real,
+                            &setup,
+                            &scene.conditions[k],
+                            k as u64,
+                            scene.seed,
+                            (start, end),
+                            block,
+                        )
+                    }))
+                })?
+            })
+        })?;
+        let tallies: Vec<ConditionTally> = tallies.into_iter().map(|(t, _)| t).collect();
+        results(py, &scene, &tallies)
+    })
 }

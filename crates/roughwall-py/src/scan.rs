@@ -3,15 +3,18 @@
 //! `roughwall::surface::scan::characterise`, with the wall card's per-diameter deviations
 //! (`resolution::seen_by`) and notes (`notes`), as `rebound scan` writes them.
 
-use crate::errors::{guarded, invalid, on_threads, to_py};
+use crate::errors::{bytes_of, guarded, invalid, on_threads, require, to_py, with_capacity};
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
-use roughwall::check::check_int_range;
+use roughwall::check::{check_int_range, check_range};
+use roughwall::surface::scan::centre_surface::centre_surface_bytes;
 use roughwall::surface::scan::notes::{labelled, notes, spread};
 use roughwall::surface::scan::resolution::{seen_by, SeenBy};
-use roughwall::surface::scan::{characterise, levelling::MAX_DEGREE, Characterisation, ScanField};
+use roughwall::surface::scan::{
+    characterise, levelling::MAX_DEGREE, Characterisation, ScanField, MAX_POINTS, SPACING_RANGE_M,
+};
 use std::path::PathBuf;
 use topography::{ErrorKind, Format};
 
@@ -21,8 +24,20 @@ const MAX_DIAMETERS: usize = 64;
 /// Diameters allowed (m): a nanometre to a metre.
 const DIAMETER_RANGE_M: (f64, f64) = (1e-9, 1.0);
 
+/// A pixel size or unit given with a plain-text scan: finite and `> 0` (the reader and the
+/// wall card check their ranges).
+fn positive(key: &str, v: f64, what: &str) -> PyResult<()> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(invalid(key, v, &format!("{what}: a finite number > 0")))
+    }
+}
+
 /// Reads an instrument file; returns (heights `(ny, nx)` in metres with NaN for missing
-/// points, `dx`, `dy` in metres, the format's name, the file's other information).
+/// points, `dx`, `dy` in metres, the format's name, the file's other information). What is
+/// not a regular file (a FIFO, a directory, a device) is refused before it is opened, as an
+/// `OSError` naming the file.
 #[pyfunction]
 #[pyo3(signature = (path, format, pixel_m, height_unit_m))]
 pub fn read_scan<'py>(
@@ -32,55 +47,66 @@ pub fn read_scan<'py>(
     pixel_m: Option<(f64, f64)>,
     height_unit_m: Option<f64>,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let format = match format.as_deref() {
-        None | Some("auto") => None,
-        Some(name) => Some(Format::from_name(name).ok_or_else(|| {
-            let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
-            invalid(
-                "format",
-                format!("\"{name}\""),
-                &format!("\"auto\" or one of {}", names.join(", ")),
-            )
-        })?),
-    };
-    let units = matches!(format, Some(Format::Matrix | Format::Xyz));
-    if units != (pixel_m.is_some() && height_unit_m.is_some()) || (!units && pixel_m.is_some()) {
-        return Err(PyValueError::new_err(
-            "`pixel_m` and `height_unit_m`: give both with format=\"matrix\" or \"xyz\" (their files state no units), and neither otherwise",
-        ));
-    }
-    let t = py.detach(|| {
-        guarded(|| {
-            let read = match (format, pixel_m, height_unit_m) {
-                (Some(Format::Matrix), Some((dx, dy)), Some(u)) => {
-                    topography::read_matrix(&path, dx, dy, u)
-                }
-                (Some(Format::Xyz), Some((dx, dy)), Some(u)) => topography::read_xyz(&path, 1.0, u)
-                    .map(|mut t| {
-                        t.dx_m = dx;
-                        t.dy_m = dy;
-                        t
-                    }),
-                (Some(f), _, _) => topography::read_as(&path, f),
-                (None, _, _) => topography::read(&path),
-            };
-            read.map_err(|e| match e.kind() {
-                ErrorKind::Io => PyOSError::new_err(e.to_string()),
-                _ => PyValueError::new_err(e.to_string()),
+    guarded(|| {
+        let format = match format.as_deref() {
+            None | Some("auto") => None,
+            Some(name) => Some(Format::from_name(name).ok_or_else(|| {
+                let names: Vec<&str> = Format::ALL.iter().map(|f| f.name()).collect();
+                invalid(
+                    "format",
+                    format!("\"{name}\""),
+                    &format!("\"auto\" or one of {}", names.join(", ")),
+                )
+            })?),
+        };
+        let units = matches!(format, Some(Format::Matrix | Format::Xyz));
+        if units != (pixel_m.is_some() && height_unit_m.is_some()) || (!units && pixel_m.is_some())
+        {
+            return Err(PyValueError::new_err(
+                "`pixel_m` and `height_unit_m`: give both with format=\"matrix\" or \"xyz\" (their files state no units), and neither otherwise",
+            ));
+        }
+        if let Some((dx, dy)) = pixel_m {
+            positive("pixel_m", dx, "pixel sizes (dx, dy) in m")?;
+            positive("pixel_m", dy, "pixel sizes (dx, dy) in m")?;
+        }
+        if let Some(u) = height_unit_m {
+            positive("height_unit_m", u, "the length of one height unit in m")?;
+        }
+        let t = py.detach(|| {
+            guarded(|| {
+                let read = match (format, pixel_m, height_unit_m) {
+                    (Some(Format::Matrix), Some((dx, dy)), Some(u)) => {
+                        topography::read_matrix(&path, dx, dy, u)
+                    }
+                    (Some(Format::Xyz), Some((dx, dy)), Some(u)) => {
+                        topography::read_xyz(&path, 1.0, u).map(|mut t| {
+                            t.dx_m = dx;
+                            t.dy_m = dy;
+                            t
+                        })
+                    }
+                    (Some(f), _, _) => topography::read_as(&path, f),
+                    (None, _, _) => topography::read(&path),
+                };
+                read.map_err(|e| match e.kind() {
+                    ErrorKind::Io => PyOSError::new_err(e.to_string()),
+                    _ => PyValueError::new_err(e.to_string()),
+                })
             })
-        })
-    })?;
-    let heights = PyArray1::from_vec(py, t.heights_m).reshape([t.ny, t.nx])?;
-    PyTuple::new(
-        py,
-        [
-            heights.into_any(),
-            t.dx_m.into_pyobject(py)?.into_any(),
-            t.dy_m.into_pyobject(py)?.into_any(),
-            t.format.name().into_pyobject(py)?.into_any(),
-            PyList::new(py, t.info)?.into_any(),
-        ],
-    )
+        })?;
+        let heights = PyArray1::from_vec(py, t.heights_m).reshape([t.ny, t.nx])?;
+        PyTuple::new(
+            py,
+            [
+                heights.into_any(),
+                t.dx_m.into_pyobject(py)?.into_any(),
+                t.dy_m.into_pyobject(py)?.into_any(),
+                t.format.name().into_pyobject(py)?.into_any(),
+                PyList::new(py, t.info)?.into_any(),
+            ],
+        )
+    })
 }
 
 fn deg(x: f64) -> f64 {
@@ -195,40 +221,77 @@ pub fn wall_card<'py>(
     diameters_m: Vec<f64>,
     threads: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
-    check_int_range(
-        "level_degree",
-        level_degree.into(),
-        1,
-        MAX_DEGREE as i64,
-        "1, 2 or 3",
-    )
-    .map_err(to_py)?;
-    if diameters_m.len() > MAX_DIAMETERS {
-        return Err(invalid(
-            "diameters_m",
-            format!("{} diameters", diameters_m.len()),
-            &format!("at most {MAX_DIAMETERS}"),
-        ));
-    }
-    let (lo, hi) = DIAMETER_RANGE_M;
-    if let Some(d) = diameters_m.iter().find(|d| !(lo..=hi).contains(*d)) {
-        return Err(invalid(
-            "diameters_m",
-            d,
-            &format!("diameters from {lo} to {hi} m"),
-        ));
-    }
-    let [ny, nx] = [heights.shape()[0], heights.shape()[1]];
-    let h = heights.as_array().iter().copied().collect::<Vec<f64>>();
-    let field = ScanField::new(nx, ny, dx, dy, h).map_err(to_py)?;
-    let (c, seen) = py.detach(|| {
-        guarded(|| {
-            on_threads(threads, || {
-                let c = characterise(field, level_degree).map_err(to_py)?;
-                let seen = seen_by(&c, &diameters_m).unwrap_or_default();
-                Ok((c, seen))
-            })?
-        })
-    })?;
-    card(py, c, &seen)
+    guarded(|| {
+        check_int_range(
+            "level_degree",
+            level_degree.into(),
+            1,
+            MAX_DEGREE as i64,
+            "1, 2 or 3",
+        )
+        .map_err(to_py)?;
+        if diameters_m.len() > MAX_DIAMETERS {
+            return Err(invalid(
+                "diameters_m",
+                format!("{} diameters", diameters_m.len()),
+                &format!("at most {MAX_DIAMETERS}"),
+            ));
+        }
+        let (lo, hi) = DIAMETER_RANGE_M;
+        if let Some(d) = diameters_m.iter().find(|d| !(lo..=hi).contains(*d)) {
+            return Err(invalid(
+                "diameters_m",
+                d,
+                &format!("diameters from {lo} to {hi} m"),
+            ));
+        }
+        // The spacings ScanField takes, named as the arguments that give them.
+        let (lo, hi) = SPACING_RANGE_M;
+        for (key, d) in [("dx", dx), ("dy", dy)] {
+            check_range(
+                key,
+                d,
+                lo,
+                hi,
+                &format!("a pixel size from {lo:e} to {hi} m (one outside this is a unit mistake)"),
+            )
+            .map_err(to_py)?;
+        }
+        let [ny, nx] = [heights.shape()[0], heights.shape()[1]];
+        let size = format!("{ny} × {nx} points");
+        let points = nx
+            .checked_mul(ny)
+            .filter(|&p| p <= MAX_POINTS)
+            .ok_or_else(|| invalid("scan", &size, &format!("at most {MAX_POINTS} points")))?;
+        // The copy the levelling works on, and a centre surface per sphere: checked before
+        // they are allocated.
+        let copy = bytes_of("scan", &size, points, 8, "a copy of the heights")?;
+        require("scan", &size, copy, "a copy of the heights")?;
+        if !diameters_m.is_empty() {
+            require(
+                "diameters_m",
+                format!("{} diameters", diameters_m.len()),
+                centre_surface_bytes(nx, ny),
+                &format!("the centre surface of a sphere over the {nx} × {ny} scan"),
+            )?;
+        }
+        let mut h = with_capacity::<f64>("scan", &size, points, "a copy of the heights")?;
+        // Row-major: a C-ordered array in one copy, any other layout point by point.
+        let view = heights.as_array();
+        match view.as_slice() {
+            Some(s) => h.extend_from_slice(s),
+            None => h.extend(view.iter().copied()),
+        }
+        let field = ScanField::new(nx, ny, dx, dy, h).map_err(to_py)?;
+        let (c, seen) = py.detach(|| {
+            guarded(|| {
+                on_threads(threads, || {
+                    let c = characterise(field, level_degree).map_err(to_py)?;
+                    let seen = seen_by(&c, &diameters_m).unwrap_or_default();
+                    Ok((c, seen))
+                })?
+            })
+        })?;
+        card(py, c, &seen)
+    })
 }

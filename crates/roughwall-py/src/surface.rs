@@ -1,7 +1,7 @@
 //! `roughwall.surface`: a Garcia–Stoll rough surface (`roughwall::surface::generate`,
 //! Radenkovic & Simonin 2021, Eqs. 1–2), as a 2-D array and its grid spacing.
 
-use crate::errors::{guarded, invalid, on_threads, to_py};
+use crate::errors::{guarded, invalid, on_threads, require, to_py};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -48,13 +48,12 @@ fn checked(spec: &SurfaceSpec) -> PyResult<()> {
             ));
         }
     }
-    roughwall::memory::require(
+    require(
         "nodes",
         spec.nodes,
         roughwall::surface::generate::generation_bytes(spec),
         &format!("generating a {0} × {0} surface", spec.nodes),
     )
-    .map_err(to_py)
 }
 
 /// Generates the surface; returns (heights `(nz, nx)` in metres, `dx`, `dz` in metres).
@@ -71,23 +70,25 @@ pub fn surface<'py>(
     seed: u64,
     threads: usize,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let spec = SurfaceSpec {
-        length_m,
-        nodes,
-        rms_height_m,
-        corr_length_x_m,
-        corr_length_z_m,
-    };
-    checked(&spec)?;
-    let field = py.detach(|| guarded(|| on_threads(threads, || generate(&spec, seed))))?;
-    let (nx, nz, dx, dz) = (field.nx, field.nz, field.dx, field.dz);
-    let heights = PyArray1::from_vec(py, field.heights).reshape([nz, nx])?;
-    PyTuple::new(
-        py,
-        [
-            heights.into_any(),
-            dx.into_pyobject(py)?.into_any(),
-            dz.into_pyobject(py)?.into_any(),
-        ],
-    )
+    guarded(|| {
+        let spec = SurfaceSpec {
+            length_m,
+            nodes,
+            rms_height_m,
+            corr_length_x_m,
+            corr_length_z_m,
+        };
+        checked(&spec)?;
+        let field = py.detach(|| guarded(|| on_threads(threads, || generate(&spec, seed))))?;
+        let (nx, nz, dx, dz) = (field.nx, field.nz, field.dx, field.dz);
+        let heights = PyArray1::from_vec(py, field.heights).reshape([nz, nx])?;
+        PyTuple::new(
+            py,
+            [
+                heights.into_any(),
+                dx.into_pyobject(py)?.into_any(),
+                dz.into_pyobject(py)?.into_any(),
+            ],
+        )
+    })
 }

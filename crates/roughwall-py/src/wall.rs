@@ -4,9 +4,9 @@
 //! The Python layer (`python/roughwall/_wall.py`) checks and broadcasts the arguments; this
 //! file checks them again (never trusting a caller) and runs the hits without the GIL.
 
-use crate::errors::{guarded, to_py};
+use crate::errors::{bytes_of, guarded, invalid, require, to_py, zeroed};
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use roughwall::collision::CollisionParams;
@@ -91,11 +91,19 @@ fn run(model: &WallModel, inputs: &Inputs, first: usize, mut out: Outputs) {
 }
 
 /// Every hit's rebound, split over `threads` threads in contiguous shares (as
-/// `rw_rebound_batch` splits them); each hit's result depends on its key alone.
-fn run_all(model: &WallModel, inputs: &Inputs, n: usize, threads: usize, out: Outputs) {
+/// `rw_rebound_batch` splits them); each hit's result depends on its key alone. A thread the
+/// system cannot start is an error (the shares already started finish first).
+fn run_all(
+    model: &WallModel,
+    inputs: &Inputs,
+    n: usize,
+    threads: usize,
+    out: Outputs,
+) -> std::io::Result<()> {
     let t = threads.clamp(1, n.max(1));
     if t == 1 {
-        return run(model, inputs, 0, out);
+        run(model, inputs, 0, out);
+        return Ok(());
     }
     let chunk = n.div_ceil(t);
     let Outputs {
@@ -125,14 +133,16 @@ fn run_all(model: &WallModel, inputs: &Inputs, n: usize, threads: usize, out: Ou
                 gamma_star,
                 candidate_walls,
             };
-            s.spawn(move || run(model, inputs, k * chunk, share));
+            std::thread::Builder::new()
+                .spawn_scoped(s, move || run(model, inputs, k * chunk, share))?;
         }
-    });
+        Ok(())
+    })
 }
 
 /// The rows of a checked input: 1 (broadcast) or `n`.
 fn rows(name: &str, len: usize, width: usize, n: usize) -> PyResult<()> {
-    if len == width || len == width * n {
+    if len == width || width.checked_mul(n) == Some(len) {
         Ok(())
     } else {
         Err(PyValueError::new_err(format!(
@@ -165,25 +175,38 @@ impl WallCore {
         delta_gamma_deg: Option<f64>,
         escape_table: Option<String>,
     ) -> PyResult<Self> {
-        let params = WallParams {
-            delta_xi_deg,
-            delta_zeta_deg,
-            collision: CollisionParams {
-                model: law,
-                preset,
-                e_h,
-                alpha_e_deg,
-                mu_0,
-                mu_h,
-                alpha_mu_deg,
-            },
-            psi,
-            seed,
-            model,
-            delta_gamma_deg,
-            escape_table,
-        };
         guarded(|| {
+            // The collision law is the case key `collision.model`: a name it refuses is named
+            // here as the argument Python passes. (Parameters given to the elastic law keep the
+            // library's message, the C library's `rw_wall_new`'s.)
+            if let Some(other) = law
+                .as_deref()
+                .filter(|l| !["elastic", "sommerfeld-huber"].contains(l))
+            {
+                return Err(invalid(
+                    "law",
+                    format!("\"{other}\""),
+                    "\"elastic\" or \"sommerfeld-huber\"",
+                ));
+            }
+            let params = WallParams {
+                delta_xi_deg,
+                delta_zeta_deg,
+                collision: CollisionParams {
+                    model: law,
+                    preset,
+                    e_h,
+                    alpha_e_deg,
+                    mu_0,
+                    mu_h,
+                    alpha_mu_deg,
+                },
+                psi,
+                seed,
+                model,
+                delta_gamma_deg,
+                escape_table,
+            };
             let (model, warnings) = WallModel::new(&params).map_err(to_py)?;
             Ok(WallCore { model, warnings })
         })
@@ -211,7 +234,9 @@ impl WallCore {
     /// The rebounds of `n` hits. Vector inputs are C-contiguous `(1, 3)` or `(n, 3)` float64
     /// arrays, the others `(1,)` or `(n,)`; returns (velocity, spin, status, gamma,
     /// gamma_star, candidate_walls) as new arrays. The GIL is released while the hits run.
-    #[pyo3(signature = (n, velocity, normal, lay, spin, wall_velocity, diameter, particle_id, collision_index, threads))]
+    /// `n_from` names the argument whose rows set `n` in messages (default `n`): outputs the
+    /// process cannot hold are a `MemoryError` naming it, before anything is allocated.
+    #[pyo3(signature = (n, velocity, normal, lay, spin, wall_velocity, diameter, particle_id, collision_index, threads, n_from=None))]
     #[allow(clippy::too_many_arguments)]
     fn rebound<'py>(
         &self,
@@ -226,86 +251,111 @@ impl WallCore {
         particle_id: PyReadonlyArray1<'py, u64>,
         collision_index: PyReadonlyArray1<'py, u64>,
         threads: usize,
+        n_from: Option<String>,
     ) -> PyResult<Bound<'py, PyTuple>> {
-        let contiguous = |name: &str| {
-            PyValueError::new_err(format!("`{name}`: a C-contiguous array is needed here"))
-        };
-        let inputs = Inputs {
-            velocity: velocity.as_slice().map_err(|_| contiguous("velocity"))?,
-            normal: normal.as_slice().map_err(|_| contiguous("normal"))?,
-            lay: lay.as_slice().map_err(|_| contiguous("lay"))?,
-            spin: spin.as_slice().map_err(|_| contiguous("spin"))?,
-            wall_velocity: wall_velocity
-                .as_slice()
-                .map_err(|_| contiguous("wall_velocity"))?,
-            diameter: diameter.as_slice().map_err(|_| contiguous("diameter"))?,
-            particle_id: particle_id
-                .as_slice()
-                .map_err(|_| contiguous("particle_id"))?,
-            collision_index: collision_index
-                .as_slice()
-                .map_err(|_| contiguous("collision_index"))?,
-        };
-        for (name, a, w) in [
-            ("velocity", &velocity, 3),
-            ("normal", &normal, 3),
-            ("lay", &lay, 3),
-            ("spin", &spin, 3),
-            ("wall_velocity", &wall_velocity, 3),
-        ] {
-            if a.shape()[1] != w {
-                return Err(PyValueError::new_err(format!(
-                    "`{name}` has shape {:?}: allowed (3,) or (n, 3)",
-                    a.shape()
-                )));
-            }
-        }
-        rows("velocity", inputs.velocity.len(), 3, n)?;
-        rows("normal", inputs.normal.len(), 3, n)?;
-        rows("lay", inputs.lay.len(), 3, n)?;
-        rows("spin", inputs.spin.len(), 3, n)?;
-        rows("wall_velocity", inputs.wall_velocity.len(), 3, n)?;
-        rows("diameter", inputs.diameter.len(), 1, n)?;
-        rows("particle_id", inputs.particle_id.len(), 1, n)?;
-        rows("collision_index", inputs.collision_index.len(), 1, n)?;
-        let model = self.model;
-        let threads = if threads == 0 {
-            std::thread::available_parallelism().map_or(1, |t| t.get())
-        } else {
-            threads
-        };
-        let (velocity_out, spin_out, status, gamma, gamma_star, candidate_walls) =
-            py.detach(|| {
-                guarded(|| {
-                    let mut v = vec![0.0; 3 * n];
-                    let mut w = vec![0.0; 3 * n];
-                    let mut status = vec![0i32; n];
-                    let mut gamma = vec![0.0; n];
-                    let mut gamma_star = vec![0.0; n];
-                    let mut candidates = vec![0u32; n];
-                    let out = Outputs {
-                        velocity: &mut v,
-                        spin: &mut w,
-                        status: &mut status,
-                        gamma: &mut gamma,
-                        gamma_star: &mut gamma_star,
-                        candidate_walls: &mut candidates,
-                    };
-                    run_all(&model, &inputs, n, threads, out);
-                    Ok((v, w, status, gamma, gamma_star, candidates))
-                })
+        guarded(|| {
+            // Outputs: 3 + 3 float64, 2 float64, an int32 and a uint32 per hit.
+            let (key, value) = match n_from.as_deref() {
+                None | Some("n") => ("n".to_string(), n.to_string()),
+                Some(name) => (name.to_string(), format!("{n} hits")),
+            };
+            let per_hit =
+                (6 * size_of::<f64>() + 2 * size_of::<f64>() + 2 * size_of::<u32>()) as u64;
+            let what = format!("returning the rebounds of {n} hits");
+            let bytes = bytes_of(&key, &value, n, per_hit, &what)?;
+            let n3 = n.checked_mul(3).ok_or_else(|| {
+                invalid(
+                    &key,
+                    &value,
+                    "a number of hits whose 3-vectors can be indexed (n · 3 < 2⁶⁴)",
+                )
             })?;
-        let vec3 = |v: Vec<f64>| PyArray1::from_vec(py, v).reshape([n, 3]);
-        PyTuple::new(
-            py,
-            [
-                vec3(velocity_out)?.into_any(),
-                vec3(spin_out)?.into_any(),
-                PyArray1::from_vec(py, status).into_any(),
-                PyArray1::from_vec(py, gamma).into_any(),
-                PyArray1::from_vec(py, gamma_star).into_any(),
-                PyArray1::from_vec(py, candidate_walls).into_any(),
-            ],
-        )
+            let contiguous = |name: &str| {
+                PyValueError::new_err(format!("`{name}`: a C-contiguous array is needed here"))
+            };
+            let inputs = Inputs {
+                velocity: velocity.as_slice().map_err(|_| contiguous("velocity"))?,
+                normal: normal.as_slice().map_err(|_| contiguous("normal"))?,
+                lay: lay.as_slice().map_err(|_| contiguous("lay"))?,
+                spin: spin.as_slice().map_err(|_| contiguous("spin"))?,
+                wall_velocity: wall_velocity
+                    .as_slice()
+                    .map_err(|_| contiguous("wall_velocity"))?,
+                diameter: diameter.as_slice().map_err(|_| contiguous("diameter"))?,
+                particle_id: particle_id
+                    .as_slice()
+                    .map_err(|_| contiguous("particle_id"))?,
+                collision_index: collision_index
+                    .as_slice()
+                    .map_err(|_| contiguous("collision_index"))?,
+            };
+            for (name, a, w) in [
+                ("velocity", &velocity, 3),
+                ("normal", &normal, 3),
+                ("lay", &lay, 3),
+                ("spin", &spin, 3),
+                ("wall_velocity", &wall_velocity, 3),
+            ] {
+                if a.shape()[1] != w {
+                    return Err(PyValueError::new_err(format!(
+                        "`{name}` has shape {:?}: allowed (3,) or (n, 3)",
+                        a.shape()
+                    )));
+                }
+            }
+            rows("velocity", inputs.velocity.len(), 3, n)?;
+            rows("normal", inputs.normal.len(), 3, n)?;
+            rows("lay", inputs.lay.len(), 3, n)?;
+            rows("spin", inputs.spin.len(), 3, n)?;
+            rows("wall_velocity", inputs.wall_velocity.len(), 3, n)?;
+            rows("diameter", inputs.diameter.len(), 1, n)?;
+            rows("particle_id", inputs.particle_id.len(), 1, n)?;
+            rows("collision_index", inputs.collision_index.len(), 1, n)?;
+            let model = self.model;
+            let threads = if threads == 0 {
+                std::thread::available_parallelism().map_or(1, |t| t.get())
+            } else {
+                threads
+            };
+            let (velocity_out, spin_out, status, gamma, gamma_star, candidate_walls) =
+                py.detach(|| {
+                    guarded(|| {
+                        require(&key, &value, bytes, &what)?;
+                        let mut v = zeroed(&key, &value, n3, "the rebound velocities")?;
+                        let mut w = zeroed(&key, &value, n3, "the rebound spins")?;
+                        let mut status = zeroed::<i32>(&key, &value, n, "the statuses")?;
+                        let mut gamma = zeroed(&key, &value, n, "the inclinations γ")?;
+                        let mut gamma_star = zeroed(&key, &value, n, "the inclinations γ*")?;
+                        let mut candidates =
+                            zeroed::<u32>(&key, &value, n, "the candidate counts")?;
+                        let out = Outputs {
+                            velocity: &mut v,
+                            spin: &mut w,
+                            status: &mut status,
+                            gamma: &mut gamma,
+                            gamma_star: &mut gamma_star,
+                            candidate_walls: &mut candidates,
+                        };
+                        run_all(&model, &inputs, n, threads, out).map_err(|e| {
+                            PyOSError::new_err(format!(
+                                "`threads` = {threads}: could not start the threads ({e})"
+                            ))
+                        })?;
+                        Ok((v, w, status, gamma, gamma_star, candidates))
+                    })
+                })?;
+            let vec3 = |v: Vec<f64>| PyArray1::from_vec(py, v).reshape([n, 3]);
+            PyTuple::new(
+                py,
+                [
+                    vec3(velocity_out)?.into_any(),
+                    vec3(spin_out)?.into_any(),
+                    PyArray1::from_vec(py, status).into_any(),
+                    PyArray1::from_vec(py, gamma).into_any(),
+                    PyArray1::from_vec(py, gamma_star).into_any(),
+                    PyArray1::from_vec(py, candidate_walls).into_any(),
+                ],
+            )
+        })
     }
 }

@@ -79,6 +79,11 @@ pub fn human(bytes: u64) -> String {
     }
 }
 
+/// What every refusal of [`require`] allows, after `allowed `: a caller that must tell a
+/// size refused for memory from another bad value (the Python bindings raise `MemoryError`)
+/// looks for it.
+pub const FITS_IN_MEMORY: &str = "a size that fits in memory";
+
 /// Refuses with a one-line input error naming `key = value` when `bytes` (what `what`
 /// needs) exceed what the process may allocate.
 pub fn require(key: &str, value: impl Display, bytes: u64, what: &str) -> Result<()> {
@@ -87,7 +92,7 @@ pub fn require(key: &str, value: impl Display, bytes: u64, what: &str) -> Result
             key,
             value,
             &format!(
-                "a size that fits in memory: {what} needs {}, the process may use {} (the least of the address-space limit, the cgroup limit and the free memory)",
+                "{FITS_IN_MEMORY}: {what} needs {}, the process may use {} (the least of the address-space limit, the cgroup limit and the free memory)",
                 human(bytes),
                 human(avail)
             ),
@@ -110,6 +115,7 @@ mod tests {
             m.contains("surface.nodes") && m.contains("40000") && !m.contains('\n'),
             "{m}"
         );
+        assert!(m.contains(&format!("allowed {FITS_IN_MEMORY}:")), "{m}");
         assert!(require("surface.nodes", 16, 1024, "a tiny grid").is_ok());
         assert_eq!(human(3 << 30), "3.0 GiB");
     }

@@ -3,25 +3,94 @@
 
 use crate::error::{ErrorKind, Problem, Result};
 use crate::grid::MAX_POINTS;
+use std::io::Read;
 use std::path::Path;
 
 /// The largest binary file read: `MAX_POINTS` 8-byte values and 64 MiB of headers and side
 /// images (PLU's colour images, OPD's intensity blocks).
 pub(crate) const MAX_FILE_BYTES: u64 = MAX_POINTS as u64 * 8 + (64 << 20);
 
-/// The bytes of `path`, refusing a file larger than [`MAX_FILE_BYTES`] before reading it.
+/// The most read from a file that reports a size of 0 (`/proc` files, some network mounts):
+/// such a stream may never end (issue 42 read `/proc/self/pagemap` to 4 GB).
+pub(crate) const STREAM_BYTES: u64 = 256 << 20;
+
+/// The bytes of `path`: refused before reading when the size it reports is over
+/// [`MAX_FILE_BYTES`]; read up to that size (or [`STREAM_BYTES`] when it reports none) and
+/// refused when it goes on past it; refused, not aborted, when the memory runs out.
 pub(crate) fn read_file(path: &Path) -> Result<Vec<u8>> {
-    let len = std::fs::metadata(path).map_err(|e| Problem::io(&e))?.len();
-    if len > MAX_FILE_BYTES {
-        return Err(Problem::new(
+    let too_large = |what: String| {
+        Problem::new(
             ErrorKind::TooLarge,
             format!(
-                "the file holds {len} bytes; a binary scan of at most {MAX_POINTS} points \
+                "the file {what}; a binary scan of at most {MAX_POINTS} points \
                  ({MAX_FILE_BYTES} bytes) is read"
             ),
-        ));
+        )
+    };
+    let file = std::fs::File::open(path).map_err(|e| Problem::io(&e))?;
+    let len = file.metadata().map_err(|e| Problem::io(&e))?.len();
+    if len > MAX_FILE_BYTES {
+        return Err(too_large(format!("holds {len} bytes")));
     }
-    std::fs::read(path).map_err(|e| Problem::io(&e))
+    let limit = if len == 0 { STREAM_BYTES } else { len };
+    let mut data = Vec::new();
+    data.try_reserve_exact(limit as usize)
+        .map_err(|_| too_large(format!("of {limit} bytes does not fit in memory")))?;
+    // Whole chunks of 64 KiB: some special files refuse reads of other sizes (pagemap wants
+    // multiples of 8), and one chunk past the limit tells a stream that goes on.
+    let mut file = file;
+    let mut chunk = vec![0u8; 64 << 10];
+    while data.len() as u64 <= limit {
+        let n = match file.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(Problem::io(&e)),
+        };
+        data.try_reserve(n).map_err(|_| {
+            too_large(format!(
+                "of over {} bytes does not fit in memory",
+                data.len()
+            ))
+        })?;
+        data.extend_from_slice(&chunk[..n]);
+    }
+    if data.len() as u64 > limit {
+        return Err(too_large(if len == 0 {
+            format!("reports no size and goes on past {STREAM_BYTES} bytes, the most read from such a stream")
+        } else {
+            format!("reports {len} bytes but goes on past them (it changed while being read)")
+        }));
+    }
+    Ok(data)
+}
+
+/// Refuses what is not a regular file before it is opened: opening a FIFO blocks until a
+/// writer comes, and a device or a directory is no scan (issue 42: Python's `read_scan`
+/// blocked forever on a FIFO).
+pub(crate) fn check_regular_file(path: &Path) -> Result<()> {
+    let t = std::fs::metadata(path)
+        .map_err(|e| Problem::io(&e))?
+        .file_type();
+    if t.is_file() {
+        return Ok(());
+    }
+    use std::os::unix::fs::FileTypeExt;
+    let kind = if t.is_dir() {
+        "a directory"
+    } else if t.is_fifo() {
+        "a FIFO (named pipe)"
+    } else if t.is_socket() {
+        "a socket"
+    } else if t.is_char_device() || t.is_block_device() {
+        "a device"
+    } else {
+        "not a regular file"
+    };
+    Err(Problem::new(
+        ErrorKind::Io,
+        format!("this is {kind}; a scan is read from a regular file"),
+    ))
 }
 
 /// A byte buffer with checked reads; `what` names it in messages (`SUR header`, `OPD file`).

@@ -5,11 +5,18 @@
 use crate::error::{quote, ErrorKind, Problem, Result};
 use crate::text::parse_numbers;
 use crate::{gsf, gwyddion_text, metropro, opd, phase_text, sur, Format};
-use std::io::Read;
+use std::io::{BufRead, Read};
 use std::path::Path;
 
-/// How much of the file detection looks at.
+/// How much of the file detection looks at for magic bytes.
 const HEAD: usize = 64 << 10;
+
+/// Lines of text detection looks at: the header and the first rows of numbers.
+const TEXT_LINES: usize = 80;
+
+/// Bytes of text detection reads at most to find [`TEXT_LINES`] whole lines (a row of a wide
+/// export is long: 8192 columns are about 130 KiB).
+const TEXT_HEAD: u64 = 16 << 20;
 
 pub(crate) fn detect(path: &Path) -> Result<Format> {
     let mut head = Vec::with_capacity(HEAD);
@@ -19,6 +26,13 @@ pub(crate) fn detect(path: &Path) -> Result<Format> {
     if let Some(f) = by_magic(&head) {
         return Ok(f);
     }
+    // Text is judged on whole lines: a window that ends inside a number (a wide export's
+    // first row is longer than the window) made a valid file unrecognisable (issue 42).
+    let head = if head.len() == HEAD && !head.contains(&0) {
+        text_head(path)?
+    } else {
+        head
+    };
     let ext = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase())
@@ -44,6 +58,28 @@ pub(crate) fn detect(path: &Path) -> Result<Format> {
             quote(&format!(".{ext}"))
         ),
     ))
+}
+
+/// The first [`TEXT_LINES`] whole lines of `path` (at most [`TEXT_HEAD`] bytes), without a
+/// line cut short by that limit.
+fn text_head(path: &Path) -> Result<Vec<u8>> {
+    let file = std::fs::File::open(path).map_err(|e| Problem::io(&e))?;
+    let mut reader = std::io::BufReader::new(file.take(TEXT_HEAD));
+    let mut head = Vec::new();
+    for _ in 0..TEXT_LINES {
+        let start = head.len();
+        let n = reader
+            .read_until(b'\n', &mut head)
+            .map_err(|e| Problem::io(&e))?;
+        if n == 0 {
+            break;
+        }
+        if head.last() != Some(&b'\n') && head.len() as u64 == TEXT_HEAD {
+            head.truncate(start);
+            break;
+        }
+    }
+    Ok(head)
 }
 
 /// The format whose magic bytes start `head`.
@@ -125,5 +161,28 @@ mod tests {
         assert_eq!(by_text(b"1 2 3 4\n5 6 7 8\n"), Some(Format::Matrix));
         assert_eq!(by_text(b"hello\nworld\n"), None);
         assert_eq!(by_text(b"\x00\x01\x02"), None);
+    }
+
+    /// A Gwyddion export whose first row is longer than the 64 KiB window, cut inside a
+    /// number by that window wherever it falls, is still recognised (issue 42: 8192 columns).
+    #[test]
+    fn a_wide_text_export_is_recognised_wherever_the_window_ends() {
+        let dir = tempfile::tempdir().unwrap();
+        for pad in 0..12 {
+            let mut text =
+                String::from("# Channel: Z\n# Width: 8192 um\n# Height: 4 um\n# Value units: m\n");
+            text.push_str(&"#".repeat(pad));
+            text.push('\n');
+            for row in 0..4 {
+                let cells: Vec<String> = (0..8192)
+                    .map(|i| format!("{:.9e}", 1e-7 * ((i * 7 + row) % 13) as f64 - 6e-7))
+                    .collect();
+                text.push_str(&cells.join(" "));
+                text.push('\n');
+            }
+            let path = dir.path().join(format!("wide{pad}.txt"));
+            std::fs::write(&path, &text).unwrap();
+            assert_eq!(detect(&path).unwrap(), Format::GwyddionText, "pad {pad}");
+        }
     }
 }

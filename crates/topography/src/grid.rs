@@ -67,12 +67,21 @@ pub(crate) fn check_pixel(d_m: f64, axis: &str) -> Result<f64> {
     }
 }
 
-/// The last check of every read: shape, pixel sizes, and at least one valid point.
+/// The last check of every read: shape, pixel sizes, heights that did not overflow when
+/// converted to metres, and at least one valid point.
 pub(crate) fn finish(t: Topography) -> Result<Topography> {
     check_shape(t.nx as i64, t.ny as i64)?;
     debug_assert_eq!(t.heights_m.len(), t.nx * t.ny);
     check_pixel(t.dx_m, "x")?;
     check_pixel(t.dy_m, "y")?;
+    if let Some(i) = t.heights_m.iter().position(|h| h.is_infinite()) {
+        return Err(Problem::corrupt(format!(
+            "the height of point ({}, {}) overflows: the file's value times its height unit \
+             is beyond the largest number (±1.8e308 m); heights must be finite",
+            i % t.nx,
+            i / t.nx
+        )));
+    }
     if t.valid_count() == 0 {
         return Err(Problem::new(
             ErrorKind::NoData,

@@ -28,7 +28,8 @@
 //! mask, a no-data code) is NaN, never zero. Sizes are checked before any allocation: a header
 //! that claims more than [`MAX_POINTS`] points, or more data than the file holds, is refused.
 //! Every failure is a [`ReadError`] whose `Display` is one line: the file, what is wrong, what
-//! is allowed.
+//! is allowed. Only regular files are opened (a FIFO would block, a device never end), and
+//! no read goes past the size limit whatever size the file reports.
 
 #![deny(missing_docs)]
 
@@ -170,6 +171,7 @@ impl std::fmt::Display for Format {
 /// Reads `path`, detecting its format by its first bytes, then by its extension (`.plu` has
 /// no magic bytes; text is told apart by its header lines).
 pub fn read(path: &Path) -> Result<Topography, ReadError> {
+    bytes::check_regular_file(path).map_err(|p| ReadError::new(path, p))?;
     let format = detect::detect(path).map_err(|p| ReadError::new(path, p))?;
     read_as(path, format)
 }
@@ -178,6 +180,7 @@ pub fn read(path: &Path) -> Result<Topography, ReadError> {
 /// [`read_matrix`]), and so is [`Format::Xyz`] when the file's header states no units (use
 /// [`read_xyz`]).
 pub fn read_as(path: &Path, format: Format) -> Result<Topography, ReadError> {
+    bytes::check_regular_file(path).map_err(|p| ReadError::new(path, p))?;
     let result = match format {
         Format::X3p => x3p::read(path),
         Format::Sur => bytes::read_file(path).and_then(|b| sur::parse(&b)),
@@ -211,7 +214,8 @@ pub fn read_matrix(
     dy_m: f64,
     unit_m: f64,
 ) -> Result<Topography, ReadError> {
-    matrix::read(path, dx_m, dy_m, unit_m)
+    bytes::check_regular_file(path)
+        .and_then(|()| matrix::read(path, dx_m, dy_m, unit_m))
         .and_then(grid::finish)
         .map_err(|p| ReadError::new(path, p))
 }
@@ -221,7 +225,8 @@ pub fn read_matrix(
 /// of `xy_unit_m` metres and heights in units of `z_unit_m` metres; a header the file has
 /// (`# Lateral units:`, `# Value units:`) is ignored in favour of these.
 pub fn read_xyz(path: &Path, xy_unit_m: f64, z_unit_m: f64) -> Result<Topography, ReadError> {
-    xyz::read(path, Some((xy_unit_m, z_unit_m)))
+    bytes::check_regular_file(path)
+        .and_then(|()| xyz::read(path, Some((xy_unit_m, z_unit_m))))
         .and_then(grid::finish)
         .map_err(|p| ReadError::new(path, p))
 }

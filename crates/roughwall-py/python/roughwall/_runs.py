@@ -11,19 +11,15 @@ from ._wall import Wall
 def _scene(wall, conditions, particles, speed_m_s, diameter_m, bin_width_deg, target_se_deg, seed, threads):
     if not isinstance(wall, Wall):
         raise TypeError(f"`wall` is {type(wall).__name__}: allowed a roughwall.Wall")
-    try:
-        pairs = [(float(a), float(b)) for a, b in conditions]
-    except (TypeError, ValueError):
-        raise TypeError("`conditions`: allowed a list of (alpha_in_deg, beta_in_deg) pairs") from None
-    mean, std = speed_m_s
+    num = _args.number
     return dict(
         wall._params,
-        conditions=pairs,
-        speed_m_s=(float(mean), float(std)),
-        diameter_m=float(diameter_m),
+        conditions=_args.pairs("conditions", conditions, ("alpha_in_deg", "beta_in_deg"), 10_000),
+        speed_m_s=_args.pair("speed_m_s", speed_m_s, "(mean, standard deviation) in m/s"),
+        diameter_m=num("diameter_m", diameter_m),
         particles=_args.count("particles", particles, 1, 100_000_000),
-        bin_width_deg=float(bin_width_deg),
-        target_se_deg=None if target_se_deg is None else float(target_se_deg),
+        bin_width_deg=num("bin_width_deg", bin_width_deg),
+        target_se_deg=num("target_se_deg", target_se_deg, True),
         seed=wall.seed if seed is None else _args.seed(seed),
         threads=_args.threads(threads),
     )
@@ -90,10 +86,10 @@ def deterministic(
     scene = _scene(wall, conditions, particles, speed_m_s, diameter_m, bin_width_deg, target_se_deg, seed, threads)
     surface = dict(
         max_collisions=_args.count("max_collisions", max_collisions, 1, 1_000_000),
-        spacing_per_corr_length=float(spacing_per_corr_length),
-        side_per_corr_length=float(side_per_corr_length),
+        spacing_per_corr_length=_args.number("spacing_per_corr_length", spacing_per_corr_length),
+        side_per_corr_length=_args.number("side_per_corr_length", side_per_corr_length),
         surfaces=_args.count("surfaces", surfaces, 1, 1024),
-        triangulation=str(triangulation),
-        wall_deviations=str(wall_deviations),
+        triangulation=_args.text("triangulation", triangulation),
+        wall_deviations=_args.text("wall_deviations", wall_deviations),
     )
     return _roughwall.deterministic(scene, surface)

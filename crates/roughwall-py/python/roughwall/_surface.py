@@ -36,12 +36,13 @@ def surface(
     stored as one row). Its normal angles have Δ ≈ √2 h/c_L (Eq. 15). The same seed gives the
     same surface on any number of threads (`roughwall::surface::generate`, the generator of
     `rebound surface`)."""
+    num = _args.number
     heights, dx, dz = _roughwall.surface(
-        float(length_m),
+        num("length_m", length_m),
         _args.count("nodes", nodes, 16, 40_000),
-        float(rms_height_m),
-        None if corr_length_x_m is None else float(corr_length_x_m),
-        None if corr_length_z_m is None else float(corr_length_z_m),
+        num("rms_height_m", rms_height_m),
+        num("corr_length_x_m", corr_length_x_m, True),
+        num("corr_length_z_m", corr_length_z_m, True),
         _args.seed(seed),
         _args.threads(threads),
     )
@@ -69,13 +70,14 @@ def read_scan(
     """Reads an instrument scan (X3P, Digital Surf SUR, Gwyddion GSF and text, phase-map
     text, Zygo MetroPro, Wyko OPD, Sensofar PLU; the readers of `rebound scan`) into heights
     in metres. `format` None detects it; a plain "matrix" or "xyz" text states no units, so
-    give `pixel_m=(dx, dy)` and `height_unit_m` with it. A file that cannot be read raises
-    OSError, one that is malformed ValueError, with one line naming the file."""
+    give `pixel_m=(dx, dy)` and `height_unit_m` with it. A file that cannot be read (or is
+    no regular file: a FIFO, a directory, a device) raises OSError, one that is malformed
+    ValueError, with one line naming the file."""
     heights, dx, dy, fmt, info = _roughwall.read_scan(
-        os.fspath(path),
-        format,
-        None if pixel_m is None else tuple(float(p) for p in pixel_m),
-        None if height_unit_m is None else float(height_unit_m),
+        _args.path("path", path),
+        _args.name("format", format),
+        None if pixel_m is None else _args.pair("pixel_m", pixel_m, "(dx, dy) in m"),
+        _args.number("height_unit_m", height_unit_m, True),
     )
     return Scan(heights, dx, dy, fmt, info)
 
@@ -100,9 +102,12 @@ def wall_card(
     delta_zeta_deg; None without a lay), "lay" (angle_deg in the scan's axes,
     direction_scan_xy, …), "parameters" (sq_m, sdq, …), "correlation", "diameters" (one
     dict per particle, the point particle first), "notes", "levelled", "spacing_m".
-    Angles in degrees, lengths in metres."""
+    Angles in degrees, lengths in metres. A refusal (a scan the models cannot take, a size
+    that does not fit in memory: MemoryError) names the argument, and the file of a path."""
+    file = None
     if isinstance(scan, (str, os.PathLike)):
-        scan = read_scan(scan)
+        file = _args.path("scan", scan)
+        scan = read_scan(file)
     if isinstance(scan, Scan):
         heights, dx, dy = scan.heights, scan.dx, scan.dy
     else:
@@ -111,11 +116,17 @@ def wall_card(
             raise ValueError(f"`scan` has shape {heights.shape}: allowed a 2-D array (ny, nx)")
         if dx is None or dy is None:
             raise TypeError("`dx` and `dy`: give the pixel sizes (m) of a height array")
-    return _roughwall.wall_card(
+    args = (
         heights,
-        float(dx),
-        float(dy),
+        _args.number("dx", dx),
+        _args.number("dy", dy),
         _args.count("level_degree", level_degree, 1, 3),
-        [float(d) for d in diameters_m],
+        _args.numbers("diameters_m", diameters_m, 64),
         _args.threads(threads),
     )
+    try:
+        return _roughwall.wall_card(*args)
+    except (ValueError, MemoryError) as e:
+        if file is None:
+            raise
+        raise type(e)(f"{file}: {e}") from None

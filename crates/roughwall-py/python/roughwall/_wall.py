@@ -174,7 +174,8 @@ class Wall:
 
         C-contiguous float64 inputs are read in place (no copy); the GIL is released while
         the hits run. A bad hit (NaN, zero normal, …) gets its status and finite outputs,
-        never an exception; bad shapes or dtypes raise ValueError or TypeError.
+        never an exception; bad shapes or dtypes raise ValueError or TypeError, and outputs
+        too large for the memory the process may use MemoryError (before any is allocated).
         """
         v, nv = _args.vec3("velocity", velocity)
         n_, nn = _args.vec3("normal", normal)
@@ -199,9 +200,11 @@ class Wall:
         if len(sizes) > 1:
             shown = ", ".join(f"{k} {r}" for k, r in given.items())
             raise ValueError(f"the hits' rows do not broadcast ({shown}): allowed 1 or n rows each")
-        n = sizes.pop() if sizes else (1 if given else 1)
+        n = sizes.pop() if sizes else 1
+        # The argument whose rows set n: a MemoryError for outputs too large names it.
+        n_from = next((k for k, r in given.items() if r == n), "n")
         out = Rebound(
-            *self._core.rebound(n, v, n_, l_, w, u, d, pid, cix, _args.threads(threads))
+            *self._core.rebound(n, v, n_, l_, w, u, d, pid, cix, _args.threads(threads), n_from)
         )
         if not given:
             return Rebound(*(a[0] for a in out))

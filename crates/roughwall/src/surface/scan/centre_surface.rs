@@ -27,6 +27,13 @@ pub struct CentreSurface {
     pub reach: [usize; 2],
 }
 
+/// Bytes the centre surface of one sphere needs beside the levelled `nx × ny` scan: per
+/// point, the two passes of the dilation and the exact field (f64) and the masks of the
+/// edges (bytes). Callers check it against [`crate::memory::require`] before dilating.
+pub fn centre_surface_bytes(nx: usize, ny: usize) -> u64 {
+    (2 * 8 + 2) * (nx as u64).saturating_mul(ny as u64)
+}
+
 /// `out[p] = max over valid q of (f[q] − a (p − q)²)` along an open line (NaN: missing; all
 /// missing: NaN everywhere). Felzenszwalb & Huttenlocher's lower envelope on `−f/a`.
 fn max_plus_open(f: &[f64], a: f64, out: &mut [f64], v: &mut Vec<usize>, z: &mut Vec<f64>) {

@@ -21,7 +21,8 @@ const MAX_SAMPLES: usize = 1 << 18;
 pub struct Correlation {
     /// The direction `φ` (rad, from the scan's `x` towards its `y`) of "along".
     pub angle: f64,
-    /// Lags (m), from 0 in steps of the smaller grid spacing.
+    /// Lags (m), from 0 in steps of the smaller grid spacing (coarser where a quarter of the
+    /// scan holds more than 256 of them).
     pub lags_m: Vec<f64>,
     /// `R(τ)/R(0)` along the direction, one per lag (NaN where no pair was valid).
     pub along: Vec<f64>,
@@ -53,6 +54,28 @@ pub(crate) fn bilinear(f: &ScanField, u: f64, v: f64) -> Option<f64> {
     Some((1.0 - fv) * ((1.0 - fu) * h00 + fu * h10) + fv * ((1.0 - fu) * h01 + fu * h11))
 }
 
+/// Lags at most. The lag step is the smaller grid spacing, coarsened when a quarter of the
+/// scan holds more steps than this: a very anisotropic pixel (1 m × 1 µm) would otherwise ask
+/// for 10⁵ lags and minutes of work (issue 42). Scans up to 1024 points along their shorter
+/// side with square pixels keep the grid's step; a larger one a step of at most 1/1024 of
+/// that side, still well below the correlation lengths a scan resolves.
+const MAX_LAGS: usize = 256;
+
+/// The stride at which sample points are taken, along both axes: at most [`MAX_SAMPLES`]
+/// points on a scan of ordinary shape; on a strip (a few points across, 10⁵ or more along),
+/// where the first choice would keep every row, coarser, until the sample rows and points
+/// together are at most twice that (the work per lag is one pass over both).
+fn sample_stride(nx: usize, ny: usize) -> usize {
+    let mut s = ((nx * ny) as f64 / MAX_SAMPLES as f64)
+        .sqrt()
+        .ceil()
+        .max(1.0) as usize;
+    while nx.div_ceil(s) * ny.div_ceil(s) + ny.div_ceil(s) > 2 * MAX_SAMPLES {
+        s += 1;
+    }
+    s
+}
+
 /// Lags computed together (one read of the scan's rows for all of them): at most this
 /// many past the last lag needed are computed in vain.
 const LAG_BATCH: usize = 16;
@@ -74,55 +97,62 @@ fn autocorrelations(
                 .map(move |&tau| (tau * cx / f.dx, tau * cy / f.dy))
         })
         .collect();
-    let rows: Vec<Vec<(f64, usize)>> = (0..f.ny)
-        .into_par_iter()
-        .step_by(stride)
-        .map(|iy| {
-            let nx = f.nx;
-            let row = &f.heights[iy * nx..(iy + 1) * nx];
-            shifts
-                .iter()
-                .map(|&(du, dv)| {
-                    // `bilinear` at (ix + du, iy + dv) for each sample ix of the row, its
-                    // checks and row interpolation along y taken once for the row.
-                    let (mut s, mut n) = (0.0, 0usize);
-                    let (um, vm) = ((nx - 1) as f64, (f.ny - 1) as f64);
-                    let v = iy as f64 + dv;
-                    if !(v >= 0.0 && v <= vm * (1.0 + 1e-12)) {
-                        return (s, n);
-                    }
-                    let j = (v as usize).min(f.ny - 2);
-                    let fv = (v - j as f64).min(1.0);
-                    let r0 = &f.heights[j * nx..(j + 1) * nx];
-                    let r1 = &f.heights[(j + 1) * nx..(j + 2) * nx];
-                    for ix in (0..nx).step_by(stride) {
-                        let h = row[ix];
-                        let u = ix as f64 + du;
-                        if h.is_nan() || !(u >= 0.0 && u <= um * (1.0 + 1e-12)) {
-                            continue;
-                        }
-                        let i = (u as usize).min(nx - 2);
-                        let fu = (u - i as f64).min(1.0);
-                        let (h00, h10, h01, h11) = (r0[i], r0[i + 1], r1[i], r1[i + 1]);
-                        if h00.is_nan() || h10.is_nan() || h01.is_nan() || h11.is_nan() {
-                            continue;
-                        }
-                        let g = (1.0 - fv) * ((1.0 - fu) * h00 + fu * h10)
-                            + fv * ((1.0 - fu) * h01 + fu * h11);
-                        s += h * g;
-                        n += 1;
-                    }
-                    (s, n)
+    // Sample rows a chunk at a time, each row's sums added in row order.
+    let sample_rows = f.ny.div_ceil(stride);
+    let mut sums = vec![(0.0, 0usize); shifts.len()];
+    super::in_row_chunks(
+        sample_rows,
+        |chunk| {
+            chunk
+                .into_par_iter()
+                .map(|r| {
+                    let iy = r * stride;
+                    let nx = f.nx;
+                    let row = &f.heights[iy * nx..(iy + 1) * nx];
+                    shifts
+                        .iter()
+                        .map(|&(du, dv)| {
+                            // `bilinear` at (ix + du, iy + dv) for each sample ix of the row, its
+                            // checks and row interpolation along y taken once for the row.
+                            let (mut s, mut n) = (0.0, 0usize);
+                            let (um, vm) = ((nx - 1) as f64, (f.ny - 1) as f64);
+                            let v = iy as f64 + dv;
+                            if !(v >= 0.0 && v <= vm * (1.0 + 1e-12)) {
+                                return (s, n);
+                            }
+                            let j = (v as usize).min(f.ny - 2);
+                            let fv = (v - j as f64).min(1.0);
+                            let r0 = &f.heights[j * nx..(j + 1) * nx];
+                            let r1 = &f.heights[(j + 1) * nx..(j + 2) * nx];
+                            for ix in (0..nx).step_by(stride) {
+                                let h = row[ix];
+                                let u = ix as f64 + du;
+                                if h.is_nan() || !(u >= 0.0 && u <= um * (1.0 + 1e-12)) {
+                                    continue;
+                                }
+                                let i = (u as usize).min(nx - 2);
+                                let fu = (u - i as f64).min(1.0);
+                                let (h00, h10, h01, h11) = (r0[i], r0[i + 1], r1[i], r1[i + 1]);
+                                if h00.is_nan() || h10.is_nan() || h01.is_nan() || h11.is_nan() {
+                                    continue;
+                                }
+                                let g = (1.0 - fv) * ((1.0 - fu) * h00 + fu * h10)
+                                    + fv * ((1.0 - fu) * h01 + fu * h11);
+                                s += h * g;
+                                n += 1;
+                            }
+                            (s, n)
+                        })
+                        .collect()
                 })
                 .collect()
-        })
-        .collect();
-    let sums = rows.iter().fold(vec![(0.0, 0); shifts.len()], |mut a, r| {
-        for (a, r) in a.iter_mut().zip(r) {
-            *a = (a.0 + r.0, a.1 + r.1);
-        }
-        a
-    });
+        },
+        |row: Vec<(f64, usize)>| {
+            for (a, r) in sums.iter_mut().zip(&row) {
+                *a = (a.0 + r.0, a.1 + r.1);
+            }
+        },
+    );
     sums.chunks(taus.len().max(1))
         .map(|d| {
             d.iter()
@@ -144,12 +174,9 @@ fn crossing(lags: &[f64], r: &[f64], level: f64) -> Option<f64> {
 /// The autocorrelation of `f` (levelled: mean 0) along `angle` and across it, out to twice
 /// the farther `1/e` crossing or a quarter of the scan's shorter side.
 pub fn correlation(f: &ScanField, angle: f64) -> Correlation {
-    let stride = ((f.nx * f.ny) as f64 / MAX_SAMPLES as f64)
-        .sqrt()
-        .ceil()
-        .max(1.0) as usize;
-    let step = f.dx.min(f.dy);
+    let stride = sample_stride(f.nx, f.ny);
     let max_lag = 0.25 * (f.nx as f64 * f.dx).min(f.ny as f64 * f.dy);
+    let step = f.dx.min(f.dy).max(max_lag / MAX_LAGS as f64);
     let (c, s) = (angle.cos(), angle.sin());
     let level = (-1.0f64).exp();
     let r0 = autocorrelations(f, stride, &[(c, s)], &[0.0])[0][0].unwrap_or(0.0);
@@ -245,6 +272,39 @@ mod tests {
         let t = correlation(&scan, std::f64::consts::FRAC_PI_2);
         assert!((t.length_along_m.unwrap() - b).abs() < 1e-3 * b);
         assert!((t.length_across_m.unwrap() - a).abs() < 1e-3 * a);
+    }
+
+    /// A strip of very anisotropic pixels (1 m × 1 µm, issue 42) is characterised in a
+    /// bounded number of lags: 2 × 100 000 points took minutes with one lag per micrometre.
+    #[test]
+    fn anisotropic_pixels_keep_the_lags_bounded() {
+        let ny = 100_000;
+        let h: Vec<f64> = (0..2 * ny)
+            .map(|i| 1e-7 * ((i as f64 * 0.37).sin() + (i as f64 * 1.91).cos()))
+            .collect();
+        let f = ScanField::new(2, ny, 1.0, 1e-6, h).unwrap();
+        let r = correlation(&f, 0.0);
+        assert!(r.lags_m.len() <= MAX_LAGS + 1, "{} lags", r.lags_m.len());
+        assert!(r.along.iter().chain(&r.across).all(|v| !v.is_infinite()));
+        // A strip's samples stay bounded; an ordinary scan keeps the first choice.
+        assert_eq!(sample_stride(4096, 4096), 8);
+        assert_eq!(sample_stride(650, 650), 2);
+        let s = sample_stride(2, 1 << 27);
+        assert!(
+            2usize.div_ceil(s) * (1usize << 27).div_ceil(s) <= 2 * MAX_SAMPLES,
+            "{s}"
+        );
+        // A scan of square pixels keeps the grid's step.
+        let g = ScanField::new(
+            64,
+            64,
+            1e-6,
+            1e-6,
+            (0..4096).map(|i| 1e-7 * (i as f64).sin()).collect(),
+        )
+        .unwrap();
+        let r = correlation(&g, 0.0);
+        assert!((r.lags_m[1] - 1e-6).abs() < 1e-18, "{:?}", &r.lags_m[..2]);
     }
 
     #[test]

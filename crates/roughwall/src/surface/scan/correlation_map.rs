@@ -148,7 +148,9 @@ pub fn map_bytes(nx: usize, ny: usize) -> u64 {
         fast_length(my + MAX_HALF_LAGS.min(my)),
     );
     let spectrum = 16 * (px / 2 + 1) * py;
-    let window = 16 * (px / 2 + 1) * (2 * MAX_HALF_LAGS + 1);
+    // The window holds the lags −hy … hy, hy at most MAX_HALF_LAGS and my − 1 (a strip two
+    // rows high has 3 rows of lags, not 513).
+    let window = 16 * (px / 2 + 1) * (2 * MAX_HALF_LAGS.min(my - 1) + 1);
     (spectrum + window) as u64
 }
 

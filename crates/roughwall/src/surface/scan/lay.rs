@@ -237,24 +237,29 @@ impl<F: Fn(f64, f64, &mut [f64; K]), const K: usize> RowKernel for Sums<F, K> {
 }
 
 /// Row partial sums of `kernel`, each over the row's triangles in order, added in row
-/// order (the same bits for any thread count).
+/// order (the same bits for any thread count), a chunk of rows at a time.
 fn row_sums<K, const N: usize>(f: &ScanField, kernel: K) -> [f64; N]
 where
     K: RowKernel<Out = [f64; N]> + Clone + Send + Sync,
 {
-    let rows: Vec<[f64; N]> = (0..f.ny - 1)
-        .into_par_iter()
-        .map_init(
-            || (kernel.clone(), RowBuf::default()),
-            |(k, buf), iy| run_row(k, f, iy, buf),
-        )
-        .collect();
-    rows.iter().fold([0.0; N], |mut acc, r| {
-        for (a, x) in acc.iter_mut().zip(r) {
-            *a += x;
-        }
-        acc
-    })
+    let mut acc = [0.0; N];
+    super::in_row_chunks(
+        f.ny - 1,
+        |rows| {
+            rows.into_par_iter()
+                .map_init(
+                    || (kernel.clone(), RowBuf::default()),
+                    |(k, buf), iy| run_row(k, f, iy, buf),
+                )
+                .collect()
+        },
+        |r: [f64; N]| {
+            for (a, x) in acc.iter_mut().zip(&r) {
+                *a += x;
+            }
+        },
+    );
+    acc
 }
 
 /// The lay of a scan and the deviations along and across it; `None` without a triangle
@@ -435,33 +440,38 @@ pub fn angle_histograms(f: &ScanField, angle: f64, spec: HistogramSpec) -> [Hist
     let (c, s) = (angle.cos(), angle.sin());
     let bins = spec.bins.max(1);
     let cell_rows = f.ny - 1;
-    let blocks: Vec<[Histogram; 2]> = (0..cell_rows.div_ceil(HISTOGRAM_ROWS))
-        .into_par_iter()
-        .map(|b| {
-            let mut kernel = Binned {
-                c,
-                s,
-                h: [
-                    Histogram::new(spec.half_range, bins),
-                    Histogram::new(spec.half_range, bins),
-                ],
-            };
-            let mut buf = RowBuf::default();
-            let rows = b * HISTOGRAM_ROWS..((b + 1) * HISTOGRAM_ROWS).min(cell_rows);
-            for iy in rows {
-                run_row(&mut kernel, f, iy, &mut buf);
-            }
-            kernel.h
-        })
-        .collect();
     let mut out = [
         Histogram::new(spec.half_range, bins),
         Histogram::new(spec.half_range, bins),
     ];
-    for block in &blocks {
-        out[0].merge(&block[0]);
-        out[1].merge(&block[1]);
-    }
+    super::in_row_chunks(
+        cell_rows.div_ceil(HISTOGRAM_ROWS),
+        |blocks| {
+            blocks
+                .into_par_iter()
+                .map(|b| {
+                    let mut kernel = Binned {
+                        c,
+                        s,
+                        h: [
+                            Histogram::new(spec.half_range, bins),
+                            Histogram::new(spec.half_range, bins),
+                        ],
+                    };
+                    let mut buf = RowBuf::default();
+                    let rows = b * HISTOGRAM_ROWS..((b + 1) * HISTOGRAM_ROWS).min(cell_rows);
+                    for iy in rows {
+                        run_row(&mut kernel, f, iy, &mut buf);
+                    }
+                    kernel.h
+                })
+                .collect()
+        },
+        |block: [Histogram; 2]| {
+            out[0].merge(&block[0]);
+            out[1].merge(&block[1]);
+        },
+    );
     out
 }
 

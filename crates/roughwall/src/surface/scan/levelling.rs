@@ -79,29 +79,13 @@ pub fn level_in_place(f: &mut ScanField, degree: u32) -> Result<Vec<f64>> {
     let k = terms.len();
     debug_assert_eq!(terms, TERMS[..k]);
     let pu: Vec<[f64; 4]> = (0..f.nx).map(|i| legendre(coordinate(i, f.nx))).collect();
-    // Normal equations per row (in row order, so the sums do not depend on threads).
-    let rows: Vec<(Vec<f64>, Vec<f64>)> = f
-        .heights
-        .par_chunks(f.nx)
-        .enumerate()
-        .map(|(iy, row)| {
-            let pv = legendre(coordinate(iy, f.ny));
-            match degree {
-                1 => normal_equations::<3>(row, &pu, pv),
-                2 => normal_equations::<6>(row, &pu, pv),
-                _ => normal_equations::<10>(row, &pu, pv),
-            }
-        })
-        .collect();
+    // Normal equations per row, added in row order (the sums do not depend on threads).
     let mut ata = DMatrix::<f64>::zeros(k, k);
     let mut atb = DVector::<f64>::zeros(k);
-    for (m, v) in &rows {
-        for r in 0..k {
-            atb[r] += v[r];
-            for c in r..k {
-                ata[(r, c)] += m[r * k + c];
-            }
-        }
+    match degree {
+        1 => add_normal_equations::<3>(f, &pu, &mut ata, &mut atb),
+        2 => add_normal_equations::<6>(f, &pu, &mut ata, &mut atb),
+        _ => add_normal_equations::<10>(f, &pu, &mut ata, &mut atb),
     }
     for r in 0..k {
         for c in 0..r {
@@ -150,13 +134,42 @@ fn phi<const K: usize>(pu: &[f64; 4], pv: &[f64; 4]) -> [f64; K] {
     std::array::from_fn(|t| pu[TERMS[t].0] * pv[TERMS[t].1])
 }
 
-/// The normal equations' `AᵀA` (upper triangle, row-major `K × K`) and `Aᵀh` of one row of
-/// heights, summed in node order.
+/// Adds the normal equations of every row of `f` to `ata` (upper triangle) and `atb`, row by
+/// row in row order, a chunk of rows at a time ([`super::in_row_chunks`]).
+fn add_normal_equations<const K: usize>(
+    f: &ScanField,
+    pu: &[[f64; 4]],
+    ata: &mut DMatrix<f64>,
+    atb: &mut DVector<f64>,
+) {
+    super::in_row_chunks(
+        f.ny,
+        |rows| {
+            rows.into_par_iter()
+                .map(|iy| {
+                    let row = &f.heights[iy * f.nx..(iy + 1) * f.nx];
+                    normal_equations::<K>(row, pu, legendre(coordinate(iy, f.ny)))
+                })
+                .collect()
+        },
+        |(m, v)| {
+            for r in 0..K {
+                atb[r] += v[r];
+                for c in r..K {
+                    ata[(r, c)] += m[r][c];
+                }
+            }
+        },
+    );
+}
+
+/// The normal equations' `AᵀA` (upper triangle) and `Aᵀh` of one row of heights, summed in
+/// node order.
 fn normal_equations<const K: usize>(
     row: &[f64],
     pu: &[[f64; 4]],
     pv: [f64; 4],
-) -> (Vec<f64>, Vec<f64>) {
+) -> ([[f64; K]; K], [f64; K]) {
     let mut ata = [[0.0; K]; K];
     let mut atb = [0.0; K];
     for (&h, pu) in row.iter().zip(pu) {
@@ -171,7 +184,7 @@ fn normal_equations<const K: usize>(
             }
         }
     }
-    (ata.concat(), atb.to_vec())
+    (ata, atb)
 }
 
 /// Subtracts the polynomial of coefficients `coef` from one row of heights.

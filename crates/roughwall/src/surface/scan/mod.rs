@@ -33,9 +33,41 @@ pub mod periodic;
 pub mod resolution;
 
 use crate::error::{Error, Result};
+use std::ops::Range;
+
+/// Rows whose partial results are held at once by [`in_row_chunks`].
+const ROWS_PER_CHUNK: usize = 4096;
+
+/// Rows `0..n` a chunk of [`ROWS_PER_CHUNK`] at a time: `chunk(range)` computes the chunk's
+/// per-row results (in parallel, in row order), then `each` takes them in row order before
+/// the next chunk. A fold through `each` has the bits of a row-by-row fold for any thread
+/// count, and the memory does not grow with the row count: a 2 × 2²⁷ strip held one result per
+/// row, gigabytes, and aborted (issue 42).
+pub(crate) fn in_row_chunks<T>(
+    n: usize,
+    chunk: impl Fn(Range<usize>) -> Vec<T>,
+    mut each: impl FnMut(T),
+) {
+    let mut start = 0;
+    while start < n {
+        let end = n.min(start + ROWS_PER_CHUNK);
+        chunk(start..end).into_iter().for_each(&mut each);
+        start = end;
+    }
+}
 
 /// Largest scan accepted (points): 2²⁸, 2 GiB of heights.
 pub const MAX_POINTS: usize = 1 << 28;
+
+/// Largest height accepted (m, either sign): 1 km. No wall's heights come near it, even
+/// with an instrument's offset; beyond it lie unit mistakes and offsets (1e300 m) that leave
+/// no digits for the roughness, and past ~1e70 m the fourth moments overflow (issue 42).
+pub const MAX_HEIGHT_M: f64 = 1e3;
+
+/// Spacings accepted (m): from 1 pm (below any instrument's lateral resolution) to 1 m.
+/// Inside these and [`MAX_HEIGHT_M`] every slope, sum and lag the characterisation forms is
+/// finite.
+pub const SPACING_RANGE_M: (f64, f64) = (1e-12, 1.0);
 
 /// A measured height field in the scan's own axes: `nx × ny` points of spacings `dx`, `dy`
 /// (metres), row-major with `x` fastest (`heights[iy * nx + ix]`, point `(ix, iy)` at
@@ -58,8 +90,9 @@ pub struct ScanField {
 }
 
 impl ScanField {
-    /// Checks the grid: at least 2 × 2 points, at most [`MAX_POINTS`], positive finite
-    /// spacings, `nx · ny` heights of which at least three are valid, none infinite.
+    /// Checks the grid: at least 2 × 2 points, at most [`MAX_POINTS`], spacings within
+    /// [`SPACING_RANGE_M`], `nx · ny` heights of which at least three are valid, none beyond
+    /// [`MAX_HEIGHT_M`].
     pub fn new(nx: usize, ny: usize, dx: f64, dy: f64, heights: Vec<f64>) -> Result<ScanField> {
         let points = nx.checked_mul(ny).filter(|&n| n <= MAX_POINTS);
         if nx < 2 || ny < 2 || points.is_none() {
@@ -67,12 +100,22 @@ impl ScanField {
                 "scan of {nx} × {ny} points: allowed 2 × 2 up to {MAX_POINTS} points"
             )));
         }
+        let (lo, hi) = SPACING_RANGE_M;
         for (key, d) in [("x", dx), ("y", dy)] {
             if !(d.is_finite() && d > 0.0) {
                 return Err(Error::invalid(
                     &format!("scan spacing along {key} (m)"),
                     d,
                     "a finite length > 0",
+                ));
+            }
+            if !(lo..=hi).contains(&d) {
+                return Err(Error::invalid(
+                    &format!("scan spacing along {key} (m)"),
+                    d,
+                    &format!(
+                        "{lo:e} m to {hi} m (a pixel outside this is a unit mistake in the file or its header)"
+                    ),
                 ));
             }
         }
@@ -84,9 +127,15 @@ impl ScanField {
         }
         if heights.iter().any(|h| h.is_infinite()) {
             return Err(Error::Input(
-                "scan has an infinite height: allowed finite heights, NaN for a missing point"
+                "scan has an infinite height (an overflow where the file's values were converted to metres): allowed finite heights, NaN for a missing point"
                     .into(),
             ));
+        }
+        // NaN (missing) compares false and passes.
+        if let Some(h) = heights.iter().find(|h| h.abs() > MAX_HEIGHT_M) {
+            return Err(Error::Input(format!(
+                "scan has a height of {h:e} m: allowed |height| ≤ {MAX_HEIGHT_M} m (a larger one is a unit mistake in the file or its header, or an offset that leaves no digits for the roughness and overflows the levelling)"
+            )));
         }
         let f = ScanField {
             nx,
@@ -132,10 +181,26 @@ pub struct Characterisation {
     pub correlation: correlation::Correlation,
 }
 
+/// Bytes [`characterise`] needs beside the scan's own heights, which it levels in place: the
+/// levelling's Legendre table (32 per column) and, per thread, the lay's row buffers (13
+/// values per column); rows are summed a chunk at a time ([`in_row_chunks`]). Small for a
+/// scan, large for a strip 10⁸ points wide.
+pub fn characterisation_bytes(nx: usize, _ny: usize) -> u64 {
+    let threads = rayon::current_num_threads() as u64;
+    (nx as u64).saturating_mul(32 + 13 * 8 * threads)
+}
+
 /// Levels `f` by its least-squares polynomial of total degree `degree` (1 … 3) and
 /// characterises what remains (`f` becomes [`Characterisation::levelled`]: no copy of the
-/// heights is made).
+/// heights is made). Refused, before anything is allocated, when the process cannot hold
+/// what it needs ([`characterisation_bytes`], [`crate::memory::require`]).
 pub fn characterise(f: ScanField, degree: u32) -> Result<Characterisation> {
+    crate::memory::require(
+        "scan",
+        format!("{} × {} points", f.nx, f.ny),
+        characterisation_bytes(f.nx, f.ny),
+        "levelling it and finding its lay",
+    )?;
     let mut levelled = f;
     levelling::level_in_place(&mut levelled, degree)?;
     let parameters = parameters::area_parameters(&levelled);
@@ -237,6 +302,14 @@ pub(crate) mod tests {
         assert!(e(ScanField::new(2, 2, 1.0, 1.0, vec![0.0; 3])).contains("holds 3"));
         let inf = vec![0.0, 1.0, f64::INFINITY, 0.0];
         assert!(e(ScanField::new(2, 2, 1.0, 1.0, inf)).contains("infinite"));
+        // Magnitudes no wall has (issue 42): refused before they overflow the arithmetic.
+        let huge = vec![0.0, 1e-6, 3e300, f64::NAN];
+        assert!(e(ScanField::new(2, 2, 1e-6, 1e-6, huge)).contains("3e300 m"));
+        let offset = vec![1.5e3, 1.5e3, 1.5e3, 1.5e3];
+        assert!(e(ScanField::new(2, 2, 1e-6, 1e-6, offset)).contains("≤ 1000 m"));
+        assert!(e(ScanField::new(2, 2, 1e-6, 5e302, vec![0.0; 4])).contains("along y"));
+        assert!(e(ScanField::new(2, 2, 1e-300, 1e-6, vec![0.0; 4])).contains("along x"));
+        assert!(ScanField::new(2, 2, 1.0, 1e-12, vec![0.0, 1.0, -1.0, 0.5]).is_ok());
         assert_eq!(tilted(8, 5).valid_count(), 39);
     }
 }

@@ -36,67 +36,74 @@ pub fn area_parameters(f: &ScanField) -> AreaParameters {
     // Row partial sums, each in node order, added in row order: the same bits for any thread
     // count. Two passes: the count and mean, then the three central moments together with
     // the gradients (of the row and the next one).
-    let rows: Vec<(usize, f64)> = f
-        .heights
-        .par_chunks(f.nx)
-        .map(|row| {
-            row.iter()
-                .filter(|h| !h.is_nan())
-                .fold((0, 0.0), |(n, s), &h| (n + 1, s + h))
-        })
-        .collect();
-    let (n, sum) = rows
-        .iter()
-        .fold((0, 0.0), |(n, s), &(rn, rs)| (n + rn, s + rs));
+    let (mut n, mut sum) = (0usize, 0.0);
+    super::in_row_chunks(
+        f.ny,
+        |rows| {
+            rows.into_par_iter()
+                .map(|iy| {
+                    f.heights[iy * f.nx..(iy + 1) * f.nx]
+                        .iter()
+                        .filter(|h| !h.is_nan())
+                        .fold((0, 0.0), |(n, s), &h| (n + 1, s + h))
+                })
+                .collect()
+        },
+        |(rn, rs): (usize, f64)| {
+            n += rn;
+            sum += rs;
+        },
+    );
     let mean = sum / n as f64;
-    let rows: Vec<([f64; 3], (f64, f64, usize))> = (0..f.ny)
-        .into_par_iter()
-        .map(|iy| {
-            let row = &f.heights[iy * f.nx..(iy + 1) * f.nx];
-            let mut m = [0.0; 3];
-            for &h in row.iter().filter(|h| !h.is_nan()) {
-                let d = h - mean;
-                m[0] += d * d;
-                m[1] += d.powi(3);
-                m[2] += d.powi(4);
-            }
-            // Forward differences to the next node along x and along y, both valid.
-            let (mut sx, mut sz, mut k) = (0.0, 0.0, 0usize);
-            if iy + 1 < f.ny {
-                let next = &f.heights[(iy + 1) * f.nx..(iy + 2) * f.nx];
-                for ix in 0..f.nx - 1 {
-                    let (h, hx, hz) = (row[ix], row[ix + 1], next[ix]);
-                    if h.is_nan() || hx.is_nan() || hz.is_nan() {
-                        continue;
+    let mut moments = [0.0; 3];
+    let (mut sx, mut sz, mut k) = (0.0, 0.0, 0usize);
+    super::in_row_chunks(
+        f.ny,
+        |rows| {
+            rows.into_par_iter()
+                .map(|iy| {
+                    let row = &f.heights[iy * f.nx..(iy + 1) * f.nx];
+                    let mut m = [0.0; 3];
+                    for &h in row.iter().filter(|h| !h.is_nan()) {
+                        let d = h - mean;
+                        m[0] += d * d;
+                        m[1] += d.powi(3);
+                        m[2] += d.powi(4);
                     }
-                    let gx = (hx - h) / f.dx;
-                    let gz = (hz - h) / f.dy;
-                    sx += gx * gx;
-                    sz += gz * gz;
-                    k += 1;
-                }
+                    // Forward differences to the next node along x and along y, both valid.
+                    let (mut sx, mut sz, mut k) = (0.0, 0.0, 0usize);
+                    if iy + 1 < f.ny {
+                        let next = &f.heights[(iy + 1) * f.nx..(iy + 2) * f.nx];
+                        for ix in 0..f.nx - 1 {
+                            let (h, hx, hz) = (row[ix], row[ix + 1], next[ix]);
+                            if h.is_nan() || hx.is_nan() || hz.is_nan() {
+                                continue;
+                            }
+                            let gx = (hx - h) / f.dx;
+                            let gz = (hz - h) / f.dy;
+                            sx += gx * gx;
+                            sz += gz * gz;
+                            k += 1;
+                        }
+                    }
+                    (m, (sx, sz, k))
+                })
+                .collect()
+        },
+        |(m, r): ([f64; 3], (f64, f64, usize))| {
+            for j in 0..3 {
+                moments[j] += m[j];
             }
-            (m, (sx, sz, k))
-        })
-        .collect();
-    let [m2, m3, m4] = rows
-        .iter()
-        .fold([0.0; 3], |mut a, (r, _)| {
-            for k in 0..3 {
-                a[k] += r[k];
-            }
-            a
-        })
-        .map(|s| s / n as f64);
+            (sx, sz, k) = (sx + r.0, sz + r.1, k + r.2);
+        },
+    );
+    let [m2, m3, m4] = moments.map(|s| s / n as f64);
     let sq = m2.sqrt();
     let (ssk, sku) = if m2 > 0.0 {
         (m3 / m2.powf(1.5), m4 / (m2 * m2))
     } else {
         (0.0, 0.0)
     };
-    let (sx, sz, k) = rows
-        .iter()
-        .fold((0.0, 0.0, 0), |a, (_, r)| (a.0 + r.0, a.1 + r.1, a.2 + r.2));
     let per = |s: f64| (k > 0).then(|| (s / k as f64).sqrt());
     AreaParameters {
         valid_points: n,

@@ -70,8 +70,8 @@ pub fn mirrored_wall(f: &ScanField, lay_angle: f64) -> Result<(HeightField, Mirr
     let (lx, ly) = ((f.nx - 1) as f64 * f.dx, (f.ny - 1) as f64 * f.dy);
     let (a, b) = inscribed(lx, ly, lay_angle);
     let (n, m) = (
-        (2.0 * a / spacing).floor() as usize + 1,
-        (2.0 * b / spacing).floor() as usize + 1,
+        ((2.0 * a / spacing).floor() as usize).saturating_add(1),
+        ((2.0 * b / spacing).floor() as usize).saturating_add(1),
     );
     if n < 3 || m < 3 {
         return Err(Error::Input(format!(
@@ -81,6 +81,33 @@ pub fn mirrored_wall(f: &ScanField, lay_angle: f64) -> Result<(HeightField, Mirr
             lay_angle.to_degrees()
         )));
     }
+    // Resampled at the finer spacing, a scan of very unequal pixels (1 m × 1 nm) asks for
+    // far more points than it has: refused by size, then by memory, before anything is
+    // allocated (issue 42: 392 GB were asked for and the process aborted).
+    let tiled = n
+        .checked_mul(m)
+        .and_then(|p| p.checked_mul(4))
+        .filter(|&p| p as u64 <= crate::surface::heights_io::MAX_NODES);
+    let Some(tiled) = tiled else {
+        return Err(Error::Input(format!(
+            "scan of {} × {} points of {:e} m × {:e} m resampled along its lay at its finer spacing gives a rectangle of {n} × {m} points, a mirror-tiled wall of more than {} nodes: allowed pixels whose sizes differ less, or a scan cropped to fewer points",
+            f.nx,
+            f.ny,
+            f.dx,
+            f.dy,
+            crate::surface::heights_io::MAX_NODES
+        )));
+    };
+    crate::memory::require(
+        "scan",
+        format!("{} × {} points", f.nx, f.ny),
+        8 * (tiled + tiled / 4) as u64,
+        &format!(
+            "its mirror-tiled wall of {} × {} nodes",
+            2 * (n - 1),
+            2 * (m - 1)
+        ),
+    )?;
     let (c, s) = (lay_angle.cos(), lay_angle.sin());
     let centre = (0.5 * lx, 0.5 * ly);
     let (a0, b0) = (

@@ -4,9 +4,9 @@
 
 use crate::case::{builtin, deterministic::prepare};
 use crate::cli::DeterministicArgs;
-use crate::commands::{apply_wall_card, begin_out, context, warn, Summary};
+use crate::commands::monte_carlo::{MonteCarlo, Scene};
+use crate::commands::{apply_wall_card, context, warn, Summary};
 use crate::output::out_dir::{check_distinct, check_out};
-use crate::runner;
 use crate::writers::deterministic::{finish, sphere_table, surface_table};
 use roughwall::deterministic::fill_block;
 use roughwall::deterministic::scene::{
@@ -14,8 +14,6 @@ use roughwall::deterministic::scene::{
 };
 use roughwall::error::Result;
 use roughwall::surface::HeightField;
-use roughwall::tally::engine::ConditionStats;
-use roughwall::tally::ConditionTally;
 
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<Summary> {
@@ -28,25 +26,16 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     if let Some(card) = card {
         p.notes.insert("wall_card".into(), toml::Value::Table(card));
     }
-    let plan = runner::plan(
-        p.specs.clone(),
-        p.scene.count as u64,
-        p.scene.target_se_deg,
-        o.shard,
-    )?;
-    // What shards must agree on (a shard's partial tally records it).
-    let identity = plan
-        .shard
-        .map(|_| {
-            let (text, origin) = (&ctx.case_text, &ctx.case_origin);
-            runner::identity("deterministic", text, origin, ctx.seed, &o, file)
-        })
-        .transpose()?;
-    let target = match plan.shard {
-        Some(shard) => ctx.shard_dir(args.common.out.as_deref(), shard),
-        None => ctx.out_dir.clone(),
+    let scene = Scene {
+        specs: p.specs.clone(),
+        count: p.scene.count as u64,
+        target_se_deg: p.scene.target_se_deg,
+        surface_file: file,
     };
-    check_out(&target, "--out")?;
+    let out = args.common.out.as_deref();
+    let mc = MonteCarlo::plan(&ctx, out, "deterministic", "histories", scene, &o)?;
+    let target = mc.target();
+    check_out(target, "--out")?;
     // `--out` is replaced as a whole: it must not hold the height file or the card the run
     // reads.
     let inputs: Vec<(&str, &std::path::Path)> = [
@@ -56,7 +45,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     .into_iter()
     .filter_map(|(k, p)| p.map(|p| (k, p)))
     .collect();
-    check_distinct(&target, "--out", &inputs)?;
+    check_distinct(target, "--out", &inputs)?;
     // Everything the user gave is checked; now the surfaces (the only slow input step).
     let sphere = p.options.sphere_diameter_m;
     let t0 = std::time::Instant::now();
@@ -87,7 +76,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     warn(fields[0].triangulation_seam());
     let surfaces = realisations(&built, p.options.max_collisions, file)?;
     // Merged shards report shard 1's table: the others need not measure again.
-    let measure = plan.shard.is_none_or(|s| s.index == 1);
+    let measure = mc.shard().is_none_or(|s| s.index == 1);
     let source = built[0].source;
     let choice = surface_table(
         p.surface.as_ref(),
@@ -102,45 +91,31 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
         // `surface_choice` measured the surface the centre rides on: the dilated one.
         p.notes.insert("sphere_contact".into(), sphere_table(&s));
     }
-    // The surface is valid: lock and stage the output directory (a shard's own directory for
-    // a shard run), then compute.
-    let out = begin_out(&target)?;
-    let t1 = std::time::Instant::now();
+    // The surface is valid: lock and stage the output directory, then compute.
     let (setup, conditions, seed) = (&p.setup, &p.scene.conditions, ctx.seed);
-    let done = runner::execute(&plan, "deterministic", |k, start, end, block| {
-        let range = (start, end);
-        fill_block(
-            &surfaces,
-            setup,
-            &conditions[k],
-            k as u64,
-            seed,
-            range,
-            block,
-        )
-    });
-    let seconds = t1.elapsed().as_secs_f64();
-    let (tallies, stats): (Vec<ConditionTally>, Vec<ConditionStats>) = done.into_iter().unzip();
-    let summary = Summary::monte_carlo(plan.shard, &tallies, "histories", &target);
     let gen_s: f64 = built.iter().map(|b| b.generate_s).sum();
-    if let Some(identity) = &identity {
-        let total_s = seconds + gen_s;
-        runner::write_partial(out.path(), identity, &plan, p.notes, tallies, total_s)?;
-    } else {
-        let mut manifest = ctx.manifest;
-        let gen_ms = toml::Value::Float((gen_s * 1e3).round() / 1e3);
-        manifest.set_run("surface_s", gen_ms);
-        warn(finish(
-            out.path(),
-            manifest,
-            &p,
-            &tallies,
-            Some(&stats),
-            seconds,
-        )?);
-    }
-    out.commit()?;
-    Ok(summary)
+    let mut manifest = ctx.manifest;
+    mc.run(
+        &p.notes,
+        gen_s,
+        |k, start, end, block| {
+            let range = (start, end);
+            fill_block(
+                &surfaces,
+                setup,
+                &conditions[k],
+                k as u64,
+                seed,
+                range,
+                block,
+            )
+        },
+        |dir, tallies, stats, seconds| {
+            let gen_ms = toml::Value::Float((gen_s * 1e3).round() / 1e3);
+            manifest.set_run("surface_s", gen_ms);
+            finish(dir, manifest, &p, tallies, Some(stats), seconds)
+        },
+    )
 }
 
 /// The sphere's dilation over all realisations: the mean contact fraction, the total time

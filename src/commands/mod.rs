@@ -7,6 +7,7 @@ pub mod compare;
 pub mod deterministic;
 pub mod force_sweep;
 pub mod merge;
+mod monte_carlo;
 pub mod pipe_stats;
 pub mod report;
 pub mod scan;

@@ -113,6 +113,18 @@ fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+/// An axis range `lo..hi` the plotting library can draw quickly: itself when finite and wide
+/// enough to be resolved (more than 1e-9 of its size), else a window around what is finite of
+/// it. Heat maps take their extents and colour ranges through it, as line plots take theirs
+/// through `range` (issue 42: a 1e303 m side made the tick search spin for minutes).
+pub(super) fn drawable(lo: f64, hi: f64) -> (f64, f64) {
+    let scale = lo.abs().max(hi.abs());
+    if lo.is_finite() && hi.is_finite() && hi - lo > 1e-9 * scale && hi > lo {
+        return (lo, hi);
+    }
+    range([lo, hi].into_iter(), false)
+}
+
 /// Keeps a coordinate within a few axis spans of the axis range (in log space on a log axis).
 #[derive(Clone, Copy)]
 struct Clamp {
@@ -387,6 +399,24 @@ mod tests {
 #[cfg(test)]
 mod degenerate {
     use super::*;
+
+    #[test]
+    fn drawable_keeps_good_ranges_and_mends_the_rest() {
+        assert_eq!(drawable(0.0, 83.0), (0.0, 83.0));
+        for (lo, hi) in [
+            (0.0, f64::INFINITY),
+            (f64::NAN, 1.0),
+            (1e300, 1e300),
+            (1e300, 1e300 + 1e-6),
+            (5.0, 5.0),
+        ] {
+            let (a, b) = drawable(lo, hi);
+            assert!(
+                a.is_finite() && b.is_finite() && b - a > 1e-9 * a.abs().max(b.abs()),
+                "{lo} {hi} -> {a} {b}"
+            );
+        }
+    }
 
     #[test]
     fn huge_and_degenerate_ranges_draw_quickly() {

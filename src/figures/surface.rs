@@ -10,7 +10,7 @@
 //! * `effective_roughness.svg` ([`effective_roughness`]): the effective roughness of a
 //!   sphere's centre surface.
 
-use super::plot::draw_err;
+use super::plot::{draw_err, drawable};
 use super::png::{base64, png_indexed};
 use super::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::{fmt_num, write_atomic};
@@ -122,11 +122,11 @@ pub(super) struct MapLine {
 /// `plotters`.
 pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
     let (w, h) = m.size;
-    let (lo, hi) = m.range;
+    let (lo, hi) = drawable(m.range.0, m.range.1);
     let map_png = png_indexed(w, h, m.pixels, m.palette);
     let bar_png = png_indexed(1, m.bar.len(), m.bar, m.palette);
-    let (width_um, height_um) = m.extent_um;
-    let (x0, y0) = m.origin_um;
+    let (x0, x1) = drawable(m.origin_um.0, m.origin_um.0 + m.extent_um.0);
+    let (y0, y1) = drawable(m.origin_um.1, m.origin_um.1 + m.extent_um.1);
     let (cw, ch) = (640u32, 560u32);
     let mut svg = String::new();
     let (map_px, bar_px);
@@ -139,7 +139,7 @@ pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(56)
-            .build_cartesian_2d(x0..x0 + width_um, y0..y0 + height_um)
+            .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(draw_err)?;
         chart
             .configure_mesh()
@@ -185,8 +185,8 @@ pub(super) fn heat_map(path: &Path, title: &str, m: &HeatMap) -> Result<()> {
     let to_px = |(x, y): (f64, f64)| {
         let (px, py) = (&map_px.0, &map_px.1);
         (
-            px.start as f64 + (x - x0) / width_um * (px.end - px.start) as f64,
-            py.end as f64 - (y - y0) / height_um * (py.end - py.start) as f64,
+            px.start as f64 + (x - x0) / (x1 - x0) * (px.end - px.start) as f64,
+            py.end as f64 - (y - y0) / (y1 - y0) * (py.end - py.start) as f64,
         )
     };
     let lines: String = m

@@ -7,6 +7,7 @@ use roughwall::error::{Error, Result};
 use roughwall::surface::heights_io::MAGIC;
 use roughwall::surface::scan::{characterise, periodic::mirrored_wall, ScanField};
 use roughwall::surface::HeightField;
+use roughwall::warning::Warning;
 use std::io::Read;
 use std::path::Path;
 
@@ -19,13 +20,20 @@ fn is_height_file(path: &Path) -> bool {
         .is_ok_and(|_| magic == MAGIC)
 }
 
-/// The wall of a measured scan and its `[scan]` manifest table; `None` for a height file
+/// The wall of a measured scan, its `[scan]` manifest table and the reader's warnings; `None` for a height file
 /// of `rebound surface --heights` (or a path that is not a file: its reader says so).
-pub fn scan_wall(path: &Path) -> Result<Option<(HeightField, toml::Table)>> {
+pub fn scan_wall(path: &Path) -> Result<Option<(HeightField, toml::Table, Vec<Warning>)>> {
     if !path.is_file() || is_height_file(path) {
         return Ok(None);
     }
     let t = topography::read(path).map_err(|e| Error::Input(format!("--surface {e}")))?;
+    // What the reader read despite a flaw (an X3P whose main.xml alone fails its checksum).
+    let warnings: Vec<Warning> = t
+        .info
+        .iter()
+        .filter(|(k, _)| k == "warning")
+        .map(|(_, v)| Warning(format!("--surface `{}`: {v}", path.display())))
+        .collect();
     let named = |e: Error| match e {
         Error::Input(m) => Error::Input(format!("--surface `{}`: {m}", path.display())),
         other => other,
@@ -70,5 +78,5 @@ pub fn scan_wall(path: &Path) -> Result<Option<(HeightField, toml::Table)>> {
         "periodic_wall",
         "mirrored tiling of the rectangle along the lay (docs/models.md, Measured walls)".into(),
     );
-    Ok(Some((wall, table)))
+    Ok(Some((wall, table, warnings)))
 }

@@ -51,7 +51,8 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     let t0 = std::time::Instant::now();
     let built = match file.map(crate::scan_wall::scan_wall).transpose()?.flatten() {
         // A measured scan: its wall, turned to its lay and mirror-tiled.
-        Some((wall, table)) => {
+        Some((wall, table, read_warnings)) => {
+            warn(read_warnings);
             p.notes.insert("scan".into(), toml::Value::Table(table));
             let secs = t0.elapsed().as_secs_f64();
             vec![surface_from_field(

@@ -124,7 +124,18 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
     let t0 = Instant::now();
     // A file is read (and refused) before `--out` is begun; a wall is generated after.
     let (input, file) = match &setup.source {
-        ScanSource::File(f) => (Input::Read(f.read()?), f.shown.clone()),
+        ScanSource::File(f) => {
+            let read = f.read()?;
+            // What the reader read despite a flaw (an X3P whose main.xml alone fails its
+            // checksum) is the user's to know.
+            warn(
+                read.info
+                    .iter()
+                    .filter(|(k, _)| k == "warning")
+                    .map(|(_, v)| Warning(format!("`{}` {}: {v}", f.key, f.shown))),
+            );
+            (Input::Read(read), f.shown.clone())
+        }
         ScanSource::Generated(plan) => {
             let nodes = plan.spec().nodes;
             let key = match ctx.case.surface.is_some() {

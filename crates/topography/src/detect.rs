@@ -46,6 +46,17 @@ pub(crate) fn detect(path: &Path) -> Result<Format> {
         _ => {}
     }
     if let Some(f) = by_text(&head) {
+        if f == Format::Matrix {
+            // Named as what it is, before any advice to read it as a matrix (issue 39).
+            let text = String::from_utf8_lossy(&head);
+            let rows: Vec<Vec<f64>> = text
+                .lines()
+                .map(str::trim)
+                .filter(|l| !l.is_empty() && !l.starts_with('#'))
+                .map_while(parse_numbers)
+                .collect();
+            crate::text::refuse_profile(rows.iter().map(Vec::as_slice))?;
+        }
         return Ok(f);
     }
     Err(Problem::new(

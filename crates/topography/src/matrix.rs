@@ -35,6 +35,9 @@ pub(crate) fn read(path: &Path, dx_m: f64, dy_m: f64, unit_m: f64) -> Result<Top
             )))
         }
     })?;
+    if rows.ncols == 2 {
+        crate::text::refuse_profile(rows.values.chunks_exact(2))?;
+    }
     Ok(Topography {
         nx: rows.ncols,
         ny: rows.nrows,

@@ -17,6 +17,37 @@ pub(crate) struct Rows {
     pub nrows: usize,
 }
 
+/// A refusal when `rows` (each a row of numbers) are two columns whose first rises or falls
+/// in equal steps: the x and z of a line profile, which read as a matrix would give a 2 × N
+/// "surface" whose first column of heights is the positions (issue 39). A real two-column
+/// height field has no such column.
+pub(crate) fn refuse_profile<'a>(rows: impl Iterator<Item = &'a [f64]>) -> Result<()> {
+    let firsts: Vec<f64> = rows
+        .map(|r| if r.len() == 2 { r[0] } else { f64::NAN })
+        .collect();
+    if firsts.len() < 3 || firsts.iter().any(|v| !v.is_finite()) {
+        return Ok(());
+    }
+    let step = firsts[1] - firsts[0];
+    let scale = firsts
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()))
+        .max(step.abs());
+    let even = step != 0.0
+        && firsts
+            .windows(2)
+            .all(|w| ((w[1] - w[0]) - step).abs() <= 1e-6 * scale);
+    if even {
+        return Err(Problem::unsupported(format!(
+            "two columns whose first goes from {} in equal steps of {}: an x, z line profile, \
+             not a surface; a height field is a grid of heights (one row per y, one column per \
+             x), as an areal scan exports it",
+            firsts[0], step
+        )));
+    }
+    Ok(())
+}
+
 /// The numbers of a line split at whitespace, commas and semicolons, or `None` when a token
 /// is not a number. `NaN`, `bad`, `inf` and `infinite` (any case, any sign) and infinite values
 /// are missing points: NaN (as SurfaceTopography's Text.py reads them).

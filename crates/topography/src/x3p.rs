@@ -7,11 +7,14 @@
 //! Read: a surface (`FeatureType` SUR) on regular X and Y axes (`AxisType` I, with an
 //! `Increment` in metres), heights on an absolute Z axis (`AxisType` A) of data type I (i16),
 //! L (i32), F (f32) or D (f64), little-endian, x fast (`SizeX` points per row, `SizeY` rows,
-//! `SizeZ` 1); a height is `raw × Increment + Offset` of CZ (both optional). The validity
+//! `SizeZ` 1); a height is `raw × Increment + Offset` of CZ (both optional; an empty element
+//! such as `<Offset/>` is absent). `main.xml` sits at the top of the archive, or in one folder
+//! whose other paths are then read from it (an `info` entry says so). The validity
 //! mask holds one bit per point, least significant bit first, 1 = valid; NaN in F or D data is
 //! also missing. The MD5 of `main.xml` (in `md5checksum.hex`), of the point data
 //! (`MD5ChecksumPointData`) and of the mask (`MD5ChecksumValidPoints`), where the file gives
-//! them, must match; `md5checksum.hex` is read as `md5sum` writes it (`HEX *NAME`) and checks
+//! them, must match — except that a `main.xml` mismatch is only a `warning` entry of `info`
+//! when the point data's own MD5 holds; `md5checksum.hex` is read as `md5sum` writes it (`HEX *NAME`) and checks
 //! the file it names (SurfaceTopography's writer names the point data there). This is the reading
 //! of SurfaceTopography 1.27.1's `IO/X3P.py` (signed I and L, as the openGPS library and
 //! Gwyddion's `opengps.c`), with the checksums verified. Explicit axes (`AxisType` A or
@@ -36,15 +39,21 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
             "not a readable zip archive ({e}); an X3P file is a zip of main.xml and the point data"
         ))
     })?;
-    let main = entry(&mut zip, "main.xml", Size::AtMost(MAX_XML))?.ok_or_else(|| {
-        Problem::corrupt(
-            "the zip archive has no main.xml; an X3P file is a zip of main.xml and the point data",
-        )
-    })?;
     let mut info = Vec::new();
+    // Every other path of the archive is relative to main.xml's folder.
+    let folder = main_folder(&zip)?;
+    if !folder.is_empty() {
+        info.push((
+            "main.xml".to_string(),
+            format!("in the folder {folder} of the archive; its paths are read from there"),
+        ));
+    }
+    let at = |name: &str| format!("{folder}{name}");
+    let main = entry(&mut zip, &at("main.xml"), Size::AtMost(MAX_XML))?
+        .ok_or_else(|| Problem::corrupt("the zip archive has no main.xml"))?;
     // `HEX *NAME` as md5sum writes it; ISO 5436-2 names main.xml, SurfaceTopography's writer
     // names the point data: the file it names is the one checked.
-    let sum_file = entry(&mut zip, "md5checksum.hex", Size::AtMost(4096))?;
+    let sum_file = entry(&mut zip, &at("md5checksum.hex"), Size::AtMost(4096))?;
     let sum_file = sum_file.map(|b| String::from_utf8_lossy(&b).into_owned());
     let sum_target = sum_file.as_deref().map(|s| {
         s.split_whitespace()
@@ -52,9 +61,14 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
             .map_or("main.xml", |n| n.trim_start_matches('*'))
             .to_string()
     });
+    // A main.xml that does not match its checksum is refused, unless the point data's own
+    // checksum holds (checked below): then only the XML was edited after it was written.
+    let mut main_mismatch = None;
     if let (Some(sum), Some("main.xml")) = (&sum_file, sum_target.as_deref()) {
-        verify(&md5(&main), sum.as_bytes(), "main.xml", "md5checksum.hex")?;
-        info.push(("main.xml MD5".to_string(), "verified".to_string()));
+        match verify(&md5(&main), sum.as_bytes(), "main.xml", "md5checksum.hex") {
+            Ok(()) => info.push(("main.xml MD5".to_string(), "verified".to_string())),
+            Err(e) => main_mismatch = Some(e),
+        }
     }
     let text =
         std::str::from_utf8(&main).map_err(|_| Problem::corrupt("main.xml is not UTF-8 text"))?;
@@ -93,8 +107,10 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
     }
     let number = |path: &[&str]| -> Result<Option<f64>> {
         match root.text_at(path) {
+            // An empty element (`<Offset/>`) states nothing: the default holds.
             None => Ok(None),
-            Some(s) => s.parse().map(Some).map_err(|_| {
+            Some(s) if s.trim().is_empty() => Ok(None),
+            Some(s) => s.trim().parse().map(Some).map_err(|_| {
                 Problem::corrupt(format!("{} = {} is not a number", path.join("/"), quote(s)))
             }),
         }
@@ -188,8 +204,8 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
         }
     };
     let (read_bytes, digest) = {
-        let (mut member, declared) = open_entry(&mut zip, data_name, Size::Exactly(need_bytes))?
-            .ok_or_else(|| {
+        let (mut member, declared) =
+            open_entry(&mut zip, &at(data_name), Size::Exactly(need_bytes))?.ok_or_else(|| {
                 Problem::corrupt(format!(
                     "the archive has no {} that PointDataLink names",
                     quote(data_name)
@@ -210,9 +226,24 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
         read_bytes as usize,
         &format!("X3P point data ({data_type})"),
     )?;
+    let mut data_verified = false;
     if let (Some(sum), Some(digest)) = (data_sum, &digest) {
         verify(digest, sum.as_bytes(), data_name, "MD5ChecksumPointData")?;
         info.push(("point data MD5".to_string(), "verified".to_string()));
+        data_verified = true;
+    }
+    if let Some(e) = main_mismatch {
+        if !data_verified {
+            return Err(e);
+        }
+        info.push((
+            "warning".to_string(),
+            format!(
+                "{} the point data's own MD5 matches, so the heights are read (main.xml was \
+                 edited after its checksum was written)",
+                e.message
+            ),
+        ));
     }
     match (&sum_file, sum_target.as_deref(), &digest) {
         (Some(sum), Some(name), Some(digest)) if name == data_name => {
@@ -229,7 +260,7 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
     let valid_name = link
         .text_at(&["ValidPointsLink"])
         .unwrap_or("bindata/valid.bin");
-    let valid = entry(&mut zip, valid_name, Size::Exactly(mask_bytes))?;
+    let valid = entry(&mut zip, &at(valid_name), Size::Exactly(mask_bytes))?;
     if let (Some(v), Some(sum)) = (&valid, link.text_at(&["MD5ChecksumValidPoints"])) {
         verify(
             &md5(v),
@@ -282,6 +313,39 @@ pub(crate) fn read(path: &Path) -> Result<Topography> {
         format: Format::X3p,
         info,
     })
+}
+
+/// The folder of the archive that holds `main.xml` (`""` at the top, else `name/`): the
+/// ISO 5436-2 layout puts it at the top; some writers zip a folder instead (x3ptools'
+/// `sample-land.x3p`: `sample-land/main.xml`). macOS's `__MACOSX/` copies are no candidates;
+/// more than one folder with a `main.xml` is refused, naming them.
+fn main_folder<R: Read + Seek>(zip: &zip::ZipArchive<R>) -> Result<String> {
+    let names: Vec<String> = zip
+        .file_names()
+        .filter_map(|n| n.ok().map(|n| n.into_owned()))
+        .collect();
+    if names.iter().any(|n| n == "main.xml") {
+        return Ok(String::new());
+    }
+    let mut found: Vec<&str> = names
+        .iter()
+        .filter(|n| !n.starts_with("__MACOSX/"))
+        .filter_map(|n| n.strip_suffix("main.xml").filter(|f| f.ends_with('/')))
+        .collect();
+    found.sort_unstable();
+    match found.as_slice() {
+        [one] => Ok(one.to_string()),
+        [] => Err(Problem::corrupt(
+            "the zip archive has no main.xml, at its top or in a folder; an X3P file is a zip of \
+             main.xml and the point data",
+        )),
+        many => Err(Problem::corrupt(format!(
+            "the zip archive has no main.xml at its top but one in each of {} folders ({}): \
+             which surface to read is not clear; an X3P file holds one",
+            many.len(),
+            many.iter().map(|f| quote(f)).collect::<Vec<_>>().join(", ")
+        ))),
+    }
 }
 
 /// The size an archive member must have.

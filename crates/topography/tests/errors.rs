@@ -216,7 +216,7 @@ fn bad_xml_is_one_line() {
 }
 
 #[test]
-fn x3p_checksum_mismatches_are_refused() {
+fn x3p_checksum_mismatches_are_refused_unless_the_point_data_vouches() {
     let tmp = tempfile::tempdir().unwrap();
     let data = i16s(&[1, 2, 3, 4]);
     let xml = main_xml(2, 2, "I", "", &data, "", "I");
@@ -224,6 +224,28 @@ fn x3p_checksum_mismatches_are_refused() {
         tmp.path(),
         "main.x3p",
         &xml,
+        &[("bindata/data.bin", &data)],
+        Some("00112233445566778899aabbccddeeff *main.xml\n"),
+    );
+    // Only main.xml fails its checksum, and the point data's own MD5 holds: the heights are
+    // intact, read with a warning (issue 39).
+    let t = read(&p).unwrap();
+    assert_eq!(t.heights_m, [1.0, 2.0, 3.0, 4.0]);
+    let w = t.info_value("warning").expect("a warning");
+    assert!(w.contains("main.xml") && w.contains("point data"), "{w}");
+    // Without a point-data checksum to vouch for the heights, the mismatch is refused.
+    let bare = xml.replace(
+        &format!(
+            "<MD5ChecksumPointData>{}</MD5ChecksumPointData>",
+            md5_hex(&data)
+        ),
+        "",
+    );
+    assert_ne!(bare, xml);
+    let p = x3p(
+        tmp.path(),
+        "bare.x3p",
+        &bare,
         &[("bindata/data.bin", &data)],
         Some("00112233445566778899aabbccddeeff *main.xml\n"),
     );
@@ -669,4 +691,94 @@ fn unknown_and_missing_files_are_one_line() {
     let p = write(tmp.path(), "two\nlines.sur", b"DIGITAL SURF");
     let e = read(&p).unwrap_err();
     assert!(!e.to_string().contains('\n'), "{e}");
+}
+
+/// An empty `<Offset/>` is no offset (x3ptools writes one), and `main.xml` in one folder of
+/// the archive is read from there with a note; in two folders it is refused naming both
+/// (issue 39).
+#[test]
+fn x3p_empty_offset_and_a_folder_layout_are_read() {
+    let tmp = tempfile::tempdir().unwrap();
+    let data = i16s(&[1, 2, 3, 4]);
+    let xml = main_xml(
+        2,
+        2,
+        "I",
+        "<Increment>1e-9</Increment><Offset/>",
+        &data,
+        "",
+        "I",
+    );
+    let p = x3p(
+        tmp.path(),
+        "offset.x3p",
+        &xml,
+        &[("bindata/data.bin", &data)],
+        None,
+    );
+    let raw_times_increment = [1.0, 2.0, 3.0, 4.0].map(|r| r * 1e-9);
+    assert_eq!(read(&p).unwrap().heights_m, raw_times_increment);
+    let zipped = |name: &str, folders: &[&str]| {
+        let path = tmp.path().join(name);
+        let mut z = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
+        let opt = zip::write::SimpleFileOptions::default();
+        // macOS's resource copies are no candidates.
+        z.start_file("__MACOSX/land/main.xml", opt).unwrap();
+        z.write_all(b"not xml").unwrap();
+        for f in folders {
+            for (n, b) in [
+                ("main.xml", xml.as_bytes()),
+                ("bindata/data.bin", &data[..]),
+                (
+                    "md5checksum.hex",
+                    format!("{} *main.xml\n", md5_hex(xml.as_bytes())).as_bytes(),
+                ),
+            ] {
+                z.start_file(format!("{f}/{n}"), opt).unwrap();
+                z.write_all(b).unwrap();
+            }
+        }
+        z.finish().unwrap();
+        path
+    };
+    let p = zipped("folder.x3p", &["land"]);
+    let t = read(&p).unwrap();
+    assert_eq!(t.heights_m, raw_times_increment);
+    assert_eq!(t.info_value("main.xml MD5"), Some("verified"));
+    assert!(
+        t.info_value("main.xml").unwrap().contains("land/"),
+        "{:?}",
+        t.info
+    );
+    let p = zipped("two.x3p", &["a", "b"]);
+    let m = fails(read(&p), &p, ErrorKind::Corrupt);
+    assert!(m.contains("`a/`") && m.contains("`b/`"), "{m}");
+}
+
+/// Two columns whose first rises in equal steps are an x, z line profile: named so and
+/// refused, whether detected or read as a matrix on the user's word, so that no advice leads
+/// to reading the positions as heights (issue 39).
+#[test]
+fn a_two_column_profile_is_named_and_refused() {
+    let tmp = tempfile::tempdir().unwrap();
+    let text: String = (0..200)
+        .map(|i| {
+            format!(
+                "{:.6e} {:.6e}\n",
+                i as f64 * 0.5e-6,
+                1e-7 * (i as f64 * 0.7).sin()
+            )
+        })
+        .collect();
+    let p = write(tmp.path(), "profile.txt", text.as_bytes());
+    let m = fails(read(&p), &p, ErrorKind::Unsupported);
+    assert!(m.contains("line profile"), "{m}");
+    let m = fails(read_matrix(&p, 1e-6, 1e-6, 1.0), &p, ErrorKind::Unsupported);
+    assert!(m.contains("line profile"), "{m}");
+    // Two columns of heights are a (narrow) surface.
+    let text: String = (0..50)
+        .map(|i| format!("{} {}\n", (i as f64 * 1.3).sin(), (i as f64 * 0.4).cos()))
+        .collect();
+    let p = write(tmp.path(), "narrow.txt", text.as_bytes());
+    assert_eq!(read_matrix(&p, 1e-6, 1e-6, 1e-6).unwrap().nx, 2);
 }

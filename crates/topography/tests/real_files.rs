@@ -272,3 +272,29 @@ fn xyz_on_a_regular_grid_in_any_order() {
         &[(1, 0, f64::NAN), (2, 1, f64::NAN), (2, 2, 2.0), (0, 3, 1.0)],
     );
 }
+
+/// x3ptools' `sample-land.x3p` (a Sensofar confocal scan of a machined metal surface, a
+/// bullet land; MIT): `main.xml` in a folder of the archive and an empty `<Offset/>`. The
+/// expected heights are its `bindata/data.bin` decoded independently (little-endian f64 ×
+/// Increment 1; NaN marks the 25,292 masked points).
+#[test]
+fn x3p_from_x3ptools_with_a_folder_and_an_empty_offset() {
+    let t = read(&scan("x3ptools-sample-land.x3p")).unwrap();
+    check(
+        &t,
+        Format::X3p,
+        (918, 256),
+        (2.58e-6, 2.58e-6),
+        25_292,
+        &[
+            (0, 0, -5.421108289738186e-05),
+            (917, 255, f64::NAN),
+            (459, 128, 4.1360955947311595e-05),
+            (100, 200, -5.7384844694752246e-05),
+        ],
+    );
+    assert_eq!(t.info_value("main.xml MD5"), Some("verified"));
+    assert_eq!(t.info_value("point data MD5"), Some("verified"));
+    assert!(t.info_value("main.xml").unwrap().contains("sample-land/"));
+    assert_eq!(t.info_value("vendor"), Some("Sensofar"));
+}

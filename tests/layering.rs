@@ -6,7 +6,9 @@
 //! * in each crate, files import each other without cycles: the file-level import graph
 //!   (`use` statements and inline `crate::…`, `super::…` paths; re-exports followed to the
 //!   file that defines the item; unit tests left out) has no strongly connected component
-//!   of more than one file.
+//!   of more than one file;
+//! * in each crate, the top-level modules import each other without circles beyond the known
+//!   debt listed in `KNOWN_MODULE_CIRCLES` (which must shrink, never grow).
 
 use crate::common::repo_root;
 use std::collections::{BTreeMap, BTreeSet};
@@ -81,6 +83,55 @@ fn files_import_each_other_without_cycles() {
             "topography" => assert!(edge("x3p.rs", "xml.rs")),
             _ => assert!(edge("commands/stochastic.rs", "case/stochastic.rs")),
         }
+    }
+}
+
+/// Module circles that are known debt, per crate: in the library the dispatch between wall
+/// models sits in `stochastic`, below `calibrated`, which uses the deterministic tracker,
+/// which uses the stochastic model's single-collision probability (issue 41, part 2, moves
+/// the dispatch above the models and empties this list).
+const KNOWN_MODULE_CIRCLES: [(&str, &[&str]); 1] =
+    [("roughwall", &["calibrated", "deterministic", "stochastic"])];
+
+/// The top-level modules of a crate (a file's first module segment: `stochastic/simulate.rs`
+/// is in `stochastic`, `collision.rs` is `collision`; the crate root is left out) import each
+/// other without circles beyond [`KNOWN_MODULE_CIRCLES`]: a new one fails, and so does a
+/// known one that is gone (the list must then shrink).
+#[test]
+fn modules_import_each_other_without_new_circles() {
+    for (krate, dir) in [
+        ("roughwall", "crates/roughwall/src"),
+        ("topography", "crates/topography/src"),
+        ("rebound", "src"),
+    ] {
+        let files = import_graph(&repo_root().join(dir));
+        let top = |file: &str| module_of(file).into_iter().next();
+        let mut modules: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        for (a, targets) in &files {
+            let Some(ma) = top(a) else { continue };
+            let out = modules.entry(ma.clone()).or_default();
+            for b in targets {
+                match top(b) {
+                    Some(mb) if mb != ma => {
+                        out.insert(mb);
+                    }
+                    _ => {}
+                }
+            }
+        }
+        let circles: Vec<Vec<String>> = strongly_connected(&modules)
+            .into_iter()
+            .filter(|c| c.len() > 1)
+            .collect();
+        let known: Vec<Vec<String>> = KNOWN_MODULE_CIRCLES
+            .iter()
+            .filter(|(k, _)| *k == krate)
+            .map(|(_, m)| m.iter().map(|s| s.to_string()).collect())
+            .collect();
+        assert_eq!(
+            circles, known,
+            "{krate}: modules importing each other in a loop"
+        );
     }
 }
 

@@ -53,10 +53,11 @@
 
 mod common;
 
+use common::capped::{run_capped, Limits, Ran, SIGXCPU};
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
@@ -1135,69 +1136,13 @@ fn build_jobs(bases: &[Base], rng: &mut SplitMix64) -> Vec<Job> {
 // ---------------------------------------------------------------------------------------
 // Running one case
 
-struct Ran {
-    /// Exit status, or `None` for a signal.
-    code: Option<i32>,
-    signal: Option<i32>,
-    timed_out: bool,
-    stderr: String,
-    seconds: f64,
-}
-
-fn run_capped(bin: &Path, args: &[String], dir: &Path) -> Ran {
-    let err_path = dir.join("stderr.txt");
-    let err = std::fs::File::create(&err_path).unwrap();
-    // Soft CPU limit first (SIGXCPU), then a hard one above it (SIGKILL if SIGXCPU is ignored).
-    let script = format!(
-        "ulimit -v {MEM_KB} && ulimit -f {FSIZE_BLOCKS} && ulimit -S -t {CPU_CAP_S} && \
-         ulimit -H -t {} && exec \"$0\" \"$@\"",
-        CPU_CAP_S + 5
-    );
-    let t0 = Instant::now();
-    let mut child = Command::new("sh")
-        .arg("-c")
-        .arg(script)
-        .arg(bin)
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(err)
-        .spawn()
-        .expect("spawn sh");
-    let mut timed_out = false;
-    let status = loop {
-        if let Some(s) = child.try_wait().expect("wait") {
-            break s;
-        }
-        if t0.elapsed() > WALL_CAP {
-            timed_out = true;
-            // SIGKILL to the process we started (sh exec'd into rebound: same pid).
-            let _ = child.kill();
-            break child.wait().expect("wait");
-        }
-        let e = t0.elapsed();
-        std::thread::sleep(if e < Duration::from_millis(50) {
-            Duration::from_millis(1)
-        } else {
-            Duration::from_millis(10)
-        });
-    };
-    let seconds = t0.elapsed().as_secs_f64();
-    use std::os::unix::process::ExitStatusExt;
-    let timed_out = timed_out || status.signal() == Some(SIGXCPU);
-    let bytes = std::fs::read(&err_path).unwrap_or_default();
-    let stderr = String::from_utf8_lossy(&bytes[..bytes.len().min(1 << 20)]).into_owned();
-    Ran {
-        code: status.code(),
-        signal: status.signal(),
-        timed_out,
-        stderr,
-        seconds,
-    }
-}
-
-const SIGXCPU: i32 = 24;
+/// The limits of every case run.
+const LIMITS: Limits = Limits {
+    mem_kb: MEM_KB,
+    fsize_blocks: FSIZE_BLOCKS,
+    cpu_s: CPU_CAP_S,
+    wall: WALL_CAP,
+};
 
 fn signal_name(s: i32) -> String {
     let n = match s {
@@ -1648,7 +1593,7 @@ fn every_mutated_case_exits_cleanly() {
                 job.mutation.apply(&mut table);
                 let text = toml::to_string(&table).expect("serialize the mutated case");
                 std::fs::write(&case_path, &text).unwrap();
-                let ran = run_capped(&bin, &args, &dir);
+                let ran = run_capped(&bin, &args, &dir, LIMITS);
                 guard.timed_out = ran.timed_out;
                 drop(guard);
                 let verdict = judge(job.cmd, &ran, &out);

@@ -23,9 +23,10 @@
 
 mod common;
 
+use common::capped::{run_capped, Limits};
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// `ulimit -v` per run, kB: 3 GiB. A strip that once held a result per row (gigabytes) or
 /// a mirror-tiled wall of 392 GB must be refused by the memory budget, not abort.
@@ -34,6 +35,13 @@ const MEM_KB: u64 = 3 << 20;
 const CPU_CAP_S: u64 = 10;
 /// Wall-clock cap per run (a run blocked on I/O uses no CPU).
 const WALL_CAP: Duration = Duration::from_secs(60);
+/// The limits of every run (files up to 200 MB).
+const LIMITS: Limits = Limits {
+    mem_kb: MEM_KB,
+    fsize_blocks: 400_000,
+    cpu_s: CPU_CAP_S,
+    wall: WALL_CAP,
+};
 
 /// A Gwyddion text export: `width` and `height` are the header's lengths with their units.
 fn gwyddion(path: &Path, width: &str, height: &str, rows: &[Vec<f64>]) {
@@ -191,55 +199,6 @@ fn hostile_files(dir: &Path) -> Vec<(&'static str, PathBuf)> {
     out
 }
 
-struct Ran {
-    code: Option<i32>,
-    signal: Option<i32>,
-    stderr: String,
-    seconds: f64,
-    timed_out: bool,
-}
-
-fn run_capped(args: &[String], dir: &Path) -> Ran {
-    let err_path = dir.join("stderr.txt");
-    let err = std::fs::File::create(&err_path).unwrap();
-    let script = format!(
-        "ulimit -v {MEM_KB} && ulimit -S -t {CPU_CAP_S} && ulimit -H -t {} && exec \"$0\" \"$@\"",
-        CPU_CAP_S + 5
-    );
-    let t0 = Instant::now();
-    let mut child = Command::new("sh")
-        .arg("-c")
-        .arg(script)
-        .arg(common::rebound_bin())
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(err)
-        .spawn()
-        .expect("spawn sh");
-    let mut timed_out = false;
-    let status = loop {
-        if let Some(s) = child.try_wait().unwrap() {
-            break s;
-        }
-        if t0.elapsed() > WALL_CAP {
-            timed_out = true;
-            let _ = child.kill();
-            break child.wait().unwrap();
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    };
-    use std::os::unix::process::ExitStatusExt;
-    Ran {
-        code: status.code(),
-        signal: status.signal(),
-        timed_out: timed_out || status.signal() == Some(24),
-        stderr: String::from_utf8_lossy(&std::fs::read(&err_path).unwrap()).into_owned(),
-        seconds: t0.elapsed().as_secs_f64(),
-    }
-}
-
 /// Files under `dir` (recursively).
 fn files_under(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -344,7 +303,7 @@ fn hostile_scans_end_cleanly_in_every_command() {
             "--out".into(),
             out.display().to_string(),
         ]);
-        let ran = run_capped(&args, dir.path());
+        let ran = run_capped(common::rebound_bin(), &args, dir.path(), LIMITS);
         if ran.seconds > slowest.0 {
             slowest = (ran.seconds, what.clone());
         }

@@ -6,6 +6,7 @@
 #![allow(dead_code)]
 
 pub mod c_examples;
+pub mod capped;
 
 use std::ffi::OsStr;
 use std::path::{Path, PathBuf};

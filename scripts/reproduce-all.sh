@@ -16,9 +16,10 @@ T0=$(date +%s)
 BEFORE=$(mktemp)
 trap 'rm -f "$BEFORE"' EXIT
 (cd "$OUT" && find . -name '*.csv' ! -name 'speed_vs_error.csv' -print0 | sort -z | xargs -0 -r sha256sum) > "$BEFORE"
-# The mode the files before were made in (the `mode:` line of the last check; full when absent).
+# The mode the files before were made in: the `mode:` line of the last check (unknown without
+# one, e.g. results written before the line existed).
 PREVIOUS_MODE=$(awk '/^mode: /{print $2; exit}' "$OUT/$P_REPRODUCIBILITY" 2>/dev/null || true)
-PREVIOUS_MODE=${PREVIOUS_MODE:-full}
+PREVIOUS_MODE=${PREVIOUS_MODE:-unknown}
 for part in radenkovic2021 wall-models calibrate measured-walls mirror hu2021 erosion finite-size spin speed-vs-error; do
   echo "=== scripts/$part.sh"
   bash "$ROOT/scripts/$part.sh"
@@ -40,7 +41,9 @@ if [ -s "$BEFORE" ]; then
   changed=$(grep -c ': FAILED' "$OUT/.changed" || true)
   # A difference is explained only when the files before were made in the other mode (other
   # particle counts and surfaces); anything else is listed as unexplained.
-  if [ "$PREVIOUS_MODE" != "$MODE" ]; then
+  if [ "$PREVIOUS_MODE" = unknown ]; then
+    why="unexplained: the mode of the files before is not recorded"
+  elif [ "$PREVIOUS_MODE" != "$MODE" ]; then
     why="explained: the files before were made in ${PREVIOUS_MODE} mode, this run in $MODE mode"
   else
     why="unexplained: same mode ($MODE), same seeds"

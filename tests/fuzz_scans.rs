@@ -97,48 +97,113 @@ fn hostile_files(dir: &Path) -> Vec<(&'static str, PathBuf)> {
         "3 um",
         &last,
     );
-    gwyddion(
-        &add("1e303 m side", "huge-side.txt"),
-        "2 um",
-        "1e303 m",
-        &grid(2, 2, |i| rough(i, 1e-6)),
-    );
-    gwyddion(
-        &add("±1e308 heights", "max-heights.txt"),
-        "3 um",
-        "3 um",
-        &grid(3, 3, |i| if i % 2 == 0 { 1e308 } else { -1e308 }),
-    );
-    gwyddion(
-        &add("1e307 heights", "1e307.txt"),
-        "3 um",
-        "3 um",
-        &grid(3, 3, |i| if i % 3 == 0 { 1e307 } else { -1e307 }),
-    );
-    gwyddion(
-        &add("offset 1e300 m", "offset.txt"),
-        "8 um",
-        "8 um",
-        &grid(8, 8, |i| 1e300 + rough(i, 1e-6)),
-    );
-    gwyddion(
-        &add("1e300 m pixels", "huge-pixels.txt"),
-        "8e300 m",
-        "8e300 m",
-        &grid(8, 8, |i| rough(i, 1e-6)),
-    );
-    gwyddion(
-        &add("1e-300 m heights", "tiny-heights.txt"),
-        "8 um",
-        "8 um",
-        &grid(8, 8, |i| rough(i, 1e-300)),
-    );
-    gwyddion(
-        &add("1e-300 m pixels", "tiny-pixels.txt"),
-        "8e-300 m",
-        "8e-300 m",
-        &grid(8, 8, |i| rough(i, 1e-6)),
-    );
+    // Gwyddion text exports: (name, file, width, height, nx, ny, height of point i in m).
+    type Height = fn(usize) -> f64;
+    let exports: [(&'static str, &str, &str, &str, usize, usize, Height); 11] = [
+        (
+            "1e303 m side",
+            "huge-side.txt",
+            "2 um",
+            "1e303 m",
+            2,
+            2,
+            |i| rough(i, 1e-6),
+        ),
+        (
+            "±1e308 heights",
+            "max-heights.txt",
+            "3 um",
+            "3 um",
+            3,
+            3,
+            |i| {
+                if i % 2 == 0 {
+                    1e308
+                } else {
+                    -1e308
+                }
+            },
+        ),
+        ("1e307 heights", "1e307.txt", "3 um", "3 um", 3, 3, |i| {
+            if i % 3 == 0 {
+                1e307
+            } else {
+                -1e307
+            }
+        }),
+        ("offset 1e300 m", "offset.txt", "8 um", "8 um", 8, 8, |i| {
+            1e300 + rough(i, 1e-6)
+        }),
+        (
+            "1e300 m pixels",
+            "huge-pixels.txt",
+            "8e300 m",
+            "8e300 m",
+            8,
+            8,
+            |i| rough(i, 1e-6),
+        ),
+        (
+            "1e-300 m heights",
+            "tiny-heights.txt",
+            "8 um",
+            "8 um",
+            8,
+            8,
+            |i| rough(i, 1e-300),
+        ),
+        (
+            "1e-300 m pixels",
+            "tiny-pixels.txt",
+            "8e-300 m",
+            "8e-300 m",
+            8,
+            8,
+            |i| rough(i, 1e-6),
+        ),
+        // Aspect ratios of 1e9 both ways.
+        (
+            "1 m × 1 nm pixel",
+            "aspect-1e9.txt",
+            "8 m",
+            "8 nm",
+            8,
+            8,
+            |i| rough(i, 1e-9),
+        ),
+        (
+            "1 nm × 1 m pixel",
+            "aspect-1e-9.txt",
+            "8 nm",
+            "8 m",
+            8,
+            8,
+            |i| rough(i, 1e-9),
+        ),
+        // A strip of very unequal pixels.
+        (
+            "2 × 100000 strip, 1 m × 1 µm",
+            "strip-aspect.txt",
+            "2 m",
+            "0.1 m",
+            2,
+            100_000,
+            |i| rough(i, 1e-6),
+        ),
+        // A Gwyddion export 8192 columns wide.
+        (
+            "8192 columns",
+            "wide-export.txt",
+            "8192 um",
+            "6 um",
+            8192,
+            6,
+            |i| rough(i, 1e-6) + 1.234_567_89e-9,
+        ),
+    ];
+    for (name, file, width, height, nx, ny, h) in exports {
+        gwyddion(&add(name, file), width, height, &grid(nx, ny, h));
+    }
     gsf(
         &add("GSF side 1e308 m", "huge-side.gsf"),
         4,
@@ -147,26 +212,7 @@ fn hostile_files(dir: &Path) -> Vec<(&'static str, PathBuf)> {
         1e308,
         |i| rough(i, 1e-6) as f32,
     );
-    // Aspect ratios of 1e9 both ways.
-    gwyddion(
-        &add("1 m × 1 nm pixel", "aspect-1e9.txt"),
-        "8 m",
-        "8 nm",
-        &grid(8, 8, |i| rough(i, 1e-9)),
-    );
-    gwyddion(
-        &add("1 nm × 1 m pixel", "aspect-1e-9.txt"),
-        "8 nm",
-        "8 m",
-        &grid(8, 8, |i| rough(i, 1e-9)),
-    );
-    // Strips.
-    gwyddion(
-        &add("2 × 100000 strip, 1 m × 1 µm", "strip-aspect.txt"),
-        "2 m",
-        "0.1 m",
-        &grid(2, 100_000, |i| rough(i, 1e-6)),
-    );
+    // Strips a few points wide or high.
     gsf(
         &add("2 × 2^22 strip", "tall.gsf"),
         2,
@@ -182,13 +228,6 @@ fn hostile_files(dir: &Path) -> Vec<(&'static str, PathBuf)> {
         4.194304,
         2e-6,
         |i| rough(i, 1e-6) as f32,
-    );
-    // A Gwyddion export 8192 columns wide.
-    gwyddion(
-        &add("8192 columns", "wide-export.txt"),
-        "8192 um",
-        "6 um",
-        &grid(8192, 6, |i| rough(i, 1e-6) + 1.234_567_89e-9),
     );
     // Special files.
     let fifo = add("FIFO", "scan.fifo");

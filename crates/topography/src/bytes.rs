@@ -33,9 +33,10 @@ pub(crate) fn read_file(path: &Path) -> Result<Vec<u8>> {
         return Err(too_large(format!("holds {len} bytes")));
     }
     let limit = if len == 0 { STREAM_BYTES } else { len };
+    // Room for what the file reports; a stream that reports nothing grows as it is read.
     let mut data = Vec::new();
-    data.try_reserve_exact(limit as usize)
-        .map_err(|_| too_large(format!("of {limit} bytes does not fit in memory")))?;
+    data.try_reserve_exact(len as usize)
+        .map_err(|_| too_large(format!("of {len} bytes does not fit in memory")))?;
     // Whole chunks of 64 KiB: some special files refuse reads of other sizes (pagemap wants
     // multiples of 8), and one chunk past the limit tells a stream that goes on.
     let mut file = file;

@@ -61,7 +61,8 @@ pub const MAX_POINTS: usize = 1 << 28;
 
 /// Largest height accepted (m, either sign): 1 km. No wall's heights come near it, even
 /// with an instrument's offset; beyond it lie unit mistakes and offsets (1e300 m) that leave
-/// no digits for the roughness, and past ~1e70 m the fourth moments overflow (issue 42).
+/// no digits for the roughness, and past ~1e75 m the fourth moments overflow (2²⁸ · h⁴ >
+/// 1.8e308; issue 42).
 pub const MAX_HEIGHT_M: f64 = 1e3;
 
 /// Spacings accepted (m): from 1 pm (below any instrument's lateral resolution) to 1 m.
@@ -185,7 +186,7 @@ pub struct Characterisation {
 /// levelling's Legendre table (32 per column) and, per thread, the lay's row buffers (13
 /// values per column); rows are summed a chunk at a time ([`in_row_chunks`]). Small for a
 /// scan, large for a strip 10⁸ points wide.
-pub fn characterisation_bytes(nx: usize, _ny: usize) -> u64 {
+pub fn characterisation_bytes(nx: usize) -> u64 {
     let threads = rayon::current_num_threads() as u64;
     (nx as u64).saturating_mul(32 + 13 * 8 * threads)
 }
@@ -198,7 +199,7 @@ pub fn characterise(f: ScanField, degree: u32) -> Result<Characterisation> {
     crate::memory::require(
         "scan",
         format!("{} × {} points", f.nx, f.ny),
-        characterisation_bytes(f.nx, f.ny),
+        characterisation_bytes(f.nx),
         "levelling it and finding its lay",
     )?;
     let mut levelled = f;

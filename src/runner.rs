@@ -3,7 +3,7 @@
 //! into exactly the outputs one process would have written.
 //!
 //! Shared by `deterministic`, `stochastic` and `merge`; the models only say how to fill a
-//! block of particles (`deterministic::fill_block`, `stochastic::simulate::fill_block`).
+//! block of particles (`deterministic::fill_block`, `models::simulate::fill_block`).
 
 use crate::partial::{Partial, PartialFile, RunIdentity, PARTIAL_FILE};
 use crate::progress::Progress;

@@ -224,8 +224,8 @@ fn calibrated_transverse_slope_follows_eq30_in_slopes() {
     use roughwall::angles::velocity_from_angles;
     use roughwall::calibrated::slope_space::{slope_deviations, slopes_from_normal};
     use roughwall::collision::CollisionLaw;
-    use roughwall::stochastic::rebound_variant;
-    use roughwall::stochastic::Variant;
+    use roughwall::models::{rebound_with, AnyModel};
+    use roughwall::stochastic::Contact;
     use roughwall::wall::{conditional_gamma_star, rotated_moments, Deviations};
     let wall = Deviations {
         delta_xi: 6f64.to_radians(),
@@ -241,14 +241,17 @@ fn calibrated_transverse_slope_follows_eq30_in_slopes() {
     let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(13);
     let firsts: Vec<(f64, f64)> = (0..1_000_000)
         .map(|_| {
-            let r = rebound_variant(
+            let contact = Contact {
+                wall: &wall,
+                law: &CollisionLaw::Elastic,
+                psi: 2.0,
+                diameter_m: 1e-4,
+            };
+            let r = rebound_with(
+                &AnyModel::calibrated(None),
                 u,
                 Vector3::zeros(),
-                &wall,
-                &CollisionLaw::Elastic,
-                2.0,
-                1e-4,
-                Variant::calibrated(None),
+                &contact,
                 &mut rng,
             );
             slopes_from_normal(&r.first.normal, beta)

@@ -7,8 +7,9 @@
 //!   (`use` statements and inline `crate::…`, `super::…` paths; re-exports followed to the
 //!   file that defines the item; unit tests left out) has no strongly connected component
 //!   of more than one file;
-//! * in each crate, the top-level modules import each other without circles beyond the known
-//!   debt listed in `KNOWN_MODULE_CIRCLES` (which must shrink, never grow).
+//! * in each crate, the top-level modules import each other without circles;
+//! * the library's top-level modules import only modules of their own layer or below
+//!   (`LIBRARY_LAYERS`): the rough-wall models' dispatch sits above the models it dispatches.
 
 use crate::common::repo_root;
 use std::collections::{BTreeMap, BTreeSet};
@@ -79,60 +80,105 @@ fn files_import_each_other_without_cycles() {
         // files.
         let edge = |a: &str, b: &str| graph.get(a).is_some_and(|t| t.contains(b));
         match krate {
-            "roughwall" => assert!(edge("stochastic/simulate.rs", "collision.rs")),
+            "roughwall" => assert!(edge("models/simulate.rs", "collision.rs")),
             "topography" => assert!(edge("x3p.rs", "xml.rs")),
             _ => assert!(edge("commands/stochastic.rs", "case/stochastic.rs")),
         }
     }
 }
 
-/// Module circles that are known debt, per crate: in the library the dispatch between wall
-/// models sits in `stochastic`, below `calibrated`, which uses the deterministic tracker,
-/// which uses the stochastic model's single-collision probability (issue 41, part 2, moves
-/// the dispatch above the models and empties this list).
-const KNOWN_MODULE_CIRCLES: [(&str, &[&str]); 1] =
-    [("roughwall", &["calibrated", "deterministic", "stochastic"])];
+/// The library's top-level modules in layers, lowest first: a module imports only modules of
+/// its own layer or below, so the physics reads upwards from the foundations to the C library.
+/// The rough-wall models sit in `models`, above the paper's model (`stochastic`) and the
+/// calibrated one they dispatch to; a module missing here fails the test.
+const LIBRARY_LAYERS: [&[&str]; 7] = [
+    // Foundations: errors, checks, number formats, memory budgets, random streams, angles.
+    &[
+        "angles", "check", "error", "format", "memory", "rng", "warning",
+    ],
+    // The wall, the collision laws, incident particles, erosion, force, surfaces, tallies.
+    &[
+        "collision",
+        "erosion",
+        "force",
+        "incidence",
+        "surface",
+        "tally",
+        "wall",
+    ],
+    // The two models of the paper: stochastic (Fig. 13) and deterministic (Secs. 3.1–3.3).
+    &["deterministic", "stochastic"],
+    // The calibrated model, counted on deterministic runs.
+    &["calibrated"],
+    // Every rough-wall model and the dispatch between them.
+    &["models"],
+    // A CFD code's wall.
+    &["wall_model"],
+    // The C library.
+    &["ffi"],
+];
 
 /// The top-level modules of a crate (a file's first module segment: `stochastic/simulate.rs`
-/// is in `stochastic`, `collision.rs` is `collision`; the crate root is left out) import each
-/// other without circles beyond [`KNOWN_MODULE_CIRCLES`]: a new one fails, and so does a
-/// known one that is gone (the list must then shrink).
+/// is in `stochastic`, `collision.rs` is `collision`; the crate root is left out) and the
+/// modules each imports.
+fn module_graph(dir: &str) -> BTreeMap<String, BTreeSet<String>> {
+    let files = import_graph(&repo_root().join(dir));
+    let top = |file: &str| module_of(file).into_iter().next();
+    let mut modules: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for (a, targets) in &files {
+        let Some(ma) = top(a) else { continue };
+        let out = modules.entry(ma.clone()).or_default();
+        for b in targets {
+            match top(b) {
+                Some(mb) if mb != ma => {
+                    out.insert(mb);
+                }
+                _ => {}
+            }
+        }
+    }
+    modules
+}
+
+/// In each crate, the top-level modules import each other without circles.
 #[test]
-fn modules_import_each_other_without_new_circles() {
+fn modules_import_each_other_without_circles() {
     for (krate, dir) in [
         ("roughwall", "crates/roughwall/src"),
         ("topography", "crates/topography/src"),
         ("rebound", "src"),
     ] {
-        let files = import_graph(&repo_root().join(dir));
-        let top = |file: &str| module_of(file).into_iter().next();
-        let mut modules: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
-        for (a, targets) in &files {
-            let Some(ma) = top(a) else { continue };
-            let out = modules.entry(ma.clone()).or_default();
-            for b in targets {
-                match top(b) {
-                    Some(mb) if mb != ma => {
-                        out.insert(mb);
-                    }
-                    _ => {}
-                }
-            }
-        }
-        let circles: Vec<Vec<String>> = strongly_connected(&modules)
+        let circles: Vec<Vec<String>> = strongly_connected(&module_graph(dir))
             .into_iter()
             .filter(|c| c.len() > 1)
             .collect();
-        let known: Vec<Vec<String>> = KNOWN_MODULE_CIRCLES
-            .iter()
-            .filter(|(k, _)| *k == krate)
-            .map(|(_, m)| m.iter().map(|s| s.to_string()).collect())
-            .collect();
-        assert_eq!(
-            circles, known,
-            "{krate}: modules importing each other in a loop"
+        assert!(
+            circles.is_empty(),
+            "{krate}: modules importing each other in a loop: {circles:?}"
         );
     }
+}
+
+/// No library module imports one of a higher layer ([`LIBRARY_LAYERS`]).
+#[test]
+fn library_imports_point_down_its_layers() {
+    let layer_of = |m: &str| LIBRARY_LAYERS.iter().position(|l| l.contains(&m));
+    let graph = module_graph("crates/roughwall/src");
+    assert!(graph.len() > 10, "{graph:?}");
+    for (a, targets) in &graph {
+        let la =
+            layer_of(a).unwrap_or_else(|| panic!("module `{a}` is in no layer of LIBRARY_LAYERS"));
+        for b in targets {
+            let lb = layer_of(b)
+                .unwrap_or_else(|| panic!("module `{b}` is in no layer of LIBRARY_LAYERS"));
+            assert!(
+                lb <= la,
+                "`{a}` (layer {la}) imports `{b}` (layer {lb}), a higher layer"
+            );
+        }
+    }
+    // The test can fail: the models import the paper's model, one layer down.
+    assert!(graph["models"].contains("stochastic"));
 }
 
 #[test]

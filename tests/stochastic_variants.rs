@@ -9,22 +9,19 @@ use rand::SeedableRng;
 use rand_xoshiro::Xoshiro256PlusPlus;
 use roughwall::angles::{incident_angles, velocity_from_angles, wrap_pi};
 use roughwall::collision::{CollisionLaw, ShParams};
+use roughwall::models::{rebound_with, AnyModel, ModelParams, RoughWallModel};
 use roughwall::stochastic::shadow_effect::ShadowSampler;
-use roughwall::stochastic::{rebound_variant, Rebound, Variant, VariantKind};
+use roughwall::stochastic::{Contact, Rebound};
 use roughwall::wall::Deviations;
 
 const D: f64 = 500e-6;
 
-fn variant(kind: VariantKind) -> Variant {
-    Variant {
-        kind,
-        delta_gamma: None,
-        escape: None,
-    }
+fn variant(name: &str) -> AnyModel {
+    AnyModel::with_defaults(name).unwrap()
 }
 
 fn run(
-    v: Variant,
+    v: AnyModel,
     wall: &Deviations,
     law: &CollisionLaw,
     a_deg: f64,
@@ -35,7 +32,15 @@ fn run(
     let mut rng = Xoshiro256PlusPlus::seed_from_u64(seed);
     let u = velocity_from_angles(6.0, a_deg.to_radians(), b_deg.to_radians());
     (0..n)
-        .map(|_| rebound_variant(u, Vector3::zeros(), wall, law, 2.0, D, v, &mut rng))
+        .map(|_| {
+            let contact = Contact {
+                wall,
+                law,
+                psi: 2.0,
+                diameter_m: D,
+            };
+            rebound_with(&v, u, Vector3::zeros(), &contact, &mut rng)
+        })
         .collect()
 }
 
@@ -95,7 +100,7 @@ fn ks_cdf(v: &[f64], cdf: impl Fn(f64) -> f64) -> f64 {
 
 #[test]
 fn smooth_wall_is_one_specular_collision_for_every_variant() {
-    for kind in VariantKind::ALL {
+    for &kind in AnyModel::NAMES {
         let v = variant(kind);
         for law in [
             CollisionLaw::Elastic,
@@ -105,16 +110,16 @@ fn smooth_wall_is_one_specular_collision_for_every_variant() {
             let u = velocity_from_angles(6.0, -12f64.to_radians(), 30f64.to_radians());
             let (want, _) = law.collide(u, Vector3::zeros(), Vector3::y(), D);
             for r in &out {
-                assert!((r.velocity - want).norm() < 1e-12, "{}", kind.name());
+                assert!((r.velocity - want).norm() < 1e-12, "{}", kind);
             }
         }
         // A rough wall with Δγ = 0 given to an isotropic variant: every element is flat.
-        if !kind.anisotropic() {
-            let flat = Variant {
-                kind,
-                delta_gamma: Some(0.0),
-                escape: None,
+        if !variant(kind).anisotropic() {
+            let params = ModelParams {
+                delta_gamma_deg: Some(0.0),
+                ..Default::default()
             };
+            let flat = AnyModel::named(Some(kind), &params).unwrap();
             let out = run(
                 flat,
                 &dev(3.8, 7.5),
@@ -126,8 +131,8 @@ fn smooth_wall_is_one_specular_collision_for_every_variant() {
             );
             for r in &out {
                 let (a, b) = incident_angles(&r.velocity);
-                assert!((a - 12f64.to_radians()).abs() < 1e-12, "{}", kind.name());
-                assert!((b - 30f64.to_radians()).abs() < 1e-12, "{}", kind.name());
+                assert!((a - 12f64.to_radians()).abs() < 1e-12, "{}", kind);
+                assert!((b - 30f64.to_radians()).abs() < 1e-12, "{}", kind);
             }
         }
     }
@@ -135,7 +140,7 @@ fn smooth_wall_is_one_specular_collision_for_every_variant() {
 
 #[test]
 fn elastic_rebounds_keep_the_speed_and_leave_the_wall() {
-    for kind in VariantKind::ALL {
+    for &kind in AnyModel::NAMES {
         for a in [-1.0, -12.5, -60.0] {
             let out = run(
                 variant(kind),
@@ -147,8 +152,8 @@ fn elastic_rebounds_keep_the_speed_and_leave_the_wall() {
                 3,
             );
             for r in &out {
-                assert!((r.velocity.norm() - 6.0).abs() < 1e-9, "{}", kind.name());
-                assert!(r.velocity.y > 0.0 && r.candidates >= 1, "{}", kind.name());
+                assert!((r.velocity.norm() - 6.0).abs() < 1e-9, "{}", kind);
+                assert!(r.velocity.y > 0.0 && r.candidates >= 1, "{}", kind);
             }
         }
     }
@@ -161,8 +166,8 @@ fn mirror_symmetry_beta_to_minus_beta() {
     // handedness: it is the one variant that is not mirror symmetric (below).
     let wall = dev(3.8, 7.5);
     let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
-    for kind in VariantKind::ALL {
-        if kind == VariantKind::NormalPerturbation {
+    for &kind in AnyModel::NAMES {
+        if kind == "normal-perturbation" {
             continue;
         }
         let n = 30_000;
@@ -179,8 +184,8 @@ fn mirror_symmetry_beta_to_minus_beta() {
             .map(|r| -wrap_pi(incident_angles(&r.velocity).1 + 40f64.to_radians()))
             .collect();
         // KS critical value at 0.1 % for two samples of 30 000: 1.95 √(2/n) = 0.016.
-        assert!(ks(&ap, &am) < 0.016, "{}: α⁺ {}", kind.name(), ks(&ap, &am));
-        assert!(ks(&dp, &dm) < 0.016, "{}: Δβ {}", kind.name(), ks(&dp, &dm));
+        assert!(ks(&ap, &am) < 0.016, "{}: α⁺ {}", kind, ks(&ap, &am));
+        assert!(ks(&dp, &dm) < 0.016, "{}: Δβ {}", kind, ks(&dp, &dm));
     }
 }
 
@@ -190,7 +195,7 @@ fn elexi_style_rotation_has_a_handedness() {
     // ELEXI's θ₂, drawn from the shadow-weighted law, is biased positive at grazing
     // incidence, so the normal leans to one side.
     let out = run(
-        variant(VariantKind::NormalPerturbation),
+        variant("normal-perturbation"),
         &dev(5.0, 5.0),
         &CollisionLaw::Elastic,
         -3.0,
@@ -205,7 +210,7 @@ fn elexi_style_rotation_has_a_handedness() {
     let (m, se) = mean_se(&d);
     assert!(m.abs() > 6.0 * se, "mean {m} ± {se}");
     let sh = run(
-        variant(VariantKind::SommerfeldHuber1999),
+        variant("sommerfeld-huber-1999"),
         &dev(5.0, 5.0),
         &CollisionLaw::Elastic,
         -3.0,
@@ -231,28 +236,12 @@ fn each_variant_draws_its_defining_law() {
     let crit = 0.0098;
     // No shadow effect: at steep incidence the first element's γ is the plain Gaussian
     // N(0, Δγ) (gaussian-angle; its clamp at −|α⁻| is 12σ away).
-    let out = run(
-        variant(VariantKind::GaussianAngle),
-        &wall,
-        &law,
-        -60.0,
-        0.0,
-        n,
-        21,
-    );
+    let out = run(variant("gaussian-angle"), &wall, &law, -60.0, 0.0, n, 21);
     let g: Vec<f64> = out.iter().map(|r| r.first.gamma).collect();
     assert!(ks_cdf(&g, |x| phi(x / dg)) < crit);
     assert!(out.iter().all(|r| r.first.gamma_star.abs() < 1e-12));
     // At grazing incidence the clamp puts the elements with γ < α⁻ at exactly α⁻ ...
-    let out = run(
-        variant(VariantKind::GaussianAngle),
-        &wall,
-        &law,
-        -2.0,
-        0.0,
-        n,
-        22,
-    );
+    let out = run(variant("gaussian-angle"), &wall, &law, -2.0, 0.0, n, 22);
     let clamped = out
         .iter()
         .filter(|r| (r.first.gamma + 2f64.to_radians()).abs() < 1e-9)
@@ -262,15 +251,7 @@ fn each_variant_draws_its_defining_law() {
     assert_eq!(clamped, 0.0);
     // LIGGGHTS-PFM: the tilt of the element is half-normal |N(0, Δγ)|, whatever α⁻.
     for a in [-2.0, -45.0] {
-        let out = run(
-            variant(VariantKind::GaussianTilt),
-            &wall,
-            &law,
-            a,
-            30.0,
-            n,
-            23,
-        );
+        let out = run(variant("gaussian-tilt"), &wall, &law, a, 30.0, n, 23);
         let tilt: Vec<f64> = out.iter().map(|r| r.first.normal.y.acos()).collect();
         assert!(
             ks_cdf(&tilt, |x| 2.0 * phi(x / dg) - 1.0) < crit,
@@ -283,7 +264,7 @@ fn each_variant_draws_its_defining_law() {
     // Sommerfeld & Huber: γ follows the shadow law P_eff(γ | α⁻) with Δγ, γ* is N(0, Δγ).
     let a = -3f64.to_radians();
     let out = run(
-        variant(VariantKind::SommerfeldHuber1999),
+        variant("sommerfeld-huber-1999"),
         &wall,
         &law,
         -3.0,
@@ -300,7 +281,7 @@ fn each_variant_draws_its_defining_law() {
     assert!(ks_cdf(&gs, |x| phi(x / dg)) < 0.0138);
     // ELEXI: the tilt in the incident plane follows the same shadow law.
     let out = run(
-        variant(VariantKind::NormalPerturbation),
+        variant("normal-perturbation"),
         &wall,
         &law,
         -3.0,
@@ -325,27 +306,27 @@ fn case_key_selects_the_variant_and_refuses_bad_ones() {
     let base = "name = \"v\"\n[wall]\ndelta_xi_deg = 3.8\ndelta_zeta_deg = 7.5\n\
                 [incidence]\nalpha_deg = [-5.0]\n[particles]\ncount = 2000\n";
     let mut outputs = Vec::new();
-    for kind in VariantKind::ALL {
+    for &kind in AnyModel::NAMES {
         let case = common::write_case(
             tmp.path(),
             "c.toml",
-            &format!("{base}[stochastic]\nmodel = \"{}\"\n", kind.name()),
+            &format!("{base}[stochastic]\nmodel = \"{}\"\n", kind),
         );
-        let out = common::run_case("stochastic", &case, &tmp.path().join(kind.name()), &[]);
+        let out = common::run_case("stochastic", &case, &tmp.path().join(kind), &[]);
         let manifest: toml::Table =
             toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
         let model = manifest["run"].get("model").and_then(|m| m.as_str());
-        if kind == VariantKind::RadenkovicSimonin2021 {
+        if kind == "radenkovic-simonin-2021" {
             assert_eq!(model, None);
         } else {
-            assert_eq!(model, Some(kind.name()));
+            assert_eq!(model, Some(kind));
         }
         outputs.push(std::fs::read(out.join("summary.csv")).unwrap());
     }
     outputs.dedup();
     assert_eq!(
         outputs.len(),
-        VariantKind::ALL.len(),
+        AnyModel::NAMES.len(),
         "variants gave equal outputs"
     );
     for (section, key) in [

@@ -29,8 +29,8 @@ pub struct Scene {
     pub erosion: Option<roughwall::erosion::ErosionModel>,
     /// Particle density (kg/m³): with the diameter, the particle mass.
     pub density_kg_m3: f64,
-    /// The stochastic model's rough-wall variant (`[stochastic] model`).
-    pub variant: roughwall::stochastic::Variant,
+    /// The stochastic rough-wall model (`[stochastic] model`).
+    pub model: roughwall::models::AnyModel,
     /// Incident spin (`[incidence] spin_rad_s`, `spin_std_rad_s`).
     pub spin: roughwall::incidence::SpinLaw,
 }
@@ -270,7 +270,7 @@ impl Case {
             bin_width_deg: bin,
             psi,
             erosion: self.erosion_model()?,
-            variant: self.variant()?,
+            model: self.model()?,
             spin: spin_law(inc)?,
             density_kg_m3: within(
                 "particles.density_kg_m3",

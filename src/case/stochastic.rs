@@ -7,9 +7,9 @@ use super::{Case, Scene, WallSource, Warning};
 use crate::runner::TallyOverrides;
 use roughwall::erosion::ErosionSetup;
 use roughwall::error::{Error, Result};
-use roughwall::stochastic::simulate::{tally_spec, ModelSetup};
-use roughwall::stochastic::variants::{checked_psi, PSI_PAPER};
-use roughwall::stochastic::Variant;
+use roughwall::models::simulate::{tally_spec, ModelSetup};
+use roughwall::models::{AnyModel, ModelParams};
+use roughwall::stochastic::{checked_psi, PSI_PAPER};
 use roughwall::tally::TallySpec;
 use roughwall::wall::Deviations;
 
@@ -65,7 +65,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
         diameter_m: scene.diameter_m,
         speed: scene.speed,
         spin: scene.spin,
-        variant: scene.variant,
+        model: scene.model,
         erosion: scene.erosion.map(|model| ErosionSetup {
             model,
             particle_mass_kg: scene.particle_mass_kg(),
@@ -202,16 +202,17 @@ impl Case {
 
     /// The rough-wall model of `[stochastic] model` and `delta_gamma_deg` (default: the
     /// paper's).
-    pub fn variant(&self) -> Result<Variant> {
+    pub fn model(&self) -> Result<AnyModel> {
         let st = self.stochastic.clone().unwrap_or_default();
-        let variant = Variant::checked(st.model.as_deref(), st.delta_gamma_deg)?;
-        match &st.escape_table {
-            None => Ok(variant),
-            Some(path) => {
-                variant.check_takes_escape_table()?;
-                variant.with_escape_table(read_escape_table(path)?)
-            }
-        }
+        let read_table = || read_escape_table(st.escape_table.as_deref().unwrap_or_default());
+        let params = ModelParams {
+            delta_gamma_deg: st.delta_gamma_deg,
+            escape_table: st
+                .escape_table
+                .as_ref()
+                .map(|_| &read_table as &dyn Fn() -> Result<_>),
+        };
+        AnyModel::named(st.model.as_deref(), &params)
     }
 }
 

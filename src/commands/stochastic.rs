@@ -9,7 +9,7 @@ use crate::commands::{apply_wall_card, context, warn, Summary};
 use crate::output::out_dir::{check_distinct, check_out};
 use crate::writers::stochastic::finish;
 use roughwall::error::Result;
-use roughwall::stochastic::simulate::fill_block;
+use roughwall::models::simulate::fill_block;
 
 /// Runs the subcommand.
 pub fn run(args: &StochasticArgs) -> Result<Summary> {

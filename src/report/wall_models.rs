@@ -9,7 +9,7 @@ use super::paths::{scene_name, COMPARE, STOCHASTIC, WALL_MODELS, WALL_MODELS_SCE
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
 use roughwall::error::Result;
-use roughwall::stochastic::VariantKind;
+use roughwall::models::{AnyModel, RoughWallModel};
 use std::fmt::Write;
 use std::path::Path;
 
@@ -97,9 +97,9 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
         "max_ks_alpha_out_steep",
         "max_abs_bias_mean_alpha_out_steep_deg",
     ]);
-    let mut all: Vec<(&str, VariantKind, Score)> = Vec::new();
+    let mut all: Vec<(&str, AnyModel, Score)> = Vec::new();
     for scene in scene_names() {
-        for v in VariantKind::ALL {
+        for v in all_models() {
             if let Some(s) = score(&dir.join(scene).join(v.name()))? {
                 table.push(vec![
                     scene.into(),
@@ -158,11 +158,11 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
         .copied()
         .filter(|s| all.iter().any(|a| a.0 == *s))
         .collect();
-    let best = |pick: &dyn Fn(&Score) -> f64, v: VariantKind| -> usize {
+    let best = |pick: &dyn Fn(&Score) -> f64, v: AnyModel| -> usize {
         scenes
             .iter()
             .filter(|sc| {
-                let rows: Vec<&(&str, VariantKind, Score)> =
+                let rows: Vec<&(&str, AnyModel, Score)> =
                     all.iter().filter(|a| a.0 == **sc).collect();
                 let min = rows
                     .iter()
@@ -172,8 +172,8 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
             })
             .count()
     };
-    let mut summary: Vec<(VariantKind, f64, f64, f64)> = Vec::new();
-    for v in VariantKind::ALL {
+    let mut summary: Vec<(AnyModel, f64, f64, f64)> = Vec::new();
+    for v in all_models() {
         let rows: Vec<&Score> = all.iter().filter(|a| a.1 == v).map(|a| &a.2).collect();
         if rows.is_empty() {
             continue;
@@ -199,9 +199,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
     }
     md.push('\n');
     if let (Some(paper), Some(best_other)) = (
-        summary
-            .iter()
-            .find(|s| s.0 == VariantKind::RadenkovicSimonin2021),
+        summary.iter().find(|s| s.0.is_paper()),
         summary
             .iter()
             .filter(|s| !s.0.anisotropic())
@@ -227,7 +225,7 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
             best_other.1 / paper.1.max(1e-12),
             best_other.2 / paper.2.max(1e-12),
         );
-        if let Some(cal) = summary.iter().find(|s| s.0 == VariantKind::Calibrated) {
+        if let Some(cal) = summary.iter().find(|s| s.0.name() == "calibrated") {
             let _ = writeln!(
                 md,
                 "`calibrated` (the paper's walls with laws measured on a deterministic run; next \
@@ -243,4 +241,12 @@ pub fn wall_models(results: &Path, md: &mut String) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Every registered rough-wall model with its default parameters, in the list's order.
+fn all_models() -> Vec<AnyModel> {
+    AnyModel::NAMES
+        .iter()
+        .filter_map(|name| AnyModel::with_defaults(name).ok())
+        .collect()
 }

@@ -7,7 +7,8 @@ use crate::figures;
 use crate::output::{prepare_out_dir, Manifest};
 use crate::schema::write_tables;
 use roughwall::error::Result;
-use roughwall::stochastic::simulate::gamma_model_curve;
+use roughwall::models::simulate::gamma_model_curve;
+use roughwall::models::RoughWallModel;
 use roughwall::tally::engine::ConditionStats;
 use roughwall::tally::ConditionTally;
 use std::path::Path;
@@ -91,14 +92,11 @@ pub fn finish(
         toml::Value::Array(figs.into_iter().map(toml::Value::String).collect()),
     );
     manifest.set_run("psi", f(p.scene.psi));
-    if !p.setup.variant.is_paper() {
-        manifest.set_run(
-            "model",
-            toml::Value::String(p.setup.variant.kind.name().into()),
-        );
+    if !p.setup.model.is_paper() {
+        manifest.set_run("model", toml::Value::String(p.setup.model.name().into()));
         manifest.set_run(
             "delta_gamma_deg",
-            f(p.setup.variant.delta_gamma_on(&p.setup.wall).to_degrees()),
+            f(p.setup.model.roughness_angle(&p.setup.wall).to_degrees()),
         );
     }
     super::scene_entries(&mut manifest, &p.scene, p.setup.erosion.as_ref());

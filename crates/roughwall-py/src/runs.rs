@@ -1,6 +1,6 @@
 //! A scene's stochastic and deterministic runs (`rebound stochastic`, `rebound deterministic`)
 //! from keyword parameters: the library's runners (`tally::engine::run` with
-//! `stochastic::simulate::fill_block` or `deterministic::fill_block`) and tallies
+//! `models::simulate::fill_block` or `deterministic::fill_block`) and tallies
 //! (`ConditionTally::result`), returned as arrays instead of CSV files. Case files are the
 //! application's (serde, toml): the Python package takes the scene's values directly, checked
 //! with the ranges and messages of the case keys they stand for.
@@ -16,7 +16,7 @@ use roughwall::deterministic::scene::{
     build_surfaces, realisations, SceneOptions, SurfacePlan, WallDeviations,
 };
 use roughwall::incidence::{IncidentCondition, SpeedLaw, SpinLaw};
-use roughwall::stochastic::simulate;
+use roughwall::models::simulate;
 use roughwall::surface::Triangulation;
 use roughwall::tally::engine::{self, Plan, Silent};
 use roughwall::tally::{ConditionResult, ConditionTally, Estimate};
@@ -288,7 +288,7 @@ pub fn stochastic<'py>(py: Python<'py>, args: SceneArgs<'py>) -> PyResult<Bound<
             diameter_m: scene.diameter_m,
             speed: scene.speed,
             erosion: None,
-            variant: w.variant,
+            model: w.model,
             spin: SpinLaw::default(),
         };
         let specs = scene

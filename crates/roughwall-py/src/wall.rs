@@ -10,6 +10,7 @@ use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use roughwall::collision::CollisionParams;
+use roughwall::models::RoughWallModel;
 use roughwall::wall_model::{Hit, HitOutcome, WallModel, WallParams};
 
 /// An immutable wall: the rough-wall model, its collision law and the seed of every hit's
@@ -227,7 +228,7 @@ impl WallCore {
             m.wall.delta_zeta.to_degrees(),
             m.psi,
             m.seed,
-            m.variant.kind.name(),
+            m.model.name(),
         )
     }
 

@@ -17,12 +17,11 @@ use roughwall::erosion::{finnie::Finnie, ErosionModel, ErosionSetup};
 use roughwall::incidence::IncidentCondition;
 use roughwall::incidence::SpeedLaw;
 use roughwall::incidence::{draw_speed, incident_velocity};
+use roughwall::models::simulate::{fill_block, outcome, tally_spec, ModelSetup};
+use roughwall::models::{rebound_from_observed, AnyModel, RoughWallModel};
 use roughwall::rng;
 use roughwall::stochastic::shadow_effect::ShadowSampler;
-use roughwall::stochastic::simulate::{fill_block, outcome, tally_spec, ModelSetup};
-use roughwall::stochastic::{
-    rebound, rebound_from, Incidence, ModelIncidence, Variant, VariantKind,
-};
+use roughwall::stochastic::{rebound, Contact};
 use roughwall::tally::BlockTally;
 use roughwall::wall::{conditional_gamma_star, delta_gamma, rotated_moments, Deviations};
 use std::time::Instant;
@@ -141,13 +140,9 @@ fn bench_variants(c: &mut Criterion) {
     g.throughput(Throughput::Elements(n));
     g.sample_size(20);
     for s in scenes().iter().take(2) {
-        for kind in VariantKind::ALL {
-            let v = Variant {
-                kind,
-                delta_gamma: None,
-                escape: None,
-            };
-            g.bench_function(format!("{}_{}", s.name, kind.name()), |b| {
+        for name in AnyModel::NAMES {
+            let v = AnyModel::with_defaults(name).expect("a registered model");
+            g.bench_function(format!("{}_{}", s.name, name), |b| {
                 b.iter(|| black_box(tallied_block_with(s, n, None, v)))
             });
         }
@@ -232,7 +227,7 @@ fn tallied_block(s: &Scene, n: u64) -> BlockTally {
 
 /// [`tallied_block`] with an erosion law (or none).
 fn tallied_block_eroding(s: &Scene, n: u64, erosion: Option<ErosionSetup>) -> BlockTally {
-    tallied_block_with(s, n, erosion, Variant::default())
+    tallied_block_with(s, n, erosion, AnyModel::default())
 }
 
 /// [`tallied_block`] with an erosion law (or none) and a rough-wall variant.
@@ -240,7 +235,7 @@ fn tallied_block_with(
     s: &Scene,
     n: u64,
     erosion: Option<ErosionSetup>,
-    variant: Variant,
+    model: AnyModel,
 ) -> BlockTally {
     let setup = ModelSetup {
         wall: s.wall,
@@ -249,7 +244,7 @@ fn tallied_block_with(
         diameter_m: 500e-6,
         speed: s.speed,
         erosion,
-        variant,
+        model,
         spin: Default::default(),
     };
     let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
@@ -264,7 +259,14 @@ fn tallied_block_with(
 fn breakdown(_: &mut Criterion) {
     let s = &scenes()[0];
     let cond = IncidentCondition::from_degrees(s.alpha_deg, s.beta_deg);
-    let inc = ModelIncidence::Paper(Incidence::new(cond.alpha_in, cond.beta_in, &s.wall));
+    let model = AnyModel::PAPER;
+    let inc = model.incidence(cond.alpha_in, cond.beta_in, &s.wall);
+    let contact = Contact {
+        wall: &s.wall,
+        law: &s.law,
+        psi: 2.0,
+        diameter_m: 500e-6,
+    };
     let m = rotated_moments(&s.wall, cond.beta_in);
     let per_unit = incident_velocity(cond.alpha_in, cond.beta_in, 1.0);
     let prefix = rng::StreamPrefix::new(1, &[rng::domain::STOCHASTIC, 0]);
@@ -297,15 +299,14 @@ fn breakdown(_: &mut Criterion) {
     let whole = time(&|i| {
         let mut r = prefix.stream(i);
         let u = per_unit * draw_speed(&s.speed, &mut r);
-        rebound_from(
+        rebound_from_observed(
+            &model,
             &inc,
             u,
             Vector3::zeros(),
-            &s.wall,
-            &s.law,
-            2.0,
-            500e-6,
+            &contact,
             &mut r,
+            |_, _, _| {},
         )
         .velocity
         .y
@@ -313,15 +314,14 @@ fn breakdown(_: &mut Criterion) {
     let angles = time(&|i| {
         let mut r = prefix.stream(i);
         let u = per_unit * draw_speed(&s.speed, &mut r);
-        let out = rebound_from(
+        let out = rebound_from_observed(
+            &model,
             &inc,
             u,
             Vector3::zeros(),
-            &s.wall,
-            &s.law,
-            2.0,
-            500e-6,
+            &contact,
             &mut r,
+            |_, _, _| {},
         );
         let (a, b) = incident_angles(&out.velocity);
         a + b + alpha_xy_of_velocity(&out.velocity)

@@ -319,13 +319,19 @@ pub unsafe extern "C" fn rw_wall_params_default(params: *mut rw_wall_params) -> 
 
 fn wall_params(p: &rw_wall_params) -> Result<WallParams, String> {
     let given = |x: f64| (!x.is_nan()).then_some(x);
-    let variant = usize::try_from(p.model)
+    let model_name = usize::try_from(p.model)
         .ok()
-        .and_then(|i| crate::stochastic::VariantKind::ALL.get(i).copied())
+        .and_then(|i| crate::models::AnyModel::NAMES.get(i).copied())
         .ok_or_else(|| {
+            let names = crate::models::AnyModel::NAMES;
+            let constant =
+                |name: &str| format!("RW_MODEL_{}", name.to_uppercase().replace('-', "_"));
             format!(
-                "invalid `model` = {}: allowed RW_MODEL_RADENKOVIC_SIMONIN_2021 (0) to RW_MODEL_CALIBRATED (5)",
-                p.model
+                "invalid `model` = {}: allowed {} (0) to {} ({})",
+                p.model,
+                constant(names[0]),
+                constant(names[names.len() - 1]),
+                names.len() - 1
             )
         })?;
     let model = match p.law {
@@ -360,7 +366,7 @@ fn wall_params(p: &rw_wall_params) -> Result<WallParams, String> {
         },
         psi: Some(p.psi),
         seed: p.seed,
-        model: Some(variant.name().into()),
+        model: Some(model_name.into()),
         delta_gamma_deg: given(p.delta_gamma_deg),
         escape_table: if p.escape_table_csv.is_null() {
             None
@@ -699,16 +705,20 @@ mod tests {
     #[test]
     fn every_rough_wall_model_is_part_of_the_handle() {
         let mut first = Vec::new();
-        for (i, kind) in crate::stochastic::VariantKind::ALL.iter().enumerate() {
+        use crate::models::RoughWallModel;
+        for (i, name) in crate::models::AnyModel::NAMES.iter().enumerate() {
             let mut p = params();
             p.model = i as i32;
-            if !kind.anisotropic() {
+            if !crate::models::AnyModel::with_defaults(name)
+                .unwrap()
+                .anisotropic()
+            {
                 p.delta_gamma_deg = 4.0;
             }
             let (s, w, msg) = wall(&p);
-            assert_eq!((s, msg.as_str()), (RW_OK, ""), "{}", kind.name());
+            assert_eq!((s, msg.as_str()), (RW_OK, ""), "{name}");
             let handle = unsafe { &*w }.model;
-            assert_eq!(handle.variant.kind, *kind);
+            assert_eq!(handle.model.name(), *name);
             // Twenty hits: two models may agree on one hit (e.g. the paper's and the
             // calibrated one when both accept the first wall element), not on all.
             let bits: Vec<[u64; 3]> = (0..20)

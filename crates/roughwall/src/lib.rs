@@ -21,10 +21,10 @@
 //! | to … | use |
 //! | --- | --- |
 //! | rebound one particle off a wall from a CFD code (any frame, moving wall, keyed stream) | [`wall_model::WallModel`], or [`ffi`] from C and Fortran |
-//! | draw one rebound in the wall's frame | [`stochastic::rebound`] (paper), [`stochastic::rebound_variant`] (any model) |
+//! | draw one rebound in the wall's frame | [`stochastic::rebound`] (paper), [`models::rebound_with`] (any model of [`models`]) |
 //! | generate a rough surface and measure it | [`surface::generate()`], [`surface::stats`] |
 //! | follow particles on a surface | [`deterministic::Tracker`], [`deterministic::run_condition`] |
-//! | run many particles into tallies with standard errors | [`tally::engine::run`] with [`stochastic::simulate::fill_block`] or [`deterministic::fill_block`] |
+//! | run many particles into tallies with standard errors | [`tally::engine::run`] with [`models::simulate::fill_block`] or [`deterministic::fill_block`] |
 //! | the calibrated model and its table | [`calibrated`] |
 //! | erosion at an impact | [`erosion::ErosionModel`] |
 //! | peak elastic force of a sphere or spheroid | [`force::Model::evaluate`] |
@@ -157,6 +157,7 @@ pub mod force;
 pub mod format;
 pub mod incidence;
 pub mod memory;
+pub mod models;
 pub mod rng;
 pub mod stochastic;
 pub mod surface;

@@ -12,9 +12,9 @@
 
 use crate::collision::{CollisionLaw, CollisionParams};
 use crate::error::{Error, Result};
+use crate::models::{rebound_with, AnyModel, ModelParams};
 use crate::rng;
-use crate::stochastic::variants::checked_psi;
-use crate::stochastic::{rebound_variant, Variant};
+use crate::stochastic::{checked_psi, Contact, PSI_PAPER};
 use crate::wall::{checked_deviation, Deviations};
 use nalgebra::Vector3;
 
@@ -31,7 +31,7 @@ pub struct WallParams {
     /// `[collision]`: `model` (`"elastic"`, `"sommerfeld-huber"`), `preset`, parameters.
     pub collision: CollisionParams,
     /// ψ of Eq. (34) (in [0.01, 100],
-    /// [`PSI_RANGE`](crate::stochastic::variants::PSI_RANGE); the paper's 2 when `None`).
+    /// [`PSI_RANGE`](crate::stochastic::PSI_RANGE); the paper's 2 when `None`).
     pub psi: Option<f64>,
     /// Seed of every hit's random stream.
     pub seed: u64,
@@ -54,23 +54,13 @@ pub struct WallModel {
     /// The collision law applied in the frame of each virtual wall element.
     pub law: CollisionLaw,
     /// `ψ` of the single-collision probability `tanh(ψ α⁺/Δγ(β⁺))` (Radenkovic & Simonin
-    /// 2021, Eq. 34), checked against [`PSI_RANGE`](crate::stochastic::variants::PSI_RANGE).
+    /// 2021, Eq. 34), checked against [`PSI_RANGE`](crate::stochastic::PSI_RANGE).
     pub psi: f64,
     /// Seed of every hit's random stream, keyed further by the hit's particle id and
     /// collision index.
     pub seed: u64,
     /// The rough-wall model drawing the virtual walls.
-    pub variant: Variant,
-}
-
-/// `variant` with the escape table given as text (only `calibrated` takes one).
-fn with_escape_table(variant: Variant, table: Option<&str>) -> Result<Variant> {
-    let Some(text) = table else {
-        return Ok(variant);
-    };
-    variant.check_takes_escape_table()?;
-    let table = crate::calibrated::EscapeTable::parse(text, "`stochastic.escape_table`")?;
-    variant.with_escape_table(table.intern()?)
+    pub model: AnyModel,
 }
 
 impl WallModel {
@@ -79,7 +69,7 @@ impl WallModel {
     /// the same checks `rebound` applies to a case file, so the same bad value gives the same
     /// message: first every number must be finite (in the order of the keys' names, as a
     /// case file's are checked), then [`checked_deviation`], [`CollisionParams::law`],
-    /// [`checked_psi`] and [`Variant::checked`]. Returns the handle and the warnings (e.g. a
+    /// [`checked_psi`] and [`AnyModel::named`]. Returns the handle and the warnings (e.g. a
     /// deviation beyond the low-roughness range).
     pub fn new(p: &WallParams) -> Result<(WallModel, Vec<String>)> {
         let c = &p.collision;
@@ -105,14 +95,25 @@ impl WallModel {
             delta_zeta: checked_deviation("wall.delta_zeta_deg", p.delta_zeta_deg, &mut warnings)?,
         };
         let law = c.law()?;
-        let psi = checked_psi(p.psi.unwrap_or(crate::stochastic::variants::PSI_PAPER))?;
-        let variant = Variant::checked(p.model.as_deref(), p.delta_gamma_deg)?;
+        let psi = checked_psi(p.psi.unwrap_or(PSI_PAPER))?;
+        // The escape table is given as text: parsed only once the model has taken the key.
+        let read_table = || {
+            let text = p.escape_table.as_deref().unwrap_or_default();
+            crate::calibrated::EscapeTable::parse(text, "`stochastic.escape_table`")?.intern()
+        };
+        let params = ModelParams {
+            delta_gamma_deg: p.delta_gamma_deg,
+            escape_table: p
+                .escape_table
+                .as_ref()
+                .map(|_| &read_table as &dyn Fn() -> Result<_>),
+        };
         let built = WallModel {
             wall,
             law,
             psi,
             seed: p.seed,
-            variant: with_escape_table(variant, p.escape_table.as_deref())?,
+            model: AnyModel::named(p.model.as_deref(), &params)?,
         };
         Ok((built, warnings.into_iter().map(|w| w.0).collect()))
     }
@@ -178,16 +179,13 @@ impl WallModel {
             self.seed,
             &[rng::domain::WALL_HITS, hit.particle_id, hit.collision_index],
         );
-        let out = rebound_variant(
-            u,
-            w,
-            &self.wall,
-            &self.law,
-            self.psi,
-            hit.diameter_m,
-            self.variant,
-            &mut r,
-        );
+        let contact = Contact {
+            wall: &self.wall,
+            law: &self.law,
+            psi: self.psi,
+            diameter_m: hit.diameter_m,
+        };
+        let out = rebound_with(&self.model, u, w, &contact, &mut r);
         Self::outcome(
             hit,
             scale_pow2(frame.to_global(&out.velocity), k),

@@ -12,5 +12,6 @@ mod c_header;
 mod deterministic_hard;
 mod deterministic_physics;
 mod force_models;
+mod own_model;
 mod stochastic_sampler;
 mod surface_table1;

@@ -11,9 +11,8 @@ use super::slope_space::{
     normal_from_slopes, proposal, reduced_slope, slope_deviations, slopes_from_normal,
 };
 use super::table::{ElementRead, EscapeTable};
-use crate::collision::CollisionLaw;
 use crate::stochastic::shadow_effect::ShadowSampler;
-use crate::stochastic::virtual_wall::{Hits, Rebound, SeenWall};
+use crate::stochastic::virtual_wall::{Contact, Hits, Rebound, SeenWall};
 use crate::wall::{conditional_gamma_star, draw_gamma_star, rotated_moments, Deviations, Moments};
 use nalgebra::Vector3;
 use rand::Rng;
@@ -175,21 +174,19 @@ impl CalibratedIncidence {
 /// trapped rebound and redraw for the same incident particle (Eq. 34, Fig. 13), which makes
 /// every multiple-collision history end like a single collision. Every collision is reported
 /// to `observe` as accepted (each is an impact).
-#[allow(clippy::too_many_arguments)]
 pub fn rebound<R: Rng + ?Sized>(
     inc: &CalibratedIncidence,
     table: &EscapeTable,
     u_in: Vector3<f64>,
     omega_in: Vector3<f64>,
-    wall: &Deviations,
-    law: &CollisionLaw,
-    diameter_m: f64,
+    contact: &Contact,
     rng: &mut R,
     observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
 ) -> Rebound {
+    let wall = contact.wall;
     let hits = Hits {
-        law,
-        diameter_m,
+        law: contact.law,
+        diameter_m: contact.diameter_m,
         rising: true,
     };
     hits.follow(

@@ -8,10 +8,39 @@ use super::slope_space::reduced_slope;
 use super::table::*;
 use super::table_file::*;
 use crate::collision::CollisionLaw;
-use crate::stochastic::{rebound_variant, Variant};
+use crate::stochastic::{Contact, Rebound};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
 use rand::SeedableRng;
+
+/// The calibrated model's rebound of a particle of velocity `u` moving towards the rough
+/// `wall` (no spin, D = 0.1 mm), with `table` (`None`: the built-in one).
+fn calibrated_rebound(
+    table: Option<&'static EscapeTable>,
+    u: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    rng: &mut rand_xoshiro::Xoshiro256PlusPlus,
+) -> Rebound {
+    let contact = Contact {
+        wall,
+        law,
+        psi: 2.0,
+        diameter_m: 1e-4,
+    };
+    let (alpha, beta) = crate::angles::incident_angles(&u);
+    let inc = CalibratedIncidence::new(alpha, beta, wall);
+    let table = table.unwrap_or_else(EscapeTable::builtin);
+    super::model::rebound(
+        &inc,
+        table,
+        u,
+        Vector3::zeros(),
+        &contact,
+        rng,
+        |_, _, _| {},
+    )
+}
 
 fn wall() -> Deviations {
     Deviations {
@@ -146,8 +175,6 @@ fn later_stages_are_binned_by_the_element_just_left() {
 #[test]
 fn the_model_reads_the_first_stage_of_its_roughness_angle() {
     use crate::collision::CollisionLaw;
-    use crate::stochastic::rebound_variant;
-    use crate::stochastic::Variant;
     use rand::SeedableRng;
     let deg = f64::to_radians;
     let table = |trap_roughest: bool| -> &'static EscapeTable {
@@ -177,12 +204,10 @@ fn the_model_reads_the_first_stage_of_its_roughness_angle() {
         let u = crate::angles::velocity_from_angles(1.0, -0.3 * deg(d), 0.0);
         let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(4);
         let n = 20_000;
-        let v = Variant::calibrated(Some(t));
         (0..n)
             .filter(|_| {
                 let law = CollisionLaw::Elastic;
-                rebound_variant(u, Vector3::zeros(), &wall, &law, 2.0, 1e-4, v, &mut rng).candidates
-                    == 1
+                calibrated_rebound(Some(t), u, &wall, &law, &mut rng).candidates == 1
             })
             .count() as f64
             / n as f64
@@ -727,16 +752,7 @@ fn calibrated_rebounds_off_a_wall_without_slope_along_the_path() {
     let law = CollisionLaw::Elastic;
     let mut deflected = 0;
     for _ in 0..2000 {
-        let r = rebound_variant(
-            u,
-            Vector3::zeros(),
-            &wall,
-            &law,
-            2.0,
-            1e-4,
-            Variant::calibrated(None),
-            &mut rng,
-        );
+        let r = calibrated_rebound(None, u, &wall, &law, &mut rng);
         assert!(r.velocity.iter().all(|v| v.is_finite()) && r.velocity.y > 0.0);
         assert!((r.velocity.norm() - 1.0).abs() < 1e-12);
         deflected += (r.velocity.z.abs() > 1e-3) as u32;

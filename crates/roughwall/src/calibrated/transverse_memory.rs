@@ -256,14 +256,18 @@ mod tests {
             for _ in 0..40_000 {
                 hits.clear();
                 let law = CollisionLaw::Elastic;
+                let contact = crate::stochastic::Contact {
+                    wall: &wall,
+                    law: &law,
+                    psi: 2.0,
+                    diameter_m: 1e-4,
+                };
                 rebound(
                     &inc,
                     table,
                     u,
                     Vector3::zeros(),
-                    &wall,
-                    &law,
-                    1e-4,
+                    &contact,
                     &mut rng,
                     |u, n, _| hits.push((*u, *n)),
                 );

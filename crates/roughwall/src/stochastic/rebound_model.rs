@@ -2,20 +2,109 @@
 //! procedure written out in docs/physics.md §3): one rebound of a particle from the
 //! statistical anisotropic rough wall.
 //!
-//! Its entry point, [`super::rebound`] (the dispatcher's paper variant), is what a CFD
-//! (Euler–Lagrange) code calls once per wall collision: it needs only the incident state, the
-//! wall's two deviations, the collision law and a random generator — no surface, no tables.
+//! Its entry point, [`rebound`], is what a CFD (Euler–Lagrange) code calls once per wall
+//! collision: it needs only the incident state, the wall's two deviations, the collision law
+//! and a random generator — no surface, no tables.
 
 use super::shadow_effect::ShadowSampler;
-use super::virtual_wall::{guard_rebound, Rebound, SeenWall, MAX_TRIES};
+use super::virtual_wall::{guard_rebound, trivial, Contact, Rebound, SeenWall, MAX_TRIES};
 use crate::angles::incident_angles;
+use crate::check::within;
 use crate::collision::CollisionLaw;
+use crate::error::Result;
 use crate::wall::{
     delta_gamma_sq_of_direction, draw_gamma_star, rotated_moments, Deviations, Moments,
 };
 use nalgebra::Vector3;
 use rand::Rng;
 use rand_distr::StandardNormal;
+
+/// ψ of Eq. (34): the paper uses 2 (Konan et al. 1.5); below 0.01 almost every candidate
+/// rebound is rejected (hundreds of redraws per rebound), above 100 none is.
+pub const PSI_RANGE: (f64, f64) = (0.01, 100.0);
+
+/// ψ of Eq. (34) when none is given: Radenkovic & Simonin 2021's 2 (Sec. 3.5, Fig. 12;
+/// docs/physics.md §3 step 6).
+pub const PSI_PAPER: f64 = 2.0;
+
+/// ψ of Eq. (34) under the key `stochastic.psi`, checked against [`PSI_RANGE`].
+pub fn checked_psi(psi: f64) -> Result<f64> {
+    let (lo, hi) = PSI_RANGE;
+    within(
+        "stochastic.psi",
+        psi,
+        lo,
+        hi,
+        "",
+        "below, almost every candidate rebound is redrawn; above, none is; the paper uses 2",
+    )
+}
+
+/// One rebound of a particle from the statistical anisotropic rough wall
+/// (Radenkovic & Simonin 2021, Sec. 3.6, Fig. 13; docs/physics.md §3 steps 1–7).
+///
+/// 1. `α⁻, β⁻` of `u_in`, then `Δγ, Δγ*, Cov(γ, γ*)` (Eq. 26).
+/// 2. `γ` from the shadow-effect law `P_eff(γ | α⁻)` (Eqs. 31–33), sampled exactly
+///    ([`ShadowSampler`]).
+/// 3. `γ*` from the conditional normal law given `γ` (Eqs. 29–30).
+/// 4. The unit normal `n` (Eq. 23, exact unit vector); if `U⁻·n ≥ 0`, back to 2.
+/// 5. The collision law in the frame of `n` ([`CollisionLaw::collide`], Eqs. 36–42).
+/// 6. `α⁺`; reject if `α⁺ ≤ 0` or with probability `1 − tanh(ψ α⁺/Δγ(β⁺))`
+///    (Eqs. 34–35) and go back to 2 with the same incident state.
+/// 7. Return `U⁺, ω⁺`.
+///
+/// `psi` is ψ of Eq. (34) (2 in the paper); `diameter_m` the particle diameter (m).
+/// A smooth wall (`Δξ = Δζ = 0`) is one collision with the mean wall, exactly. A
+/// non-positive or non-finite `psi` cannot accept any candidate: the smooth-wall
+/// collision is returned with `tries = MAX_TRIES` (callers validate `psi`).
+///
+/// Precondition: the particle moves towards the wall, `u_in.y < 0`; otherwise the
+/// input is returned unchanged with `tries = 0`. The other rough-wall models are
+/// [`crate::models`].
+///
+/// ```
+/// use nalgebra::Vector3;
+/// use rand::SeedableRng;
+/// use roughwall::collision::{CollisionLaw, ShParams};
+/// use roughwall::stochastic::rebound;
+/// use roughwall::wall::Deviations;
+///
+/// // Glass bead (D = 500 µm) hitting a steel wall at α⁻ = −15°, β⁻ = 60°.
+/// let wall = Deviations { delta_xi: 3.8_f64.to_radians(), delta_zeta: 7.5_f64.to_radians() };
+/// let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
+/// let u_in = roughwall::angles::velocity_from_angles(6.0, (-15f64).to_radians(), 60f64.to_radians());
+/// let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(42);
+/// let out = rebound(u_in, Vector3::zeros(), &wall, &law, 2.0, 500e-6, &mut rng);
+/// assert!(out.velocity.y > 0.0);                      // leaves the wall
+/// assert!(out.velocity.norm() <= u_in.norm() + 1e-12); // no energy gain
+/// assert!(out.tries >= 1);
+/// ```
+pub fn rebound<R: Rng + ?Sized>(
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    wall: &Deviations,
+    law: &CollisionLaw,
+    psi: f64,
+    diameter_m: f64,
+    rng: &mut R,
+) -> Rebound {
+    let contact = Contact {
+        wall,
+        law,
+        psi,
+        diameter_m,
+    };
+    if let Some(done) = trivial(u_in, omega_in, &contact) {
+        return done;
+    }
+    Incidence::of_velocity(&u_in, wall).rebound_observed(
+        u_in,
+        omega_in,
+        &contact,
+        rng,
+        |_, _, _| {},
+    )
+}
 
 /// Step 1 of the procedure and the shadow-effect sampler: everything that depends only on
 /// the incident *direction* `(α⁻, β⁻)` and the wall, not on the speed or the random draws.
@@ -69,19 +158,16 @@ impl Incidence {
     /// cases ruled out by the caller) whose direction this is: candidate walls drawn until
     /// one is accepted, every candidate rebound reported to `observe` (the incident
     /// velocity, the virtual wall's normal, whether it was accepted).
-    #[allow(clippy::too_many_arguments)]
     #[inline]
     pub(crate) fn rebound_observed<R: Rng + ?Sized>(
         &self,
         u_in: Vector3<f64>,
         omega_in: Vector3<f64>,
-        wall: &Deviations,
-        law: &CollisionLaw,
-        psi: f64,
-        diameter_m: f64,
+        c: &Contact,
         rng: &mut R,
         mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
     ) -> Rebound {
+        let (wall, law, psi, diameter_m) = (c.wall, c.law, c.psi, c.diameter_m);
         let mut candidates = 0u32;
         let mut first = SeenWall::FLAT;
         for tries in 1..=MAX_TRIES {

@@ -6,8 +6,31 @@
 use crate::angles::incident_angles;
 use crate::angles::{gamma_from_normal, normal_from_xi_zeta, xi_zeta_of_normal, xi_zeta_rotated};
 use crate::collision::CollisionLaw;
+use crate::wall::Deviations;
 use nalgebra::Vector3;
 use rand::Rng;
+
+/// What stays the same over the rebounds of a run: the wall's deviations, the collision law,
+/// ψ of Eq. (34) and the particle's diameter (the lever arm of its spin). Every rough-wall
+/// model reads its rebound's surroundings from it.
+#[derive(Clone, Copy, Debug)]
+pub struct Contact<'a> {
+    /// Normal-angle deviations `(Δξ, Δζ)` of the statistical wall (rad).
+    pub wall: &'a Deviations,
+    /// The collision law applied in the frame of each virtual wall element.
+    pub law: &'a CollisionLaw,
+    /// ψ of the single-collision probability (Radenkovic & Simonin 2021, Eq. 34).
+    pub psi: f64,
+    /// Particle diameter `D` (m).
+    pub diameter_m: f64,
+}
+
+impl Contact<'_> {
+    /// Whether the wall is smooth (`Δξ = Δζ = 0`): every model collides with the mean wall.
+    pub fn smooth_wall(&self) -> bool {
+        self.wall.delta_xi == 0.0 && self.wall.delta_zeta == 0.0
+    }
+}
 
 /// Upper bound on the candidate walls drawn for one rebound (a guard: the expected
 /// number is ~1–3 for every admissible input).
@@ -134,14 +157,8 @@ impl Rebound {
 /// can accept nothing) gives the collision with the mean wall. These are this project's
 /// rules for the hard cases of docs/physics.md §9, not the paper's (its procedure, §3,
 /// assumes a rough wall and a particle that reaches it).
-pub(crate) fn trivial(
-    u_in: Vector3<f64>,
-    omega_in: Vector3<f64>,
-    smooth_wall: bool,
-    law: &CollisionLaw,
-    psi: f64,
-    diameter_m: f64,
-) -> Option<Rebound> {
+pub(crate) fn trivial(u_in: Vector3<f64>, omega_in: Vector3<f64>, c: &Contact) -> Option<Rebound> {
+    let (smooth_wall, law, psi, diameter_m) = (c.smooth_wall(), c.law, c.psi, c.diameter_m);
     let j = Vector3::new(0.0, 1.0, 0.0);
     let finite = u_in.iter().chain(omega_in.iter()).all(|c| c.is_finite());
     if !finite || u_in.y >= 0.0 {

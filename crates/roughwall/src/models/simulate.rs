@@ -1,22 +1,24 @@
 //! Many rebounds of one incident condition, reproducibly: each rebound from its own random
 //! stream, tallied block by block (`rebound stochastic`, Radenkovic & Simonin 2021, Sec. 4).
 
-use super::shadow_effect;
-use super::variant_rebound::{rebound_from_observed, ModelIncidence};
-use super::variants::Variant;
-use super::virtual_wall::{Rebound, MAX_TRIES};
+use super::rebound::rebound_from_observed;
+use super::registry::AnyModel;
+use super::rough_wall_model::RoughWallModel;
 use crate::angles::{alpha_xy_of_velocity, incident_angles, wrap_pi};
 use crate::collision::CollisionLaw;
 use crate::erosion::ErosionSetup;
 use crate::incidence::{draw_speed, IncidentCondition, SpeedLaw, SpinLaw};
 use crate::rng;
+use crate::stochastic::shadow_effect;
+use crate::stochastic::{Contact, Rebound, MAX_TRIES};
 use crate::tally::{Bin, BlockTally, ErosionOutcome, ModelKind, Outcome, Pdf, Quantity, TallySpec};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
 
-/// The model's parameters for a run.
+/// The model's parameters for a run: any rough-wall model `M`, by default one a case file
+/// names ([`AnyModel`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ModelSetup {
+pub struct ModelSetup<M = AnyModel> {
     /// Normal-angle deviations `(Δξ, Δζ)` of the statistical wall (radians).
     pub wall: Deviations,
     /// The collision law applied in the frame of each sampled normal (ideal elastic or
@@ -34,7 +36,7 @@ pub struct ModelSetup {
     /// The erosion law, when the case tallies erosion.
     pub erosion: Option<ErosionSetup>,
     /// The rough-wall model (`[stochastic] model`; default Radenkovic & Simonin 2021).
-    pub variant: Variant,
+    pub model: M,
     /// Incident spin (default zero).
     pub spin: SpinLaw,
 }
@@ -66,15 +68,17 @@ pub fn outcome(r: &Rebound, u_in: &Vector3<f64>, beta_in: f64) -> Outcome {
 /// from its own stream `rng::stream(seed, &[STOCHASTIC, cond_index, i])`, so it does not
 /// depend on which thread or shard runs it. Incident spin is zero (Radenkovic & Simonin
 /// 2021, Sec. 4). Returns the incident velocity and the rebound.
-pub fn rebound_of(
-    setup: &ModelSetup,
+pub fn rebound_of<M: RoughWallModel>(
+    setup: &ModelSetup<M>,
     cond: &IncidentCondition,
     cond_index: u64,
     i: u64,
     seed: u64,
 ) -> (Vector3<f64>, Rebound) {
     let per_unit = setup.speed.velocity(cond.alpha_in, cond.beta_in, 1.0);
-    let inc = ModelIncidence::new(cond.alpha_in, cond.beta_in, &setup.wall, setup.variant);
+    let inc = setup
+        .model
+        .incidence(cond.alpha_in, cond.beta_in, &setup.wall);
     rebound_at(setup, &inc, &per_unit, &stream_prefix(seed, cond_index), i)
 }
 
@@ -84,12 +88,12 @@ fn stream_prefix(seed: u64, cond_index: u64) -> rng::StreamPrefix {
 }
 
 /// [`rebound_of`] with what a condition shares computed once: the incident direction's
-/// [`ModelIncidence`] (the condition's exact angles), the velocity per unit horizontal speed and
+/// incidence (the condition's exact angles), the velocity per unit horizontal speed and
 /// the stream prefix.
 #[inline]
-fn rebound_at(
-    setup: &ModelSetup,
-    inc: &ModelIncidence,
+fn rebound_at<M: RoughWallModel>(
+    setup: &ModelSetup<M>,
+    inc: &M::Incidence,
     per_unit: &Vector3<f64>,
     prefix: &rng::StreamPrefix,
     i: u64,
@@ -100,9 +104,9 @@ fn rebound_at(
 /// [`rebound_at`] reporting every candidate rebound to `observe`: the incident velocity,
 /// the virtual wall's normal and whether the rebound was accepted.
 #[inline]
-fn rebound_observed(
-    setup: &ModelSetup,
-    inc: &ModelIncidence,
+fn rebound_observed<M: RoughWallModel>(
+    setup: &ModelSetup<M>,
+    inc: &M::Incidence,
     per_unit: &Vector3<f64>,
     prefix: &rng::StreamPrefix,
     i: u64,
@@ -111,14 +115,18 @@ fn rebound_observed(
     let mut r = prefix.stream(i);
     let u = per_unit * draw_speed(&setup.speed, &mut r);
     let w = setup.spin.draw(&mut r);
+    let contact = Contact {
+        wall: &setup.wall,
+        law: &setup.law,
+        psi: setup.psi,
+        diameter_m: setup.diameter_m,
+    };
     let reb = rebound_from_observed(
+        &setup.model,
         inc,
         u,
         w,
-        &setup.wall,
-        &setup.law,
-        setup.psi,
-        setup.diameter_m,
+        &contact,
         &mut r,
         |u_hit, n, accepted| observe(u_hit, n, accepted),
     );
@@ -126,8 +134,8 @@ fn rebound_observed(
 }
 
 /// Tallies rebounds `start..end` of a condition into `block`, in particle order.
-pub fn fill_block(
-    setup: &ModelSetup,
+pub fn fill_block<M: RoughWallModel>(
+    setup: &ModelSetup<M>,
     cond: &IncidentCondition,
     cond_index: u64,
     seed: u64,
@@ -135,7 +143,9 @@ pub fn fill_block(
     block: &mut BlockTally,
 ) {
     let per_unit = setup.speed.velocity(cond.alpha_in, cond.beta_in, 1.0);
-    let inc = ModelIncidence::new(cond.alpha_in, cond.beta_in, &setup.wall, setup.variant);
+    let inc = setup
+        .model
+        .incidence(cond.alpha_in, cond.beta_in, &setup.wall);
     let prefix = stream_prefix(seed, cond_index);
     if let Some(erosion) = &setup.erosion {
         for i in start..end {

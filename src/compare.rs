@@ -13,9 +13,9 @@
 
 use crate::output::{fmt_num, fmt_opt, CsvTable};
 use crate::schema::{read_run as read_tables, ConditionKey, RunTables};
-use roughwall::error::Result;
-use roughwall::tally::distance::{distances, BinnedPdf};
 use roughwall::tally::Quantity;
+use roughwall::tally::{distances, BinnedPdf};
+use roughwall::Result;
 use std::collections::BTreeMap;
 use std::path::Path;
 

@@ -8,12 +8,12 @@
 //! (floats as exact bit patterns). Its last line is a SHA-256 of everything before it, so
 //! a truncated or altered file is refused rather than merged.
 
-use roughwall::error::{Error, Result};
-use roughwall::tally::condition::{
+use roughwall::tally::Moments;
+use roughwall::tally::{
     BlockRecord, ConditionTally, Counters, RealisationCounts, TallySpec, LOST_REASONS, NM,
 };
-use roughwall::tally::engine::{Shard, BLOCK_SIZE};
-use roughwall::tally::moments::Moments;
+use roughwall::tally::{Shard, BLOCK_SIZE};
+use roughwall::{Error, Result};
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 use std::path::Path;
@@ -187,7 +187,7 @@ impl Partial {
             .map(|t| {
                 let p = t.parts();
                 let c: &Counters = p.counters;
-                let curve = |r: &roughwall::tally::histogram::RatioCurve| {
+                let curve = |r: &roughwall::tally::RatioCurve| {
                     let (total, hits, model) = r.parts();
                     CurveFile {
                         total: total.iter().map(|&x| int(x)).collect(),
@@ -374,7 +374,7 @@ impl PartialFile {
                         return Err(bad("histogram does not fit the case's bins"));
                     }
                 }
-                let curves: Vec<&mut roughwall::tally::histogram::RatioCurve> =
+                let curves: Vec<&mut roughwall::tally::RatioCurve> =
                     p.p_out.into_iter().chain(p.p_first).collect();
                 if curves.len() != c.curves.len() {
                     return Err(bad("malformed curves"));

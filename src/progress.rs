@@ -181,7 +181,7 @@ impl Progress {
     }
 }
 
-impl roughwall::tally::engine::Progress for Progress {
+impl roughwall::tally::Progress for Progress {
     fn advance(&self, n: u64) {
         Progress::advance(self, n)
     }

@@ -4,7 +4,7 @@
 
 use crate::case::{self, Case, DEFAULT_SEED};
 use crate::output::Manifest;
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::path::{Path, PathBuf};
 
 /// A run's case, seed and output folder.

@@ -7,9 +7,9 @@
 
 use crate::partial::{Partial, PartialFile, RunIdentity, PARTIAL_FILE};
 use crate::progress::Progress;
-use roughwall::error::{Error, Result};
-use roughwall::tally::engine::{self, ConditionStats};
+use roughwall::tally::{self, ConditionStats};
 use roughwall::tally::{BlockTally, ConditionTally, Plan, Shard, TallySpec};
+use roughwall::{Error, Result};
 use sha2::Digest;
 use std::path::{Path, PathBuf};
 
@@ -115,7 +115,7 @@ where
     F: Fn(usize, u64, u64, &mut BlockTally) + Sync,
 {
     let progress = Progress::particles(plan.planned_particles(), label);
-    let out = engine::run(plan, &progress, fill);
+    let out = tally::run(plan, &progress, fill);
     progress.finish();
     out
 }

@@ -3,11 +3,12 @@
 //! lay, cropped and mirror-tiled into a periodic wall (`roughwall::surface::scan`), with what
 //! was done recorded in `run.toml` (`[scan]`).
 
-use roughwall::error::{Error, Result};
-use roughwall::surface::heights_io::MAGIC;
-use roughwall::surface::scan::{characterise, periodic::mirrored_wall, ScanField};
-use roughwall::surface::HeightField;
-use roughwall::warning::Warning;
+use roughwall::scan::{characterise, mirrored_wall};
+use roughwall::surface::MAGIC;
+use roughwall::HeightField;
+use roughwall::ScanField;
+use roughwall::Warning;
+use roughwall::{Error, Result};
 use std::io::Read;
 use std::path::Path;
 

@@ -8,9 +8,9 @@
 
 use crate::output::csv::{CsvTable, Rows};
 use crate::output::{fmt_num, fmt_sci};
-use roughwall::error::{Error, Result};
 use roughwall::incidence::fmt_key;
 use roughwall::tally::{ConditionResult, Estimate, Quantity};
+use roughwall::{Error, Result};
 use std::collections::BTreeMap;
 use std::path::Path;
 

@@ -9,7 +9,7 @@
 
 use crate::common::c_examples::{glass_steel, key_hit, run_program as run};
 use crate::common::*;
-use roughwall::tally::histogram::Histogram;
+use roughwall::tally::Histogram;
 
 #[test]
 fn the_c_example_gives_the_rust_rebounds_and_the_stochastic_statistics() {

@@ -66,8 +66,8 @@ fn the_table_reads_back_equal_to_its_source_run() {
         single += s.num(row, "p_single") * n;
     }
     // The first stages lead the table.
-    use roughwall::calibrated::constants::X_OUT_BINS;
-    use roughwall::calibrated::grid::{FIRST_STAGES, X_IN_BINS};
+    use roughwall::calibrated::X_OUT_BINS;
+    use roughwall::calibrated::{FIRST_STAGES, X_IN_BINS};
     let first_cells = FIRST_STAGES * X_IN_BINS * X_OUT_BINS;
     let first: u64 = counts.collisions[..first_cells].iter().sum();
     let first_escaped: u64 = counts.escaped[..first_cells].iter().sum();
@@ -222,11 +222,13 @@ fn calibrated_transverse_slope_follows_eq30_in_slopes() {
     use nalgebra::Vector3;
     use rand::SeedableRng;
     use roughwall::angles::velocity_from_angles;
-    use roughwall::calibrated::slope_space::{slope_deviations, slopes_from_normal};
-    use roughwall::collision::CollisionLaw;
-    use roughwall::models::{rebound_with, AnyModel};
+    use roughwall::calibrated::{slope_deviations, slopes_from_normal};
+    use roughwall::models::rebound_with;
     use roughwall::stochastic::Contact;
-    use roughwall::wall::{conditional_gamma_star, rotated_moments, Deviations};
+    use roughwall::wall::{conditional_gamma_star, rotated_moments};
+    use roughwall::AnyModel;
+    use roughwall::CollisionLaw;
+    use roughwall::Deviations;
     let wall = Deviations {
         delta_xi: 6f64.to_radians(),
         delta_zeta: 12f64.to_radians(),

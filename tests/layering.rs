@@ -94,14 +94,23 @@ fn files_import_each_other_without_cycles() {
 const LIBRARY_LAYERS: [&[&str]; 7] = [
     // Foundations: errors, checks, number formats, memory budgets, random streams, angles.
     &[
-        "angles", "check", "error", "format", "memory", "rng", "warning",
+        "angles",
+        "check",
+        "error",
+        "format",
+        "memory",
+        "parameters",
+        "rng",
+        "warning",
     ],
-    // The wall, the collision laws, incident particles, erosion, force, surfaces, tallies.
+    // The wall, the collision laws, incident particles, erosion, force, surfaces, scans,
+    // tallies.
     &[
         "collision",
         "erosion",
         "force",
         "incidence",
+        "scan",
         "surface",
         "tally",
         "wall",

@@ -5,7 +5,8 @@
 //! thread count.
 
 use crate::common::*;
-use roughwall::surface::scan::{characterise, ScanField};
+use roughwall::scan::characterise;
+use roughwall::ScanField;
 use std::path::{Path, PathBuf};
 
 /// The files every run with a lay writes (with diameters, also `wall_card_diameters.csv`).
@@ -38,7 +39,7 @@ fn real_scan(name: &str) -> PathBuf {
 }
 
 /// What the library measures on a scan file, levelled by a plane.
-fn library(path: &Path) -> roughwall::surface::scan::Characterisation {
+fn library(path: &Path) -> roughwall::scan::Characterisation {
     let t = topography::read(path).unwrap();
     let f = ScanField::new(t.nx, t.ny, t.dx_m, t.dy_m, t.heights_m).unwrap();
     characterise(f, 1).unwrap()
@@ -209,7 +210,7 @@ fn a_scan_with_missing_points_gives_the_same_bytes_for_any_thread_count() {
 }
 
 /// The shipped cases of two real scans: Sq, Sdq, the deviations and the lay are what
-/// `roughwall::surface::scan::characterise` gives for the same file, to the 7 digits of the
+/// `roughwall::scan::characterise` gives for the same file, to the 7 digits of the
 /// CSV; the card's [wall] pastes into a stochastic case, which then runs on those deviations.
 #[test]
 fn a_real_scan_gives_what_the_library_measures_and_its_card_pastes_into_a_case() {
@@ -413,8 +414,7 @@ fn diameters_give_the_librarys_rows_falling_with_the_diameter_for_any_thread_cou
     assert_eq!(c.header.join(","), headers::WALL_CARD_DIAMETERS);
     assert_eq!(c.rows.len(), 4);
     let lib = library(&file);
-    let want =
-        roughwall::surface::scan::resolution::seen_by(&lib, &[5e-6, 50e-6, 1000e-6]).unwrap();
+    let want = roughwall::scan::seen_by(&lib, &[5e-6, 50e-6, 1000e-6]).unwrap();
     let mut last = [f64::INFINITY; 2];
     for (k, w) in want.iter().enumerate() {
         let row = c.row(k);

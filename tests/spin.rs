@@ -9,9 +9,9 @@ use nalgebra::Vector3;
 use rand::SeedableRng;
 use rand_xoshiro::Xoshiro256PlusPlus;
 use roughwall::angles::{incident_angles, velocity_from_angles, wrap_pi};
-use roughwall::collision::{CollisionLaw, ShParams};
 use roughwall::stochastic::rebound as sm_rebound;
-use roughwall::wall::Deviations;
+use roughwall::Deviations;
+use roughwall::{CollisionLaw, ShParams};
 
 const D: f64 = 500e-6;
 

@@ -5,9 +5,10 @@ use nalgebra::Vector3;
 use rand::SeedableRng;
 use rand_xoshiro::Xoshiro256PlusPlus;
 use roughwall::angles::{incident_angles, velocity_from_angles, wrap_pi};
-use roughwall::collision::{CollisionLaw, ShParams};
 use roughwall::stochastic::{rebound, Rebound, MAX_TRIES};
-use roughwall::wall::{rotated_moments, Deviations};
+use roughwall::wall::rotated_moments;
+use roughwall::Deviations;
+use roughwall::{CollisionLaw, ShParams};
 
 const D: f64 = 500e-6;
 
@@ -290,7 +291,7 @@ fn hard_cases_give_finite_rebounds_quickly() {
 fn first_wall_seen_follows_the_shadow_effect_law() {
     // Figs. 10: γ of the first wall seen follows P_eff(γ | α⁻) (Eqs. 31–33); the exact 3-D
     // visibility test U⁻·n < 0 (step 4) removes almost nothing beyond it.
-    use roughwall::stochastic::shadow_effect::bin_probability;
+    use roughwall::stochastic::bin_probability;
     for (wall, a, b) in [(dev(2.5, 7.5), -2.5, 0.0), (dev(3.8, 7.5), -5.0, 60.0)] {
         let out = run(&wall, &sh(), a, b, 40_000);
         let dg = rotated_moments(&wall, f64::to_radians(b)).var_a.sqrt();

@@ -8,11 +8,12 @@ use nalgebra::Vector3;
 use rand::SeedableRng;
 use rand_xoshiro::Xoshiro256PlusPlus;
 use roughwall::angles::{incident_angles, velocity_from_angles, wrap_pi};
-use roughwall::collision::{CollisionLaw, ShParams};
-use roughwall::models::{rebound_with, AnyModel, ModelParams, RoughWallModel};
-use roughwall::stochastic::shadow_effect::ShadowSampler;
+use roughwall::models::rebound_with;
+use roughwall::stochastic::ShadowSampler;
 use roughwall::stochastic::{Contact, Rebound};
-use roughwall::wall::Deviations;
+use roughwall::Deviations;
+use roughwall::{AnyModel, ModelParams, RoughWallModel};
+use roughwall::{CollisionLaw, ShParams};
 
 const D: f64 = 500e-6;
 

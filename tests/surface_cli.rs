@@ -1,6 +1,6 @@
 //! `rebound surface` end to end: outputs, reproducibility, special walls, bad input.
 use crate::common::*;
-use roughwall::surface::heights_io::read_heights;
+use roughwall::surface::read_heights;
 use std::path::Path;
 
 const SMALL: &str = r#"

@@ -3,8 +3,8 @@
 //! [`CollisionParams::law`], which the C library's wall handle calls too.
 
 use super::schema::*;
-use roughwall::collision::{CollisionLaw, CollisionParams};
-use roughwall::error::Result;
+use roughwall::Result;
+use roughwall::{CollisionLaw, CollisionParams};
 
 impl Case {
     /// The collision law of `[collision]` (default: ideally elastic).

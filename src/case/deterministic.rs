@@ -4,13 +4,14 @@
 
 use super::{Case, Scene, WallSource};
 use crate::runner::TallyOverrides;
-use roughwall::check::{check_int_range, check_range, check_value, Warning};
-use roughwall::deterministic::scene::{SceneOptions, SurfacePlan, WallDeviations};
+use roughwall::check::{check_int_range, check_range, check_value};
 use roughwall::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
-use roughwall::erosion::ErosionSetup;
-use roughwall::error::{Error, Result};
-use roughwall::surface::Triangulation;
+use roughwall::deterministic::{SceneOptions, SurfacePlan, WallDeviations};
 use roughwall::tally::TallySpec;
+use roughwall::ErosionSetup;
+use roughwall::Triangulation;
+use roughwall::Warning;
+use roughwall::{Error, Result};
 use std::path::Path;
 
 /// Flattest incident angle the tracker is asked to follow (degrees): a descent from the top
@@ -264,7 +265,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use roughwall::collision::CollisionLaw;
+    use roughwall::CollisionLaw;
 
     /// The shipped case `configs/cases/<name>.toml`.
     fn shipped(name: &str) -> Case {
@@ -275,7 +276,7 @@ mod tests {
 
     #[test]
     fn shipped_cases_resolve() {
-        use roughwall::deterministic::scene::SurfacePlan;
+        use roughwall::deterministic::SurfacePlan;
         for name in [
             "aniso",
             "aniso-rev",

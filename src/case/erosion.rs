@@ -4,11 +4,11 @@
 
 use super::schema::{Case, ErosionSection};
 use roughwall::check::within;
-use roughwall::erosion::dnv::{AngleDependency, Dnv};
-use roughwall::erosion::finnie::Finnie;
-use roughwall::erosion::oka::OkaInput;
-use roughwall::erosion::ErosionModel;
-use roughwall::error::{Error, Result};
+use roughwall::erosion::Finnie;
+use roughwall::erosion::OkaInput;
+use roughwall::erosion::{AngleDependency, Dnv};
+use roughwall::ErosionModel;
+use roughwall::{Error, Result};
 
 /// Finnie's `K` and `ψ` (dimensionless ratios): OpenFOAM's default for both is 2.
 const FINNIE_RATIO_RANGE: (f64, f64) = (1e-3, 1e3);
@@ -241,7 +241,7 @@ impl Case {
 mod tests {
     use crate::case::parse;
 
-    fn model(text: &str) -> roughwall::error::Result<Option<roughwall::erosion::ErosionModel>> {
+    fn model(text: &str) -> roughwall::Result<Option<roughwall::ErosionModel>> {
         parse(&format!("name = \"t\"\n{text}"), "t.toml")
             .unwrap()
             .erosion_model()
@@ -308,7 +308,7 @@ mod tests {
 
     #[test]
     fn defaults_are_openfoams_and_rp_o501s() {
-        use roughwall::erosion::ErosionModel::*;
+        use roughwall::ErosionModel::*;
         match model("[erosion]\nmodel = \"finnie\"\nflow_stress_pa = 1e9").unwrap() {
             Some(Finnie(f)) => assert_eq!((f.psi, f.k), (2.0, 2.0)),
             m => panic!("{m:?}"),

@@ -2,9 +2,9 @@
 //! `[sweep]`).
 
 use super::{Case, ParticleSection, SweepSection};
-use roughwall::error::{Error, Result};
-use roughwall::force::sweep::Sweep;
+use roughwall::force::Sweep;
 use roughwall::force::{material, Model, Particle};
+use roughwall::{Error, Result};
 
 /// Fig. 6 values used for any `[particle]` property a case leaves out (no preset).
 const FIG6: Particle = Particle {

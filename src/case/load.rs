@@ -1,7 +1,7 @@
 //! Finding, reading and parsing a case file, with one-line errors that name the key.
 
 use super::schema::Case;
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::path::{Path, PathBuf};
 
 /// Largest case file read (bytes): far above any real case, far below what would strain the
@@ -177,7 +177,7 @@ mod tests {
 
     #[test]
     fn a_non_finite_number_is_the_same_message_from_a_file_and_from_the_wall_model() {
-        use roughwall::wall_model::{WallModel, WallParams};
+        use roughwall::{WallModel, WallParams};
         for (text, value) in [
             ("nan", f64::NAN),
             ("inf", f64::INFINITY),

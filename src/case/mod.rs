@@ -23,7 +23,7 @@ pub mod wall;
 pub mod wall_card;
 
 pub use load::{load_text, parse, DEFAULT_SEED};
-pub use roughwall::warning::Warning;
+pub use roughwall::Warning;
 pub use scene::Scene;
 pub use schema::*;
 pub use wall::WallSource;

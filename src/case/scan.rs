@@ -4,13 +4,12 @@
 
 use super::wall::{DIAMETER_RANGE_UM, MAX_DIAMETERS};
 use super::{Case, WallSource};
-use roughwall::check::{
-    check_int_range, check_length, check_value, not_a_regular_file, within, Warning,
-};
-use roughwall::deterministic::scene::{SceneOptions, SurfacePlan};
-use roughwall::error::{Error, Result};
-use roughwall::surface::scan::levelling::MAX_DEGREE;
-use roughwall::surface::scan::ScanField;
+use roughwall::check::{check_int_range, check_length, check_value, not_a_regular_file, within};
+use roughwall::deterministic::{SceneOptions, SurfacePlan};
+use roughwall::scan::MAX_DEGREE;
+use roughwall::ScanField;
+use roughwall::Warning;
+use roughwall::{Error, Result};
 use std::path::{Path, PathBuf};
 use topography::{ErrorKind, Format};
 
@@ -407,7 +406,7 @@ pub fn generated_scan(plan: &SurfacePlan, seed: u64) -> Result<ReadScan> {
 /// Bytes the characterisation of a generated `plan` needs: the generation's (the heights are
 /// levelled in place).
 pub fn generated_bytes(plan: &SurfacePlan) -> u64 {
-    roughwall::surface::generate::generation_bytes(plan.spec())
+    roughwall::surface::generation_bytes(plan.spec())
 }
 
 #[cfg(test)]

@@ -3,10 +3,12 @@
 
 use super::schema::*;
 use super::wall::{WallSource, DIAMETER_RANGE_UM, MAX_DEVIATION_DEG};
-use roughwall::check::{check_int_range, check_length, check_range, check_value, within, Warning};
-use roughwall::collision::CollisionLaw;
-use roughwall::error::{Error, Result};
-pub use roughwall::incidence::{IncidentCondition, SpeedLaw, SpeedReference};
+use roughwall::check::{check_int_range, check_length, check_range, check_value, within};
+pub use roughwall::incidence::SpeedReference;
+use roughwall::CollisionLaw;
+use roughwall::Warning;
+use roughwall::{Error, Result};
+pub use roughwall::{IncidentCondition, SpeedLaw};
 
 /// Everything `deterministic` and `stochastic` share: one scene, two models.
 #[derive(Clone, Debug, PartialEq)]
@@ -26,13 +28,13 @@ pub struct Scene {
     pub bin_width_deg: f64,
     pub psi: f64,
     /// The erosion law of `[erosion]` (none: nothing is computed).
-    pub erosion: Option<roughwall::erosion::ErosionModel>,
+    pub erosion: Option<roughwall::ErosionModel>,
     /// Particle density (kg/m³): with the diameter, the particle mass.
     pub density_kg_m3: f64,
     /// The stochastic rough-wall model (`[stochastic] model`).
-    pub model: roughwall::models::AnyModel,
+    pub model: roughwall::AnyModel,
     /// Incident spin (`[incidence] spin_rad_s`, `spin_std_rad_s`).
-    pub spin: roughwall::incidence::SpinLaw,
+    pub spin: roughwall::SpinLaw,
 }
 
 impl Scene {
@@ -291,7 +293,7 @@ pub const MAX_SPIN_RAD_S: f64 = 1e7;
 
 /// `[incidence] spin_rad_s`, `spin_std_rad_s`: three components each, finite, within
 /// `±MAX_SPIN_RAD_S` (standard deviations `≥ 0`).
-fn spin_law(inc: &IncidenceSection) -> Result<roughwall::incidence::SpinLaw> {
+fn spin_law(inc: &IncidenceSection) -> Result<roughwall::SpinLaw> {
     let three = |key: &str, v: &Option<Vec<f64>>, std: bool| -> Result<[f64; 3]> {
         let Some(v) = v else {
             return Ok([0.0; 3]);
@@ -310,7 +312,7 @@ fn spin_law(inc: &IncidenceSection) -> Result<roughwall::incidence::SpinLaw> {
         }
         Ok(out)
     };
-    Ok(roughwall::incidence::SpinLaw {
+    Ok(roughwall::SpinLaw {
         mean_rad_s: three("incidence.spin_rad_s", &inc.spin_rad_s, false)?,
         std_rad_s: three("incidence.spin_std_rad_s", &inc.spin_std_rad_s, true)?,
     })

@@ -5,13 +5,13 @@
 
 use super::{Case, Scene, WallSource, Warning};
 use crate::runner::TallyOverrides;
-use roughwall::erosion::ErosionSetup;
-use roughwall::error::{Error, Result};
-use roughwall::models::simulate::{tally_spec, ModelSetup};
-use roughwall::models::{AnyModel, ModelParams};
+use roughwall::models::{tally_spec, ModelSetup};
 use roughwall::stochastic::{checked_psi, PSI_PAPER};
 use roughwall::tally::TallySpec;
-use roughwall::wall::Deviations;
+use roughwall::Deviations;
+use roughwall::ErosionSetup;
+use roughwall::{AnyModel, ModelParams};
+use roughwall::{Error, Result};
 
 /// What a stochastic run resolves from its case before any rebound is drawn.
 pub struct Prepared {
@@ -143,18 +143,14 @@ fn effective_wall(
     };
     // Over the realisations `deterministic` bounces on (`[deterministic] surfaces`), one
     // at a time.
-    use roughwall::deterministic::scene::{generate_surface, realisation_seed};
-    use roughwall::surface::stats::AngleSums;
+    use roughwall::deterministic::{generate_surface, realisation_seed};
+    use roughwall::surface::AngleSums;
     let n = det.options.surfaces;
     let (mut nominal, mut eff, mut contact) = (AngleSums::default(), AngleSums::default(), 0.0);
     for r in 0..n {
         let field = generate_surface(plan, realisation_seed(seed, r), det.options.triangulation)?;
         nominal.add(&field);
-        let dil = roughwall::surface::dilation::sphere_centre_surface(
-            &field,
-            diameter,
-            &format!("`{key}`"),
-        )?;
+        let dil = roughwall::surface::sphere_centre_surface(&field, diameter, &format!("`{key}`"))?;
         eff.add(&dil.field);
         contact += dil.contact_fraction;
     }

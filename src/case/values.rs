@@ -2,7 +2,7 @@
 
 use super::schema::*;
 use roughwall::check::check_length;
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 
 impl Values {
     /// The values, checked finite; `key` names them in errors. Ranges hold at most 1e6 points.

@@ -2,10 +2,12 @@
 //! and the statistics `rebound surface` measures on it (Radenkovic & Simonin 2021, Sec. 2).
 
 use super::schema::*;
-use roughwall::check::{check_int_range, check_length, within, Warning};
-use roughwall::error::{Error, Result};
-pub use roughwall::surface::SurfaceSpec;
-use roughwall::wall::{self, Deviations};
+use roughwall::check::{check_int_range, check_length, within};
+use roughwall::wall;
+use roughwall::Deviations;
+pub use roughwall::SurfaceSpec;
+use roughwall::Warning;
+use roughwall::{Error, Result};
 
 pub use roughwall::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 /// Steepest rms slope (degrees) a generated surface may have.
@@ -259,7 +261,7 @@ impl Case {
         roughwall::memory::require(
             &format!("{sec}.nodes"),
             nodes,
-            roughwall::surface::generate::generation_bytes(&spec),
+            roughwall::surface::generation_bytes(&spec),
             &format!("a {nodes} × {nodes} surface"),
         )?;
         Ok(spec)

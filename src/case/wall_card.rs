@@ -18,8 +18,9 @@
 use super::scene::DEFAULT_DIAMETER_UM;
 use super::schema::{Case, WallSpec};
 use crate::output::{fmt_num, sha256_hex};
-use roughwall::check::{not_a_regular_file, Warning};
-use roughwall::error::{Error, Result};
+use roughwall::check::not_a_regular_file;
+use roughwall::Warning;
+use roughwall::{Error, Result};
 use std::path::Path;
 
 /// Largest card read (bytes): a card with 64 diameters is about 20 kB.

@@ -9,10 +9,10 @@ use crate::output::write_atomic;
 use crate::runner::TallyOverrides;
 use roughwall::calibrated::escape_counts;
 use roughwall::calibrated::EscapeTable;
-use roughwall::deterministic::scene::{build_surfaces, realisations};
-use roughwall::error::{Error, Result};
-use roughwall::surface::stats::pooled_deviations;
-use roughwall::surface::HeightField;
+use roughwall::deterministic::{build_surfaces, realisations};
+use roughwall::surface::pooled_deviations;
+use roughwall::HeightField;
+use roughwall::{Error, Result};
 
 /// Runs the subcommand.
 pub fn run(args: &CalibrateArgs) -> Result<Summary> {
@@ -125,8 +125,8 @@ mod tests {
     use crate::case::deterministic::prepare;
     use roughwall::calibrated::escape_counts;
     use roughwall::calibrated::EscapeTable;
-    use roughwall::deterministic::scene::generate_surface;
-    use roughwall::deterministic::Tracker;
+    use roughwall::deterministic::generate_surface;
+    use roughwall::Tracker;
 
     const CASE: &str =
         "name = \"cal\"\nseed = 7\n[wall]\ndelta_xi_deg = 3.0\ndelta_zeta_deg = 6.0\n\
@@ -161,7 +161,7 @@ mod tests {
             generate_surface(p.surface.as_ref().unwrap(), 7, p.options.triangulation).unwrap();
         let tracker = Tracker::new(&field, p.options.max_collisions).unwrap();
         let mut setup = p.setup;
-        setup.wall = roughwall::surface::stats::measured_deviations(&field);
+        setup.wall = roughwall::surface::measured_deviations(&field);
         let counts = escape_counts(&tracker.into(), &setup, &p.scene.conditions, 3000, 7);
         assert_eq!(table.counts(), &counts);
     }

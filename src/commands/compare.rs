@@ -5,7 +5,7 @@ use crate::cli::CompareArgs;
 use crate::commands::{begin_out, Summary, Wrote};
 use crate::compare::{compare_runs, comparison_table, read_run, unmatched_table};
 use crate::output::{out_dir, write_atomic};
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::collections::BTreeMap;
 use std::path::Path;
 

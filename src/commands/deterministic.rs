@@ -9,11 +9,11 @@ use crate::commands::{apply_wall_card, context, warn, Summary};
 use crate::output::out_dir::{check_distinct, check_out};
 use crate::writers::deterministic::{finish, sphere_table, surface_table};
 use roughwall::deterministic::fill_block;
-use roughwall::deterministic::scene::{
+use roughwall::deterministic::{
     build_surfaces, realisations, surface_from_field, BuiltSurface, SphereDilation,
 };
-use roughwall::error::Result;
-use roughwall::surface::HeightField;
+use roughwall::HeightField;
+use roughwall::Result;
 
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<Summary> {

@@ -21,9 +21,9 @@ use crate::figures;
 use crate::writers::force_sweep::{
     accuracy_table, convergence_outputs, convergence_runs, manifest_table, rows_table,
 };
-use roughwall::error::Result;
-use roughwall::force::report;
+use roughwall::force;
 use roughwall::force::Model;
+use roughwall::Result;
 
 /// Runs the subcommand.
 pub fn run(args: &ForceSweepArgs) -> Result<Summary> {
@@ -34,7 +34,7 @@ pub fn run(args: &ForceSweepArgs) -> Result<Summary> {
     let dir = out.path().to_path_buf();
     rows_table(&rows).write(&dir.join("force_sweep.csv"))?;
 
-    let acc = report::accuracy(&rows);
+    let acc = force::accuracy(&rows);
     if !acc.is_empty() {
         accuracy_table(&acc).write(&dir.join("accuracy.csv"))?;
     }

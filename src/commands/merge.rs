@@ -9,7 +9,7 @@ use crate::partial::RunIdentity;
 use crate::run_context::Context;
 use crate::runner::{self, overrides_of};
 use crate::writers;
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::path::PathBuf;
 
 /// The context of the run the shards came from.

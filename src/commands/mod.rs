@@ -18,8 +18,8 @@ use crate::case::Warning;
 use crate::cli::{Cli, Command, CommonArgs};
 use crate::output::OutputDir;
 use crate::run_context::Context;
-use roughwall::error::{Error, Result};
 use roughwall::tally::{ConditionTally, Shard};
+use roughwall::{Error, Result};
 use std::path::{Path, PathBuf};
 
 /// What a successful command tells its user on stderr (unless `--quiet`): what it did, how

@@ -8,9 +8,9 @@ use crate::commands::{begin_out, warn, Summary};
 use crate::partial::RunIdentity;
 use crate::run_context::Context;
 use crate::runner::{self, TallyOverrides};
-use roughwall::error::Result;
-use roughwall::tally::engine::ConditionStats;
+use roughwall::tally::ConditionStats;
 use roughwall::tally::{BlockTally, ConditionTally, Plan, Shard, TallySpec};
+use roughwall::Result;
 use std::path::{Path, PathBuf};
 
 /// A planned Monte Carlo run whose inputs are all checked: where it writes and what a shard

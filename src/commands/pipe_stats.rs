@@ -5,8 +5,8 @@ use crate::cli::PipeStatsArgs;
 use crate::commands::{begin_out, counted, Summary, Wrote};
 use crate::output::{out_dir, write_atomic};
 use crate::pipe_flow::{read, sums, tables};
-use roughwall::erosion::finnie::Finnie;
-use roughwall::error::{Error, Result};
+use roughwall::erosion::Finnie;
+use roughwall::{Error, Result};
 
 /// Finnie's law for the erosion tallies: a steel wall (flow stress 1 GPa) with OpenFOAM's
 /// ψ = K = 2, as in `configs/cases/erosion-glass-steel.toml`.

@@ -2,7 +2,7 @@
 
 use crate::cli::ReportArgs;
 use crate::commands::{Summary, Wrote};
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 
 /// Writes `REPORT.md` and the aggregated tables under `--results`.
 ///

@@ -26,16 +26,16 @@ use crate::output::fmt_num;
 use crate::writers::scan::{manifest_table, summary_table, wall_card, Source};
 use crate::writers::scan_diameters::{diameters_table, manifest_rows};
 use crate::writers::surface::round_ms;
-use roughwall::deterministic::scene::SurfacePlan;
-use roughwall::error::Result;
-use roughwall::surface::scan::centre_surface::centre_surface_bytes;
-use roughwall::surface::scan::correlation_map::{correlation_map, map_bytes};
-use roughwall::surface::scan::lay::angle_histograms;
-use roughwall::surface::scan::notes::{labelled, notes};
-use roughwall::surface::scan::resolution::seen_by;
-use roughwall::surface::scan::{characterise, Characterisation};
-use roughwall::surface::stats::HistogramSpec;
-use roughwall::warning::Warning;
+use roughwall::deterministic::SurfacePlan;
+use roughwall::scan::angle_histograms;
+use roughwall::scan::centre_surface_bytes;
+use roughwall::scan::seen_by;
+use roughwall::scan::{characterise, Characterisation};
+use roughwall::scan::{correlation_map, map_bytes};
+use roughwall::scan::{labelled, notes};
+use roughwall::surface::HistogramSpec;
+use roughwall::Result;
+use roughwall::Warning;
 use std::path::Path;
 use std::time::Instant;
 
@@ -200,8 +200,8 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
     let points = (field.nx * field.ny) as u64;
     // The library's refusals (levelling, memory) name the scan, not the file: add it.
     let c = characterise(field, setup.level_degree).map_err(|e| match e {
-        roughwall::error::Error::Input(m) if !file.is_empty() => {
-            roughwall::error::Error::Input(format!("{file}: {m}"))
+        roughwall::Error::Input(m) if !file.is_empty() => {
+            roughwall::Error::Input(format!("{file}: {m}"))
         }
         other => other,
     })?;

@@ -8,8 +8,8 @@ use crate::commands::monte_carlo::{MonteCarlo, Scene};
 use crate::commands::{apply_wall_card, context, warn, Summary};
 use crate::output::out_dir::{check_distinct, check_out};
 use crate::writers::stochastic::finish;
-use roughwall::error::Result;
-use roughwall::models::simulate::fill_block;
+use roughwall::models::fill_block;
+use roughwall::Result;
 
 /// Runs the subcommand.
 pub fn run(args: &StochasticArgs) -> Result<Summary> {

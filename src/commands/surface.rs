@@ -16,11 +16,11 @@ use crate::writers::surface::{
     angles_table, effective_table, grid_table, model_row, round_ms, summary_table, HIST_BINS,
     OUTPUT_FILES,
 };
-use roughwall::error::Result;
-use roughwall::surface::dilation::effective_roughness;
+use roughwall::surface::effective_roughness;
 use roughwall::surface::generate;
-use roughwall::surface::heights_io::write_heights;
-use roughwall::surface::stats::{surface_stats, HistogramSpec};
+use roughwall::surface::write_heights;
+use roughwall::surface::{surface_stats, HistogramSpec};
+use roughwall::Result;
 use std::time::Instant;
 
 /// Runs the subcommand: validate everything first (nothing is written on bad input),
@@ -38,7 +38,7 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
         roughwall::memory::require(
             "stats.diameter_um",
             format!("{} diameters", diameters.len()),
-            nodes.saturating_mul(roughwall::surface::dilation::BYTES_PER_NODE),
+            nodes.saturating_mul(roughwall::surface::BYTES_PER_NODE),
             "the centre surface of a sphere",
         )?;
     }

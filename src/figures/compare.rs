@@ -6,7 +6,7 @@ use super::{
     bin_centres, plot_grid_svg, sweep_plots, sweep_series, title, Kind, Plot, Series, SweepPoint,
 };
 use crate::compare::RunOutputs;
-use roughwall::error::Result;
+use roughwall::Result;
 use std::path::Path;
 
 /// Quantities drawn as overlay figures (when present in both runs).

@@ -3,8 +3,8 @@
 //! Panels are laid out with one row per `α⁻` and one column per `β⁻`.
 
 use super::{bins_to_points, condition_title, dbeta_sweeps, plot_grid_svg, Kind, Plot, Series};
-use roughwall::error::Result;
 use roughwall::tally::{ConditionResult, Quantity};
+use roughwall::Result;
 use std::path::Path;
 
 /// Number of distinct `β⁻` (the grid's column count).

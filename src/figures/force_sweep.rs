@@ -8,9 +8,9 @@
 
 use super::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 use crate::output::fmt_num;
-use roughwall::error::Result;
-use roughwall::force::sweep::{Row, Sweep};
 use roughwall::force::{hertz_dynamic, hertz_sphere, Impact, Model, Particle};
+use roughwall::force::{Row, Sweep};
+use roughwall::Result;
 use std::path::Path;
 
 /// A force unit for axis labels so that `max` reads between 1 and 1000: (factor from N, name).

@@ -30,8 +30,9 @@ pub mod sweeps;
 pub use plot::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 pub use sweeps::{dbeta_sweeps, sweep_plots, sweep_series, SweepPoint};
 
-use roughwall::incidence::{fmt_key, IncidentCondition};
+use roughwall::incidence::fmt_key;
 use roughwall::tally::Bin;
+use roughwall::IncidentCondition;
 use std::fmt::Display;
 
 /// The panel title of an incident condition given by its angles as written (degrees).

@@ -6,7 +6,7 @@
 use super::plot::{plot_grid_svg, Kind, Plot, Series};
 use crate::pipe_flow::stats::{angle_pdf, erosion_profile, profile, Profile, ProfilePoint};
 use crate::pipe_flow::tables::Analysed;
-use roughwall::error::Result;
+use roughwall::Result;
 use std::path::Path;
 
 /// The walls in drawing order, with their colours and labels.

@@ -3,7 +3,7 @@
 
 use crate::output::write_atomic;
 use plotters::prelude::*;
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::path::Path;
 
 /// How a series is drawn.

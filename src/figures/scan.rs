@@ -14,12 +14,12 @@ use super::surface::{heat_map, viridis, HeatMap, MapLine};
 use super::{plot_grid_svg, plot_svg, Kind, Plot, Series};
 use crate::output::fmt_num;
 use rayon::prelude::*;
-use roughwall::error::Result;
-use roughwall::surface::scan::correlation::Correlation;
-use roughwall::surface::scan::correlation_map::CorrelationMap;
-use roughwall::surface::scan::lay::Lay;
-use roughwall::surface::scan::ScanField;
-use roughwall::surface::stats::Histogram;
+use roughwall::scan::Correlation;
+use roughwall::scan::CorrelationMap;
+use roughwall::scan::Lay;
+use roughwall::surface::Histogram;
+use roughwall::Result;
+use roughwall::ScanField;
 use std::path::Path;
 
 /// Most cells per side of the height map.

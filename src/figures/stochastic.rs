@@ -3,9 +3,10 @@
 //! incident angles (Figs. 16–17).
 
 use super::{bins_to_points, condition_title, dbeta_sweeps, plot_grid_svg, Kind, Plot, Series};
-use roughwall::error::Result;
 use roughwall::tally::{ConditionResult, Quantity};
-use roughwall::wall::{conditional_gamma_star, rotated_moments, Deviations};
+use roughwall::wall::{conditional_gamma_star, rotated_moments};
+use roughwall::Deviations;
+use roughwall::Result;
 use std::path::Path;
 
 fn cols(n: usize) -> usize {

@@ -15,10 +15,10 @@ use super::png::{base64, png_indexed};
 use super::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::{fmt_num, write_atomic};
 use plotters::prelude::*;
-use roughwall::error::{Error, Result};
-use roughwall::surface::dilation::EffectiveRoughness;
-use roughwall::surface::stats::{Histogram, RotatedStats, SurfaceStats};
-use roughwall::surface::HeightField;
+use roughwall::surface::EffectiveRoughness;
+use roughwall::surface::{Histogram, RotatedStats, SurfaceStats};
+use roughwall::HeightField;
+use roughwall::{Error, Result};
 use std::path::Path;
 
 /// Largest window side (nodes).

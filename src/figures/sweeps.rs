@@ -2,7 +2,7 @@
 //! Figs. 16–17), shared by the figures of `deterministic`, `stochastic` and `compare`.
 
 use super::{plot_grid_svg, Kind, Plot, Series};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::path::Path;
 
 /// One point of a sweep curve: the swept angle, the mean and std of `β⁺ − β⁻` there, and the

@@ -1,7 +1,7 @@
 //! CSV tables: writing them with a fixed header, and the one reader of the tool's own
 //! outputs (by column name), which `compare` and `report` share.
 
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::collections::HashMap;
 use std::path::Path;
 

@@ -26,7 +26,7 @@ pub fn toml_float(x: f64) -> String {
     }
 }
 
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 

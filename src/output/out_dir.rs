@@ -32,8 +32,8 @@
 //!   (or, for an old directory whose `NAME` is missing, put back) by the next run on the same
 //!   `--out`, which holds the lock and so knows that no live run owns them.
 
-use roughwall::error::{Error, Result};
-use roughwall::warning::Warning;
+use roughwall::Warning;
+use roughwall::{Error, Result};
 use std::ffi::{OsStr, OsString};
 use std::fs::{self, File};
 use std::io;

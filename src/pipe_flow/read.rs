@@ -5,7 +5,7 @@
 //! window, `hits_rank<r>.csv` (one file per MPI rank).
 
 use crate::output::csv::Rows;
-use roughwall::error::{Error, Result};
+use roughwall::{Error, Result};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 

@@ -4,7 +4,7 @@
 //! standard error. Wall hits go to their particle's batch.
 
 use super::read::Run;
-use roughwall::erosion::finnie::Finnie;
+use roughwall::erosion::Finnie;
 
 /// Batches of particles.
 pub const BATCHES: usize = 20;

@@ -1,7 +1,7 @@
 //! Helpers the report's sections share: number cells, "missing run" notes, run directories.
 
 use crate::output::csv::Rows;
-use roughwall::error::Result;
+use roughwall::Result;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 

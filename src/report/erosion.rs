@@ -7,7 +7,7 @@ use super::paths::{erosion_wall_name, DETERMINISTIC, EROSION, EROSION_WALLS, STO
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, fmt_sci, CsvTable};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
 

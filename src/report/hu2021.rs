@@ -4,7 +4,7 @@
 use super::common::{f, missing, pct, yes};
 use super::paths::{HU2021, HU_FIG11B, HU_FIG4, HU_FIG6, HU_FIG9};
 use crate::output::csv::{num, run_toml, Rows};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
 

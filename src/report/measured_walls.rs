@@ -11,7 +11,7 @@ use super::paths::{
 };
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
 

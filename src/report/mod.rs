@@ -19,7 +19,7 @@ pub mod spin;
 pub mod wall_models;
 
 use crate::output::write_atomic;
-use roughwall::error::Result;
+use roughwall::Result;
 use std::path::Path;
 
 /// Writes `REPORT.md` and the aggregated tables and figures under `results`.

@@ -162,7 +162,7 @@ pub const CALIBRATION_SURFACES: &str = "64";
 
 /// Mirror symmetry: the triangulations run (every one the case key accepts), one directory
 /// each under [`MIRROR`].
-pub const MIRROR_TRIANGULATIONS: [&str; 2] = roughwall::surface::Triangulation::NAMES;
+pub const MIRROR_TRIANGULATIONS: [&str; 2] = roughwall::Triangulation::NAMES;
 /// Mirror symmetry: the surfaces' seeds (full mode; quick mode runs the first two).
 #[cfg_attr(not(test), allow(dead_code))] // read by the scripts only
 pub const MIRROR_SEEDS: [&str; 8] = ["1", "2", "3", "4", "5", "6", "7", "8"];

@@ -6,7 +6,7 @@
 
 use super::paths::{PIPE_FLOW, PIPE_FLOW_QUICK};
 use crate::output::csv::{num, run_toml, Rows};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::collections::HashMap;
 use std::fmt::Write;
 use std::path::Path;

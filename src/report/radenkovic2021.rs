@@ -10,7 +10,7 @@ use super::paths::{
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
 
@@ -353,7 +353,7 @@ pub fn sec3(results: &Path, md: &mut String) -> Result<()> {
         let Some(s) = summary(&dir)? else { continue };
         for b in [0.0f64, 60.0] {
             let m = roughwall::wall::rotated_moments(
-                &roughwall::wall::Deviations {
+                &roughwall::Deviations {
                     delta_xi: dx.to_radians(),
                     delta_zeta: dz.to_radians(),
                 },

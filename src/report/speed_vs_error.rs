@@ -6,7 +6,7 @@ use super::paths::{SPEED_DETERMINISTIC, SPEED_STOCHASTIC, SPEED_VS_ERROR, VS_REF
 use crate::figures::{plot_svg, Kind, Plot, Series};
 use crate::output::csv::{num, wall_time_s, Rows};
 use crate::output::{fmt_num, CsvTable};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
 

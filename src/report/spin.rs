@@ -8,7 +8,7 @@ use super::paths::SPIN;
 use crate::figures::{plot_grid_svg, Kind, Plot, Series};
 use crate::output::csv::{num, Rows};
 use crate::output::{fmt_num, CsvTable};
-use roughwall::error::Result;
+use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
 

@@ -8,8 +8,8 @@ use super::common::missing;
 use super::paths::{scene_name, COMPARE, STOCHASTIC, WALL_MODELS, WALL_MODELS_SCENES};
 use crate::output::csv::{num, run_toml, Rows};
 use crate::output::{fmt_num, CsvTable};
-use roughwall::error::Result;
-use roughwall::models::{AnyModel, RoughWallModel};
+use roughwall::Result;
+use roughwall::{AnyModel, RoughWallModel};
 use std::fmt::Write;
 use std::path::Path;
 

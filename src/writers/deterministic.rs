@@ -6,15 +6,15 @@ use crate::case::Warning;
 use crate::figures;
 use crate::output::{prepare_out_dir, Manifest};
 use crate::schema::write_tables;
-use roughwall::deterministic::scene::SceneOptions;
-use roughwall::deterministic::scene::{SphereDilation, SurfacePlan};
 use roughwall::deterministic::LostCounts;
-use roughwall::error::{Error, Result};
-use roughwall::incidence::IncidentCondition;
-use roughwall::surface::stats::pooled_deviations;
-use roughwall::surface::HeightField;
-use roughwall::tally::engine::ConditionStats;
+use roughwall::deterministic::SceneOptions;
+use roughwall::deterministic::{SphereDilation, SurfacePlan};
+use roughwall::surface::pooled_deviations;
+use roughwall::tally::ConditionStats;
 use roughwall::tally::{ConditionResult, ConditionTally};
+use roughwall::HeightField;
+use roughwall::IncidentCondition;
+use roughwall::{Error, Result};
 use std::path::Path;
 
 use super::{f, insert_standard_errors, round};
@@ -67,11 +67,7 @@ pub fn surface_table(
             t.insert("wall_deviations".into(), opt.deviations.name().into());
             // What the grid's triangles have on average (docs/physics.md §4): the
             // deviations asked for with "normal-angles", 0.3–2.1 % less with "eq15".
-            let e = roughwall::surface::normal_angles::expected_deviations(
-                h,
-                [cx, cz],
-                spec.spacing_m(),
-            );
+            let e = roughwall::surface::expected_deviations(h, [cx, cz], spec.spacing_m());
             t.insert(
                 "expected_delta_xi_deg".into(),
                 f(round(e.delta_xi.to_degrees(), 4)),

@@ -3,9 +3,9 @@
 //! `[[dynamic_convergence]]` tables of `run.toml`.
 
 use crate::output::{fmt_num, fmt_opt, CsvTable};
-use roughwall::force::report::{self, Accuracy, Convergence};
-use roughwall::force::sweep::{Row, Sweep};
+use roughwall::force::{self, Accuracy, Convergence};
 use roughwall::force::{hertz_dynamic, Impact, Particle};
+use roughwall::force::{Row, Sweep};
 
 /// The columns of `force_sweep.csv` (issue 5).
 pub const HEADER: [&str; 11] = [
@@ -118,11 +118,11 @@ pub fn convergence_runs(
     seen.into_iter()
         .filter_map(|lambda| Impact::from_deg(lambda, beta, u_n).ok())
         .map(|imp| {
-            let c = report::convergence(
+            let c = force::convergence(
                 &p,
                 &imp,
-                &report::CONVERGENCE_STEPS,
-                report::REFERENCE_STEPS,
+                &force::CONVERGENCE_STEPS,
+                force::REFERENCE_STEPS,
                 0.02,
             );
             (imp, p, c)
@@ -146,7 +146,7 @@ pub fn convergence_outputs(
                 fmt_num(p.diameter * 1e6),
                 c.steps_per_contact.to_string(),
                 c.steps.to_string(),
-                report::REFERENCE_STEPS.to_string(),
+                force::REFERENCE_STEPS.to_string(),
                 fmt_num(c.rel_err_f_max),
                 fmt_num(c.rel_err_contact_time),
             ]);

@@ -17,9 +17,10 @@ pub mod surface;
 
 use crate::case::{Scene, Warning};
 use crate::output::{fmt_num, Manifest};
-use roughwall::erosion::{dnv, ErosionModel, ErosionSetup};
-use roughwall::tally::engine::ConditionStats;
+use roughwall::erosion::AngleDependency;
+use roughwall::tally::ConditionStats;
 use roughwall::tally::{ConditionTally, BLOCK_SIZE};
+use roughwall::{ErosionModel, ErosionSetup};
 
 fn f(x: f64) -> toml::Value {
     toml::Value::Float(x)
@@ -95,8 +96,8 @@ pub fn erosion_manifest(e: &ErosionSetup) -> toml::Value {
     put("particle_mass_kg", e.particle_mass_kg);
     if let ErosionModel::Dnv(d) = &e.model {
         let a = match d.angle_dependency {
-            dnv::AngleDependency::Ductile => "ductile",
-            dnv::AngleDependency::Brittle => "brittle",
+            AngleDependency::Ductile => "ductile",
+            AngleDependency::Brittle => "brittle",
         };
         t.insert("angle_dependency".into(), toml::Value::String(a.into()));
     }

@@ -4,9 +4,9 @@
 
 use super::scan_diameters::card_tables;
 use crate::output::{fmt_num, fmt_opt, toml_float, toml_str, CsvTable};
-use roughwall::surface::scan::notes::{missing_fraction, spread};
-use roughwall::surface::scan::resolution::SeenBy;
-use roughwall::surface::scan::Characterisation;
+use roughwall::scan::Characterisation;
+use roughwall::scan::SeenBy;
+use roughwall::scan::{missing_fraction, spread};
 
 /// The columns of `scan_summary.csv`.
 pub const SUMMARY_HEADER: [&str; 27] = [
@@ -242,8 +242,9 @@ pub fn manifest_table(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use roughwall::surface::scan::notes::notes;
-    use roughwall::surface::scan::{characterise, ScanField};
+    use roughwall::scan::characterise;
+    use roughwall::scan::notes;
+    use roughwall::ScanField;
 
     /// A sinusoid along x with its grooves along y, some points missing.
     fn grooves(nx: usize, ny: usize) -> Characterisation {

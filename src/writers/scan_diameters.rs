@@ -1,14 +1,14 @@
 //! The per-diameter outputs of `rebound scan` (issue 29, parts 2 and 5): for the point
 //! particle and each `[scan] diameters_um` (`--diameter-um`), the deviations of the sphere's
-//! centre surface on the scan (`roughwall::surface::scan::resolution::seen_by`), and where
+//! centre surface on the scan (`roughwall::scan::seen_by`), and where
 //! the scan is too small or too coarse for it (the criteria of
-//! `roughwall::surface::scan::resolution`): `wall_card_diameters.csv`, the card's
+//! `roughwall::scan::resolution`): `wall_card_diameters.csv`, the card's
 //! `[[diameter]]` tables, the `[[diameter]]` of `run.toml` and the notes.
 
 use crate::output::{fmt_num, toml_float, toml_str, CsvTable};
-use roughwall::surface::scan::notes::{criteria, reach_um};
-use roughwall::surface::scan::resolution::SeenBy;
-use roughwall::surface::scan::ScanField;
+use roughwall::scan::SeenBy;
+use roughwall::scan::{criteria, reach_um};
+use roughwall::ScanField;
 
 /// The columns of `wall_card_diameters.csv`.
 pub const DIAMETERS_HEADER: [&str; 10] = [
@@ -124,15 +124,15 @@ pub fn manifest_rows(rows: &[SeenBy], f: &ScanField) -> toml::Value {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use roughwall::surface::scan::characterise;
-    use roughwall::surface::scan::notes::labelled;
-    use roughwall::surface::scan::resolution::seen_by;
+    use roughwall::scan::characterise;
+    use roughwall::scan::labelled;
+    use roughwall::scan::seen_by;
 
     /// A Gaussian wall generated as a `size`-node scan read every `every`-th node (h = 1 µm,
     /// c_Lx = 32.4 µm, c_Lz = 10.8 µm, 8 nodes per c_Lz before the reading).
-    fn wall(nodes: usize, every: usize) -> roughwall::surface::scan::Characterisation {
+    fn wall(nodes: usize, every: usize) -> roughwall::scan::Characterisation {
         let c = |deg: f64| 2f64.sqrt() * 1e-6 / deg.to_radians();
-        let spec = roughwall::surface::SurfaceSpec {
+        let spec = roughwall::SurfaceSpec {
             length_m: nodes as f64 * c(7.5) / 8.0,
             nodes,
             rms_height_m: 1e-6,

@@ -6,11 +6,11 @@ use crate::case::Warning;
 use crate::figures;
 use crate::output::{prepare_out_dir, Manifest};
 use crate::schema::write_tables;
-use roughwall::error::Result;
-use roughwall::models::simulate::gamma_model_curve;
-use roughwall::models::RoughWallModel;
-use roughwall::tally::engine::ConditionStats;
+use roughwall::models::gamma_model_curve;
+use roughwall::tally::ConditionStats;
 use roughwall::tally::ConditionTally;
+use roughwall::Result;
+use roughwall::RoughWallModel;
 use std::path::Path;
 
 use super::{f, insert_standard_errors, round};

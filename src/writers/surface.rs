@@ -2,10 +2,11 @@
 //! (Eqs. 7–9, 14–15) and the effective roughness of spheres.
 
 use crate::output::{fmt_num, CsvTable};
-use roughwall::surface::dilation::EffectiveRoughness;
-use roughwall::surface::stats::SurfaceStats;
-use roughwall::surface::{HeightField, SurfaceSpec};
-use roughwall::wall::{self, rotated_moments, Deviations};
+use roughwall::surface::EffectiveRoughness;
+use roughwall::surface::SurfaceStats;
+use roughwall::wall::{self, rotated_moments};
+use roughwall::Deviations;
+use roughwall::{HeightField, SurfaceSpec};
 
 /// Columns of `surface_summary.csv` (issue #2).
 pub const SUMMARY_HEADER: [&str; 14] = [

@@ -1,8 +1,8 @@
 //! What the tests of the C and Fortran examples share: the wall and the keyed hits of their
 //! `keys` mode, and running a built example.
 
-use roughwall::collision::CollisionParams;
-use roughwall::wall_model::{Hit, WallModel, WallParams};
+use roughwall::CollisionParams;
+use roughwall::{Hit, WallModel, WallParams};
 use std::path::Path;
 use std::process::Command;
 

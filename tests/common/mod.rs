@@ -445,8 +445,8 @@ pub fn pdf_bins(dir: &Path, quantity: &str) -> Vec<(f64, f64, f64)> {
 }
 
 /// Wall deviations `(Δξ, Δζ)` given in degrees.
-pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> roughwall::wall::Deviations {
-    roughwall::wall::Deviations {
+pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> roughwall::Deviations {
+    roughwall::Deviations {
         delta_xi: dxi_deg.to_radians(),
         delta_zeta: dzeta_deg.to_radians(),
     }
@@ -454,12 +454,8 @@ pub fn dev(dxi_deg: f64, dzeta_deg: f64) -> roughwall::wall::Deviations {
 
 /// The Kolmogorov–Smirnov distance between the histogram `h` and the PDF of `quantity` in
 /// the `pdfs.csv` of the run in `dir` (its first condition).
-pub fn ks_against_run(
-    h: &roughwall::tally::histogram::Histogram,
-    dir: &Path,
-    quantity: &str,
-) -> f64 {
-    use roughwall::tally::distance::{distances, BinnedPdf};
+pub fn ks_against_run(h: &roughwall::tally::Histogram, dir: &Path, quantity: &str) -> f64 {
+    use roughwall::tally::{distances, BinnedPdf};
     let mine = BinnedPdf::new(h.density().iter().map(|b| (b.lo, b.hi, b.value)).collect());
     distances(&mine, &BinnedPdf::new(pdf_bins(dir, quantity))).0
 }

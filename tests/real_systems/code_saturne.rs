@@ -15,7 +15,7 @@
 //!   it was up to the particle's first hit and changes what follows (at least 90 % of them).
 
 use crate::common::*;
-use roughwall::tally::histogram::Histogram;
+use roughwall::tally::Histogram;
 use std::process::Command;
 
 #[test]
@@ -72,10 +72,10 @@ fn code_saturne_calls_roughwall_at_every_wall_hit() {
     };
     // Every logged rebound, recomputed from its logged inputs and key (the hook's wall:
     // glass–steel preset, seed 2021, the lay direction of the scene).
-    let wall = roughwall::wall_model::WallModel::new(&roughwall::wall_model::WallParams {
+    let wall = roughwall::WallModel::new(&roughwall::WallParams {
         delta_xi_deg: 3.8,
         delta_zeta_deg: 7.5,
-        collision: roughwall::collision::CollisionParams {
+        collision: roughwall::CollisionParams {
             model: Some("sommerfeld-huber".into()),
             preset: Some("glass-steel".into()),
             ..Default::default()
@@ -101,7 +101,7 @@ fn code_saturne_calls_roughwall_at_every_wall_hit() {
                     csv.num(r, &format!("{p}_z")),
                 ]
             };
-            let hit = roughwall::wall_model::Hit {
+            let hit = roughwall::Hit {
                 velocity: v("u_in"),
                 spin: [0.0; 3],
                 normal: v("n"),

@@ -12,9 +12,9 @@
 //!   `model = "dnv"` against them to 1e-9 relative.
 
 use crate::common::{repo_root, run_case, write_case, Csv};
-use roughwall::erosion::dnv::{AngleDependency, Dnv};
-use roughwall::erosion::finnie::Finnie;
-use roughwall::erosion::ErosionModel;
+use roughwall::erosion::Finnie;
+use roughwall::erosion::{AngleDependency, Dnv};
+use roughwall::ErosionModel;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

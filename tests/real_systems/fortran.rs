@@ -4,7 +4,7 @@
 
 use crate::common::c_examples::{glass_steel, key_hit, run_program};
 use crate::common::*;
-use roughwall::wall_model::HitStatus;
+use roughwall::HitStatus;
 
 #[test]
 fn the_fortran_example_gives_the_rust_rebounds() {

@@ -224,7 +224,8 @@ fn levelled_parameters(
     theirs: &Dump,
     masked: usize,
 ) -> (String, String) {
-    use roughwall::surface::scan::{characterise, ScanField};
+    use roughwall::scan::characterise;
+    use roughwall::ScanField;
     let field = ScanField::new(
         ours.nx,
         ours.ny,
@@ -238,7 +239,7 @@ fn levelled_parameters(
         .parameters;
     // A scan that is a plane (matrix-6) leaves only round-off after levelling: differences
     // are judged against the unlevelled scan's own scale.
-    let raw = roughwall::surface::scan::parameters::area_parameters(&field);
+    let raw = roughwall::scan::area_parameters(&field);
     let close =
         |a: f64, b: f64, scale: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(scale);
     let (sq, sdq) = (theirs.num("sq_m"), theirs.num("sdq"));

@@ -8,8 +8,8 @@
 
 use pyo3::exceptions::{PyMemoryError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::PyErr;
-use roughwall::error::Error;
 use roughwall::memory::FITS_IN_MEMORY;
+use roughwall::Error;
 use std::fmt::Display;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 

@@ -22,6 +22,6 @@ fn _roughwall(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(runs::stochastic, m)?)?;
     m.add_function(wrap_pyfunction!(runs::deterministic, m)?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
-    m.add("MODELS", roughwall::models::AnyModel::NAMES.to_vec())?;
+    m.add("MODELS", roughwall::AnyModel::NAMES.to_vec())?;
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! A scene's stochastic and deterministic runs (`rebound stochastic`, `rebound deterministic`)
-//! from keyword parameters: the library's runners (`tally::engine::run` with
-//! `models::simulate::fill_block` or `deterministic::fill_block`) and tallies
+//! from keyword parameters: the library's runners (`tally::tally::run` with
+//! `models::models::fill_block` or `deterministic::fill_block`) and tallies
 //! (`ConditionTally::result`), returned as arrays instead of CSV files. Case files are the
 //! application's (serde, toml): the Python package takes the scene's values directly, checked
 //! with the ranges and messages of the case keys they stand for.
@@ -11,16 +11,16 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use roughwall::check::{check_int_range, check_range};
-use roughwall::collision::CollisionParams;
-use roughwall::deterministic::scene::{
+use roughwall::deterministic::{
     build_surfaces, realisations, SceneOptions, SurfacePlan, WallDeviations,
 };
-use roughwall::incidence::{IncidentCondition, SpeedLaw, SpinLaw};
-use roughwall::models::simulate;
-use roughwall::surface::Triangulation;
-use roughwall::tally::engine::{self, Plan, Silent};
+use roughwall::models;
+use roughwall::tally::{self, Plan, Silent};
 use roughwall::tally::{ConditionResult, ConditionTally, Estimate};
-use roughwall::wall_model::{WallModel, WallParams};
+use roughwall::CollisionParams;
+use roughwall::Triangulation;
+use roughwall::{IncidentCondition, SpeedLaw, SpinLaw};
+use roughwall::{WallModel, WallParams};
 
 /// Incident conditions of a run.
 const MAX_CONDITIONS: usize = 10_000;
@@ -281,7 +281,7 @@ pub fn stochastic<'py>(py: Python<'py>, args: SceneArgs<'py>) -> PyResult<Bound<
     guarded(|| {
         let scene = args.checked()?;
         let w = &scene.wall;
-        let setup = simulate::ModelSetup {
+        let setup = models::ModelSetup {
             wall: w.wall,
             law: w.law,
             psi: w.psi,
@@ -294,14 +294,14 @@ pub fn stochastic<'py>(py: Python<'py>, args: SceneArgs<'py>) -> PyResult<Bound<
         let specs = scene
             .conditions
             .iter()
-            .map(|c| simulate::tally_spec(&w.wall, *c, scene.bin_width_deg, None))
+            .map(|c| models::tally_spec(&w.wall, *c, scene.bin_width_deg, None))
             .collect();
         let plan = scene.plan(specs);
         let tallies = py.detach(|| {
             guarded(|| {
                 on_threads(scene.threads, || {
-                    engine::run(&plan, &Silent, |k, start, end, block| {
-                        simulate::fill_block(
+                    tally::run(&plan, &Silent, |k, start, end, block| {
+                        models::fill_block(
                             &setup,
                             &scene.conditions[k],
                             k as u64,
@@ -430,7 +430,7 @@ pub fn deterministic<'py>(
                     )
                     .map_err(to_py)?;
                     let real = realisations(&built, surface.max_collisions, None).map_err(to_py)?;
-                    Ok(engine::run(&plan, &Silent, |k, start, end, block| {
+                    Ok(tally::run(&plan, &Silent, |k, start, end, block| {
                         roughwall::deterministic::fill_block(
                             &real,
                             &setup,

@@ -1,6 +1,6 @@
 //! Measured walls: an instrument file read by `topography` (the readers `rebound scan`
 //! uses), and a height field levelled and characterised by
-//! `roughwall::surface::scan::characterise`, with the wall card's per-diameter deviations
+//! `roughwall::scan::characterise`, with the wall card's per-diameter deviations
 //! (`resolution::seen_by`) and notes (`notes`), as `rebound scan` writes them.
 
 use crate::errors::{bytes_of, guarded, invalid, on_threads, require, to_py, with_capacity};
@@ -9,12 +9,11 @@ use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use roughwall::check::{check_int_range, check_range};
-use roughwall::surface::scan::centre_surface::centre_surface_bytes;
-use roughwall::surface::scan::notes::{labelled, notes, spread};
-use roughwall::surface::scan::resolution::{seen_by, SeenBy};
-use roughwall::surface::scan::{
-    characterise, levelling::MAX_DEGREE, Characterisation, ScanField, MAX_POINTS, SPACING_RANGE_M,
-};
+use roughwall::scan::centre_surface_bytes;
+use roughwall::scan::{characterise, Characterisation, MAX_DEGREE, MAX_POINTS, SPACING_RANGE_M};
+use roughwall::scan::{labelled, notes, spread};
+use roughwall::scan::{seen_by, SeenBy};
+use roughwall::ScanField;
 use std::path::PathBuf;
 use topography::{ErrorKind, Format};
 
@@ -121,7 +120,7 @@ fn diameter_row<'py>(py: Python<'py>, s: &SeenBy, f: &ScanField) -> PyResult<Bou
     d.set_item("delta_xi_deg", s.seen.lay.map(|l| deg(l.delta_xi)))?;
     d.set_item("delta_zeta_deg", s.seen.lay.map(|l| deg(l.delta_zeta)))?;
     d.set_item("exact_fraction", r.exact_fraction)?;
-    let [rx, ry] = roughwall::surface::scan::notes::reach_um(s, f);
+    let [rx, ry] = roughwall::scan::reach_um(s, f);
     d.set_item("reach_m", (rx * 1e-6, ry * 1e-6))?;
     d.set_item("footprint_m", r.footprint_m)?;
     d.set_item("correlation_areas", r.correlation_areas)?;

@@ -6,7 +6,8 @@ use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use roughwall::check::check_range;
-use roughwall::surface::{generate, SurfaceSpec};
+use roughwall::surface::generate;
+use roughwall::SurfaceSpec;
 
 /// The lengths a surface may have (m): a picometre to a kilometre, as in a case file.
 const LENGTH_RANGE_M: (f64, f64) = (1e-12, 1e3);
@@ -51,7 +52,7 @@ fn checked(spec: &SurfaceSpec) -> PyResult<()> {
     require(
         "nodes",
         spec.nodes,
-        roughwall::surface::generate::generation_bytes(spec),
+        roughwall::surface::generation_bytes(spec),
         &format!("generating a {0} × {0} surface", spec.nodes),
     )
 }

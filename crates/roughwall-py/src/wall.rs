@@ -1,4 +1,4 @@
-//! `roughwall.Wall`'s core: a wall handle (`roughwall::wall_model::WallModel`, the model the C
+//! `roughwall.Wall`'s core: a wall handle (`roughwall::WallModel`, the model the C
 //! library's `rw_wall_new` builds) and the rebound of many hits at once, each exactly
 //! `WallModel::rebound` — what `rw_rebound` and `rw_rebound_batch` return for the same key.
 //! The Python layer (`python/roughwall/_wall.py`) checks and broadcasts the arguments; this
@@ -9,9 +9,9 @@ use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUnty
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
-use roughwall::collision::CollisionParams;
-use roughwall::models::RoughWallModel;
-use roughwall::wall_model::{Hit, HitOutcome, WallModel, WallParams};
+use roughwall::CollisionParams;
+use roughwall::RoughWallModel;
+use roughwall::{Hit, HitOutcome, WallModel, WallParams};
 
 /// An immutable wall: the rough-wall model, its collision law and the seed of every hit's
 /// random stream. Share one between threads.

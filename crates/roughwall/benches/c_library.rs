@@ -3,12 +3,12 @@
 //! for the Sec. 4 glass–steel scene in a rotated frame. Targets: C call ≤ 1.1 × Rust call;
 //! batch ≥ 5 M rebounds/s on 2 threads. Run: `cargo bench --bench c_library`.
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
-use roughwall::collision::CollisionParams;
 use roughwall::ffi::{
     rw_batch, rw_hit, rw_rebound, rw_rebound_batch, rw_result, rw_wall, rw_wall_free, rw_wall_new,
     rw_wall_params, rw_wall_params_default, RW_LAW_SOMMERFELD_HUBER, RW_OK, RW_PRESET_GLASS_STEEL,
 };
-use roughwall::wall_model::{Hit, WallModel, WallParams};
+use roughwall::CollisionParams;
+use roughwall::{Hit, WallModel, WallParams};
 use std::time::Instant;
 
 const N: usize = 100_000;

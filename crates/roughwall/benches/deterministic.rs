@@ -3,17 +3,17 @@
 //! whole `aniso.toml` scene at 10⁵ particles per condition (surface included).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use roughwall::collision::CollisionLaw;
-use roughwall::deterministic::scene::{
-    choose_surface, generate_surface, SceneOptions, SurfacePlan,
-};
-use roughwall::deterministic::{fill_block, tally_spec, ModelSetup, Realisations, Tracker};
-use roughwall::erosion::{finnie::Finnie, ErosionModel, ErosionSetup};
-use roughwall::incidence::{IncidentCondition, SpeedLaw};
-use roughwall::surface::{HeightField, Triangulation};
-use roughwall::tally::engine::{self, Plan, Silent};
+use roughwall::deterministic::{choose_surface, generate_surface, SceneOptions, SurfacePlan};
+use roughwall::deterministic::{fill_block, tally_spec, ModelSetup, Realisations};
+use roughwall::erosion::Finnie;
 use roughwall::tally::BlockTally;
-use roughwall::wall::Deviations;
+use roughwall::tally::{self, Plan, Silent};
+use roughwall::CollisionLaw;
+use roughwall::Deviations;
+use roughwall::Tracker;
+use roughwall::{ErosionModel, ErosionSetup};
+use roughwall::{HeightField, Triangulation};
+use roughwall::{IncidentCondition, SpeedLaw};
 use std::time::Duration;
 
 const UNIT: SpeedLaw = SpeedLaw::horizontal(1.0, 0.0);
@@ -125,7 +125,7 @@ fn run_case() -> usize {
         target_se_deg: None,
         shard: None,
     };
-    let done = engine::run(&plan, &Silent, |k, start, end, block| {
+    let done = tally::run(&plan, &Silent, |k, start, end, block| {
         fill_block(
             &tracker,
             &setup,

@@ -1,10 +1,10 @@
 //! Criterion benchmarks of the surface generator and the Table 1 statistics
 //! (`cargo bench --bench surface`). The N = 5001 cases are the Table 1 surface.
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use roughwall::surface::dilation::dilate_paraboloid;
+use roughwall::surface::dilate_paraboloid;
 use roughwall::surface::generate;
-use roughwall::surface::stats::surface_stats;
-use roughwall::surface::SurfaceSpec;
+use roughwall::surface::surface_stats;
+use roughwall::SurfaceSpec;
 
 fn spec(n: usize) -> SurfaceSpec {
     // δ ≈ 1 µm and the roughness of Table 1 (h = 0.37 µm, c_L = 12 µm × 4 µm).

@@ -9,16 +9,16 @@
 //! `cargo run --release -p roughwall --example scan_tiling -- SURFACES HISTORIES OUT.csv`
 //! (scripts/scan-tiling.sh).
 
-use roughwall::collision::CollisionLaw;
-use roughwall::deterministic::scene::{
-    choose_surface, generate_surface, SceneOptions, SurfacePlan,
-};
-use roughwall::deterministic::{run_condition, ModelSetup, Tracker};
-use roughwall::incidence::{IncidentCondition, SpeedLaw};
-use roughwall::surface::scan::{periodic::mirrored_wall, ScanField};
-use roughwall::surface::{HeightField, Triangulation};
-use roughwall::tally::moments::{Moments, ShiftedSums};
-use roughwall::wall::Deviations;
+use roughwall::deterministic::{choose_surface, generate_surface, SceneOptions, SurfacePlan};
+use roughwall::deterministic::{run_condition, ModelSetup};
+use roughwall::scan::mirrored_wall;
+use roughwall::tally::{Moments, ShiftedSums};
+use roughwall::CollisionLaw;
+use roughwall::Deviations;
+use roughwall::ScanField;
+use roughwall::Tracker;
+use roughwall::{HeightField, Triangulation};
+use roughwall::{IncidentCondition, SpeedLaw};
 
 /// Mean `α⁺` and mean `β⁺ − β⁻` (degrees) of `count` histories on `field`.
 fn means(

@@ -12,22 +12,30 @@
 //!
 //! Reproducible by construction: every particle draws from its own random stream keyed by
 //! `(seed, indices)` ([`rng`]), and tallies are merged in a fixed block order
-//! ([`tally::engine`]), so results do not depend on the thread count or on a split into
+//! ([`tally::run`]), so results do not depend on the thread count or on a split into
 //! shards. Nothing here prints, reads a case file or draws a figure: the `rebound`
 //! application does that.
 //!
 //! # Where to start
 //!
+//! The types most callers need are at the top (`roughwall::WallModel`,
+//! `roughwall::CollisionLaw`, `roughwall::Deviations`, …); everything else is one level down,
+//! in the module of its family (`roughwall::tally::BlockTally`). No file's module is public,
+//! so the files can move without breaking a caller.
+//!
 //! | to … | use |
 //! | --- | --- |
-//! | rebound one particle off a wall from a CFD code (any frame, moving wall, keyed stream) | [`wall_model::WallModel`], or [`ffi`] from C and Fortran |
-//! | draw one rebound in the wall's frame | [`stochastic::rebound`] (paper), [`models::rebound_with`] (any model of [`models`]) |
-//! | generate a rough surface and measure it | [`surface::generate()`], [`surface::stats`] |
-//! | follow particles on a surface | [`deterministic::Tracker`], [`deterministic::run_condition`] |
-//! | run many particles into tallies with standard errors | [`tally::engine::run`] with [`models::simulate::fill_block`] or [`deterministic::fill_block`] |
+//! | rebound one particle off a wall from a CFD code (any frame, moving wall, keyed stream) | [`WallModel`], or [`ffi`] from C and Fortran |
+//! | draw one rebound in the wall's frame | [`rebound`] (the paper's model), [`models::rebound_with`] (any model of [`models`]) |
+//! | add a rough-wall model | [`RoughWallModel`], [`NamedModel`] ([`models`] lists the models) |
+//! | generate a rough surface and measure it | [`surface::generate()`], [`surface::surface_stats`], [`surface::measured_deviations`] |
+//! | read a measured wall's parameters off a scan | [`ScanField`], [`scan::characterise`] |
+//! | follow particles on a surface | [`Tracker`], [`deterministic::run_condition`] |
+//! | run many particles into tallies with standard errors | [`tally::run`] with [`models::fill_block`] or [`deterministic::fill_block`] |
 //! | the calibrated model and its table | [`calibrated`] |
-//! | erosion at an impact | [`erosion::ErosionModel`] |
+//! | erosion at an impact | [`ErosionModel`] |
 //! | peak elastic force of a sphere or spheroid | [`force::Model::evaluate`] |
+//! | the library's one-line errors and range checks, for a caller's own keys | [`Error`], [`check`] |
 //!
 //! # Examples
 //!
@@ -80,7 +88,7 @@
 //! deviations it has, against `√2 h/c_L` of Eq. (15):
 //!
 //! ```
-//! use roughwall::surface::{generate, stats::measured_deviations, SurfaceSpec};
+//! use roughwall::surface::{generate, measured_deviations, SurfaceSpec};
 //!
 //! let spec = SurfaceSpec {
 //!     length_m: 512e-6,
@@ -145,6 +153,7 @@
 //! assert!(fit > 0.0 && (hertz / fit - 1.0).abs() < 0.2);
 //! ```
 #![deny(missing_docs)]
+#![warn(unnameable_types)]
 pub mod angles;
 pub mod calibrated;
 pub mod check;
@@ -158,10 +167,27 @@ pub mod format;
 pub mod incidence;
 pub mod memory;
 pub mod models;
+pub mod parameters;
 pub mod rng;
+pub mod scan;
 pub mod stochastic;
 pub mod surface;
 pub mod tally;
 pub mod wall;
 pub mod wall_model;
 pub mod warning;
+
+// The front door: what most callers need, at the top. Everything else is one level down, in
+// the module of its family (`roughwall::tally::BlockTally`); no file's module is public.
+pub use collision::{CollisionLaw, CollisionParams, ShParams};
+pub use deterministic::Tracker;
+pub use erosion::{ErosionModel, ErosionSetup};
+pub use error::{Error, Result};
+pub use incidence::{IncidentCondition, SpeedLaw, SpinLaw};
+pub use models::{AnyModel, ModelParams, NamedModel, RoughWallModel};
+pub use scan::ScanField;
+pub use stochastic::rebound;
+pub use surface::{HeightField, SurfaceSpec, Triangulation};
+pub use wall::Deviations;
+pub use wall_model::{Hit, HitOutcome, HitStatus, WallModel, WallParams};
+pub use warning::Warning;

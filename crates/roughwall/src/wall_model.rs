@@ -13,6 +13,7 @@
 use crate::collision::{CollisionLaw, CollisionParams};
 use crate::error::{Error, Result};
 use crate::models::{rebound_with, AnyModel, ModelParams};
+use crate::parameters::{ParameterKind, WALL_PARAMETERS};
 use crate::rng;
 use crate::stochastic::{checked_psi, Contact, PSI_PAPER};
 use crate::wall::{checked_deviation, Deviations};
@@ -46,6 +47,38 @@ pub struct WallParams {
     pub escape_table: Option<String>,
 }
 
+impl WallParams {
+    /// The value of the numeric parameter `case_key` of [`WALL_PARAMETERS`] (`Some(None)`:
+    /// not given), `None` for a key that is not a number of this struct.
+    fn number(&self, case_key: &str) -> Option<Option<f64>> {
+        let c = &self.collision;
+        Some(match case_key {
+            "wall.delta_xi_deg" => Some(self.delta_xi_deg),
+            "wall.delta_zeta_deg" => Some(self.delta_zeta_deg),
+            "collision.e_h" => c.e_h,
+            "collision.alpha_e_deg" => c.alpha_e_deg,
+            "collision.mu_0" => c.mu_0,
+            "collision.mu_h" => c.mu_h,
+            "collision.alpha_mu_deg" => c.alpha_mu_deg,
+            "stochastic.psi" => self.psi,
+            "stochastic.delta_gamma_deg" => self.delta_gamma_deg,
+            _ => return None,
+        })
+    }
+
+    /// The numeric parameters of [`WALL_PARAMETERS`] with their values, in the order of their
+    /// keys' names (the order a case file's are checked in).
+    pub fn numbers(&self) -> Vec<(&'static str, Option<f64>)> {
+        let mut numbers: Vec<(&'static str, Option<f64>)> = WALL_PARAMETERS
+            .iter()
+            .filter(|q| q.kind == ParameterKind::Number)
+            .filter_map(|q| Some((q.case_key, self.number(q.case_key)?)))
+            .collect();
+        numbers.sort_by_key(|n| n.0);
+        numbers
+    }
+}
+
 /// A wall: immutable once built, so one handle serves every thread.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WallModel {
@@ -73,18 +106,7 @@ impl WallModel {
     /// deviation beyond the low-roughness range).
     pub fn new(p: &WallParams) -> Result<(WallModel, Vec<String>)> {
         let c = &p.collision;
-        let numbers = [
-            ("collision.alpha_e_deg", c.alpha_e_deg),
-            ("collision.alpha_mu_deg", c.alpha_mu_deg),
-            ("collision.e_h", c.e_h),
-            ("collision.mu_0", c.mu_0),
-            ("collision.mu_h", c.mu_h),
-            ("stochastic.delta_gamma_deg", p.delta_gamma_deg),
-            ("stochastic.psi", p.psi),
-            ("wall.delta_xi_deg", Some(p.delta_xi_deg)),
-            ("wall.delta_zeta_deg", Some(p.delta_zeta_deg)),
-        ];
-        for (key, v) in numbers {
+        for (key, v) in p.numbers() {
             if let Some(v) = v.filter(|v| !v.is_finite()) {
                 return Err(Error::invalid(key, v, "a finite number"));
             }
@@ -397,6 +419,33 @@ mod tests {
     use super::*;
     use crate::collision::ShParams;
     use crate::stochastic::rebound;
+
+    /// Every numeric parameter declared in `WALL_PARAMETERS` is a field here, and is checked
+    /// for finiteness by `WallModel::new` with its key.
+    #[test]
+    fn every_declared_number_is_a_field_and_is_checked() {
+        let p = WallParams::default();
+        for q in WALL_PARAMETERS
+            .iter()
+            .filter(|q| q.kind == ParameterKind::Number)
+        {
+            assert!(p.number(q.case_key).is_some(), "{}", q.case_key);
+        }
+        let declared = WALL_PARAMETERS
+            .iter()
+            .filter(|q| q.kind == ParameterKind::Number)
+            .count();
+        assert_eq!(p.numbers().len(), declared);
+        let bad = WallParams {
+            psi: Some(f64::NAN),
+            ..Default::default()
+        };
+        let err = WallModel::new(&bad).unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "invalid `stochastic.psi` = NaN: allowed a finite number"
+        );
+    }
 
     fn glass_steel() -> WallModel {
         WallModel::new(&WallParams {

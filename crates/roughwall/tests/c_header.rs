@@ -38,7 +38,7 @@ fn the_header_is_what_cbindgen_generates_from_the_ffi_module() {
     }
 }
 
-/// The registered rough-wall models (`roughwall::models::AnyModel::NAMES`, whose order is the
+/// The registered rough-wall models (`roughwall::AnyModel::NAMES`, whose order is the
 /// C library's model index) have their `RW_MODEL_*` constant, with that index, in the header,
 /// in the Fortran module, and their name in the benchmark's list (`scripts/wall-models.sh`):
 /// a model added to the registry and forgotten in one of them fails here.
@@ -51,7 +51,7 @@ fn every_registered_model_has_its_constant_in_c_fortran_and_the_benchmark() {
         read("examples/fortran/roughwall.f90"),
         read("scripts/wall-models.sh"),
     );
-    let names = roughwall::models::AnyModel::NAMES;
+    let names = roughwall::AnyModel::NAMES;
     let defined: Vec<(String, usize)> = header
         .lines()
         .filter_map(|l| l.strip_prefix("#define RW_MODEL_"))

@@ -2,10 +2,11 @@
 //! independence of its tallies.
 
 use crate::common::deterministic::*;
-use roughwall::collision::{CollisionLaw, ShParams};
-use roughwall::deterministic::{ConditionRun, Tracker};
-use roughwall::incidence::SpeedLaw;
-use roughwall::surface::HeightField;
+use roughwall::deterministic::ConditionRun;
+use roughwall::HeightField;
+use roughwall::SpeedLaw;
+use roughwall::Tracker;
+use roughwall::{CollisionLaw, ShParams};
 use std::time::Instant;
 
 fn laws() -> [CollisionLaw; 2] {

@@ -3,9 +3,10 @@
 //! CI-sized: walls of ~40 correlation lengths, 10⁴ particles per condition.
 
 use crate::common::deterministic::*;
-use roughwall::collision::{CollisionLaw, ShParams};
-use roughwall::deterministic::{ConditionRun, Tracker};
+use roughwall::deterministic::ConditionRun;
 use roughwall::wall::delta_gamma;
+use roughwall::Tracker;
+use roughwall::{CollisionLaw, ShParams};
 
 const N: usize = 10_000;
 
@@ -32,7 +33,7 @@ fn sec3(dxi: f64, dze: f64, seed: u64) -> Vec<(f64, f64, ConditionRun)> {
 }
 
 /// `f` mirrored in z (`z → −z`, node `iz` ↦ `(nz − iz) mod nz`) or in x.
-fn mirrored(f: &roughwall::surface::HeightField, in_z: bool) -> roughwall::surface::HeightField {
+fn mirrored(f: &roughwall::HeightField, in_z: bool) -> roughwall::HeightField {
     let mut g = f.clone();
     for iz in 0..f.nz {
         for ix in 0..f.nx {
@@ -254,7 +255,7 @@ fn sommerfeld_huber_never_gains_energy_and_keeps_the_pushing_direction() {
     // Sec. 4: glass on steel, D = 500 µm, u ~ N(5.91, 1.16) m/s, on the high-anisotropy
     // wall (3.8°, 7.5°) and the 2-D wall (3.8°, 0°).
     let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
-    let speed = roughwall::incidence::SpeedLaw::horizontal(5.91, 1.16);
+    let speed = roughwall::SpeedLaw::horizontal(5.91, 1.16);
     let hra = wall(3.8, 7.5, 8.0, 40.0, 4);
     let two_d = wall(3.8, 0.0, 8.0, 40.0, 5);
     for (f, dv, sign) in [(&hra, dev(3.8, 7.5), -1.0), (&two_d, dev(3.8, 0.0), 1.0)] {

@@ -3,9 +3,9 @@
 //! (through the C library: `RW_INVALID_PARAMETER`), and memory stays bounded however many
 //! walls a host builds and frees. (Its own test file: the bound is per process.)
 
-use roughwall::calibrated::table_file::MAX_DISTINCT_TABLES;
+use roughwall::calibrated::MAX_DISTINCT_TABLES;
 use roughwall::calibrated::{EscapeCounts, EscapeTable};
-use roughwall::wall_model::{WallModel, WallParams};
+use roughwall::{WallModel, WallParams};
 
 #[test]
 fn distinct_escape_tables_are_bounded_per_process() {

@@ -278,10 +278,10 @@ fn dynamic_converges_at_both_scales() {
 /// Bad input is a one-line `Error::Input` with a clear message.
 #[test]
 fn errors() {
-    let one_line = |e: roughwall::error::Error| {
+    let one_line = |e: roughwall::Error| {
         let s = e.to_string();
         assert!(
-            matches!(e, roughwall::error::Error::Input(_)) && !s.contains('\n'),
+            matches!(e, roughwall::Error::Input(_)) && !s.contains('\n'),
             "{s}"
         );
         s

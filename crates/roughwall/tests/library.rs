@@ -13,5 +13,6 @@ mod deterministic_hard;
 mod deterministic_physics;
 mod force_models;
 mod own_model;
+mod parameters;
 mod stochastic_sampler;
 mod surface_table1;

@@ -10,16 +10,17 @@
 //! so the test asserts that, not just that it runs.
 
 use nalgebra::Vector3;
-use roughwall::collision::CollisionLaw;
-use roughwall::error::Result;
-use roughwall::incidence::{IncidentCondition, SpeedLaw};
-use roughwall::models::params::{refuse_delta_gamma, refuse_escape_table};
-use roughwall::models::simulate::{fill_block, tally_spec, ModelSetup};
-use roughwall::models::{rebound_with, ModelParams, NamedModel, RoughWallModel};
-use roughwall::stochastic::virtual_wall::SeenWall;
+use roughwall::models::rebound_with;
+use roughwall::models::{fill_block, tally_spec, ModelSetup};
+use roughwall::models::{refuse_delta_gamma, refuse_escape_table};
+use roughwall::stochastic::SeenWall;
 use roughwall::stochastic::{Contact, Rebound};
 use roughwall::tally::{BlockTally, ConditionTally, Quantity};
-use roughwall::wall::Deviations;
+use roughwall::CollisionLaw;
+use roughwall::Deviations;
+use roughwall::Result;
+use roughwall::{IncidentCondition, SpeedLaw};
+use roughwall::{ModelParams, NamedModel, RoughWallModel};
 
 /// A wall whose every element is tilted by `tilt` (rad) towards the particle.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -3,7 +3,7 @@
 //! grazing, moderate and normal incidence and Δγ ∈ {0.5°, 3.8°, 15°}.
 use rand::SeedableRng;
 use rand_xoshiro::Xoshiro256PlusPlus;
-use roughwall::stochastic::shadow_effect::{bin_probability, density, ShadowSampler};
+use roughwall::stochastic::{bin_probability, density, ShadowSampler};
 
 const N: usize = 40_000;
 const BINS: usize = 40;

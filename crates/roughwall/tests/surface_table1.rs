@@ -2,9 +2,10 @@
 //! criteria, at a CI-friendly size (same δ/c_L as Table 1, L/c_Lx = 128) and on the full
 //! N = 5001 surface of `configs/cases/table1.toml` (about 2 s with the test profile).
 use roughwall::surface::generate;
-use roughwall::surface::stats::surface_stats;
-use roughwall::surface::SurfaceSpec;
-use roughwall::wall::{rotated_moments, Deviations};
+use roughwall::surface::surface_stats;
+use roughwall::wall::rotated_moments;
+use roughwall::Deviations;
+use roughwall::SurfaceSpec;
 
 fn check_table1(spec: &SurfaceSpec, seed: u64) {
     let betas: Vec<f64> = [0.0f64, 30.0, 60.0, 90.0]

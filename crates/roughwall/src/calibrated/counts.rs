@@ -15,11 +15,11 @@ use nalgebra::Vector3;
 /// Sums are exact, so the counts do not depend on the order or the thread that added them.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EscapeCounts {
-    /// Collisions per cell `(stage, x_in bin, x_out bin)` of the escape table ([`CELLS`]
+    /// Collisions per cell `(stage, x_in bin, x_out bin)` of the escape table (`CELLS`
     /// cells), `x_in` and `x_out` the reduced slopes of the incident and rebound velocities
-    /// ([`super::slope_space::reduced_slope`]). Counted for the histories that escaped (lost
+    /// (`super::slope_space::reduced_slope`). Counted for the histories that escaped (lost
     /// ones are not), and only rebounds away from the mean wall (`α⁺ > 0`) with `x_out`
-    /// below [`X_OUT_MAX`].
+    /// below `X_OUT_MAX`.
     pub collisions: Vec<u64>,
     /// Of the [`collisions`](Self::collisions) of each cell, those after which the particle
     /// left the wall (the last collision of its history), same cells: `escaped / collisions`
@@ -27,7 +27,7 @@ pub struct EscapeCounts {
     pub escaped: Vec<u64>,
     /// First wall elements by `(x_in, g)`: seen by the deterministic particles, i.e. the
     /// element each collision hits (the first one met along the particle's path), per cell
-    /// `(stage, x_in bin, s bin)` ([`ELEMENT_CELLS`] cells), with `g = γ/Δγ(β)` the element's
+    /// `(stage, x_in bin, s bin)` (`ELEMENT_CELLS` cells), with `g = γ/Δγ(β)` the element's
     /// reduced inclination (`β` of the velocity before the collision) and `s = g − x_in`; an
     /// `s` off the axis is not counted.
     pub element_deterministic: Vec<u64>,
@@ -36,8 +36,8 @@ pub struct EscapeCounts {
     /// [`element_deterministic`](Self::element_deterministic), one draw per collision, in
     /// the same cells; a draw with `s` off the axis is not counted.
     pub element_model: Vec<u64>,
-    /// Sums of `x_in` (clamped to the axis, in [`X_SUM_UNIT`]s of 10⁻⁶) per
-    /// `(slice, x_in bin)` row ([`ROWS`] rows) of the collisions counted in the escape table
+    /// Sums of `x_in` (clamped to the axis, in `X_SUM_UNIT`s of 10⁻⁶) per
+    /// `(slice, x_in bin)` row (`ROWS` rows) of the collisions counted in the escape table
     /// ([`collisions`](Self::collisions)). A row's mean `x_in` is where its values belong:
     /// the calibration's directions fill a bin unevenly, and the laws change fast with
     /// `x_in` at grazing incidence.
@@ -53,11 +53,11 @@ pub struct EscapeCounts {
     /// `Δγ`.
     pub first_count: Vec<u64>,
     /// Sum of `Δγ(β)` of the first collisions counted in [`first_count`](Self::first_count),
-    /// per first stage, in [`DG_SUM_UNIT`]s of degrees (10⁻⁶°): the stage's mean `Δγ` is
+    /// per first stage, in `DG_SUM_UNIT`s of degrees (10⁻⁶°): the stage's mean `Δγ` is
     /// `first_dg_sum · DG_SUM_UNIT / first_count` degrees.
     pub first_dg_sum: Vec<i64>,
     /// Successive elements' transverse residuals per later stage
-    /// ([`super::transverse_memory`]).
+    /// (`super::transverse_memory`).
     pub transverse: TransverseCounts,
 }
 
@@ -122,7 +122,7 @@ impl EscapeCounts {
     }
 
     /// Counts a later collision's transverse residual `z` beside `z_prev` of the element the
-    /// particle has just left ([`super::transverse_memory`]); a first collision has none.
+    /// particle has just left (`super::transverse_memory`); a first collision has none.
     pub fn push_transverse(&mut self, stage: Stage, z_prev: f64, z: f64) {
         if let Some(k) = stage.later_index() {
             self.transverse.push(k, z_prev, z);

@@ -17,7 +17,7 @@ pub const X_IN_BINS: usize = X_IN_EDGES.len() - 1;
 /// later ones by the memory `q` ([`Q_EDGES`]).
 pub const SLICES: usize = FIRST_STAGES + 1 + Q_EDGES.len();
 
-/// First-collision stages (by [`FIRST_DG_EDGES_DEG`]).
+/// First-collision stages (by `FIRST_DG_EDGES_DEG`).
 pub const FIRST_STAGES: usize = 1 + FIRST_DG_EDGES_DEG.len();
 
 /// Later stages (the transverse memory is per later stage: the valley's depth `q` sets the
@@ -37,9 +37,9 @@ pub(super) const DG: f64 = (G_MAX - G_MIN) / G_BINS as f64;
 
 pub(super) const DX_OUT: f64 = X_OUT_MAX / X_OUT_BINS as f64;
 
-/// Which collision of a history: the first (its `Δγ(β)` bin, [`FIRST_DG_EDGES_DEG`]), or a
+/// Which collision of a history: the first (its `Δγ(β)` bin, `FIRST_DG_EDGES_DEG`), or a
 /// later one with the memory of the element the particle has just left (its `q` bin,
-/// [`Q_EDGES`]).
+/// `Q_EDGES`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Stage(pub(super) usize);
 
@@ -57,7 +57,7 @@ impl Stage {
     }
 
     /// The first-collision stage that counts a particle whose incident plane has roughness
-    /// angle `delta_gamma` (radians; a NaN counts as 0): its [`FIRST_DG_EDGES_DEG`] bin.
+    /// angle `delta_gamma` (radians; a NaN counts as 0): its `FIRST_DG_EDGES_DEG` bin.
     #[inline]
     pub fn first(delta_gamma: f64) -> Stage {
         let d = delta_gamma.to_degrees();

@@ -22,7 +22,7 @@ use rand_distr::StandardNormal;
 /// direction `β` on the wall of slope spreads `slopes` ([`slope_deviations`]): `s_t` less
 /// its conditional mean given `s_l` (Eq. 30 in slopes), over its conditional spread — the
 /// standard normal the `calibrated` model draws it from. The calibrated model's later
-/// collisions remember it ([`super::transverse_memory`]); `rebound calibrate` counts it the
+/// collisions remember it (`super::transverse_memory`); `rebound calibrate` counts it the
 /// same way. 0 where Eq. (30) leaves `s_t` no spread.
 pub fn transverse_residual(n: &Vector3<f64>, beta: f64, slopes: &Deviations) -> f64 {
     let moments = rotated_moments(slopes, beta);
@@ -134,7 +134,7 @@ impl CalibratedIncidence {
 
     /// The proposal's element without the table's correction: the slope along the path from
     /// the shadow law in slopes (Radenkovic & Simonin 2021, Eq. 32 at vanishing roughness,
-    /// `(g − x)e^{−g²/2}`: [`super::slope_space::proposal`]), the transverse slope from
+    /// `(g − x)e^{−g²/2}`: `super::slope_space::proposal`), the transverse slope from
     /// Eq. (30) in slopes afresh.
     #[inline]
     pub fn draw_proposal<R: Rng + ?Sized>(&self, rng: &mut R) -> SeenWall {
@@ -164,7 +164,7 @@ impl CalibratedIncidence {
 /// A rebound off the `calibrated` model with the table `table`, for a particle moving
 /// towards the wall `wall` (the trivial cases ruled out by the caller) whose direction is
 /// `inc`: the paper's virtual walls (Eqs. 26, 29–33, for the current direction, in the wall's
-/// slopes: [`super::slope_space`]; the element's law corrected by the calibrated weight), the
+/// slopes: `super::slope_space`; the element's law corrected by the calibrated weight), the
 /// collision law, and then the particle leaves with the calibrated probability
 /// `P(escape | stage, tan α/σ(β), tan α⁺/σ(β⁺))` of the table — or it is trapped and meets
 /// the wall again *with its rebound velocity* (rising or not: the shadow law continued to

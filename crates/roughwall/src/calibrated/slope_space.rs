@@ -30,7 +30,7 @@ use std::cell::RefCell;
 /// angles have the RMS `(Δξ, Δζ)` of `dev` (`ξ' = asin(h_x/N)`, `N = √(1 + h_x² + h_z²)`;
 /// the measurement of `crate::surface::stats::measured_deviations`). A fixed point of
 /// `σ ← σ Δ/RMS(σ)` (about 1 ms: some 10 steps of a 57 × 57 rule), kept per thread for the
-/// last [`CACHED_WALLS`] walls: a CFD code calls the model once per wall hit, often
+/// last `CACHED_WALLS` walls: a CFD code calls the model once per wall hit, often
 /// alternating between a few walls (a thread cycling through more pays the 1 ms per hit).
 pub fn slope_deviations(dev: &Deviations) -> Deviations {
     thread_local! {

@@ -356,7 +356,7 @@ impl EscapeTable {
 
     /// The residual of the transverse inclination of a later collision's element after an
     /// element of residual `z_prev`, from a standard normal draw `n`
-    /// ([`super::transverse_memory`]); a first collision has no memory: `n`.
+    /// (`super::transverse_memory`); a first collision has no memory: `n`.
     #[inline]
     pub fn transverse_residual(&self, stage: Stage, z_prev: f64, n: f64) -> f64 {
         match stage.later_index() {
@@ -378,7 +378,7 @@ impl EscapeTable {
     /// The probability that a particle leaves the wall after a collision of `stage` from
     /// reduced incident angle `x_in` with reduced rebound angle `x_out` (bilinear between
     /// the rows' positions along `x_in` and the bin centres along `x_out`, clamped at the
-    /// edges; 1 beyond `x_out =` [`X_OUT_MAX`], 0 for `x_out ≤ 0`).
+    /// edges; 1 beyond `x_out =` `X_OUT_MAX`, 0 for `x_out ≤ 0`).
     #[inline]
     pub fn p_escape(&self, stage: Stage, x_in: f64, x_out: f64) -> f64 {
         if x_out.is_nan() || x_out <= 0.0 {

@@ -27,14 +27,14 @@ use super::grid::LATER_STAGES;
 /// Pairs of successive elements' residuals per later stage: what a calibration counts.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TransverseCounts {
-    /// Pairs `(z_prev, z)` counted per later stage ([`LATER_STAGES`] entries): later
+    /// Pairs `(z_prev, z)` counted per later stage (`LATER_STAGES` entries): later
     /// collisions whose residuals are both not NaN.
     pub pairs: Vec<u64>,
-    /// `Σ z_prev²` per later stage, of the residuals clamped to ±[`Z_MAX`], in
-    /// [`TRANSVERSE_UNIT`](super::constants::TRANSVERSE_UNIT)s (integers, exact in any order).
+    /// `Σ z_prev²` per later stage, of the residuals clamped to ±`Z_MAX`, in
+    /// `TRANSVERSE_UNIT`s (integers, exact in any order).
     pub prev_sq_sum: Vec<i64>,
-    /// `Σ z_prev z` per later stage, of the residuals clamped to ±[`Z_MAX`], in
-    /// [`TRANSVERSE_UNIT`](super::constants::TRANSVERSE_UNIT)s: `cross_sum / prev_sq_sum` is
+    /// `Σ z_prev z` per later stage, of the residuals clamped to ±`Z_MAX`, in
+    /// `TRANSVERSE_UNIT`s: `cross_sum / prev_sq_sum` is
     /// the regression slope `b` of `z` on `z_prev`.
     pub cross_sum: Vec<i64>,
 }

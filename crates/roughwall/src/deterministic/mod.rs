@@ -1,8 +1,12 @@
 //! `rebound deterministic`: particle-centre bouncing on a generated anisotropic
 //! rough wall (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5 and 4; docs/physics.md §5).
-pub mod scene;
-pub mod trace;
+pub(crate) mod scene;
+pub(crate) mod trace;
 
+pub use scene::{
+    build_surfaces, choose_surface, generate_surface, realisation_seed, realisations,
+    surface_from_field, BuiltSurface, SceneOptions, SphereDilation, SurfacePlan, WallDeviations,
+};
 pub use trace::{Fate, History, HitInfo, LostReason, Tracker, DEFAULT_MAX_COLLISIONS};
 
 use crate::angles::{

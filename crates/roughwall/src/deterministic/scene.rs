@@ -419,7 +419,7 @@ pub fn build_surface(
 }
 
 /// A surface made elsewhere (e.g. a measured scan turned into a periodic wall,
-/// [`crate::surface::scan::periodic::mirrored_wall`]) as the run's surface: split by
+/// [`crate::scan::periodic::mirrored_wall`]) as the run's surface: split by
 /// `triangulation`, and for a sphere dilated to the surface its centre rides on.
 /// `source` names where it came from in the manifest; `generate_s` is the time it took.
 pub fn surface_from_field(

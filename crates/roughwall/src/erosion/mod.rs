@@ -2,24 +2,28 @@
 //! one impact removes, from the particle's mass, its speed and its impact angle to the *local*
 //! wall element (the facet hit, or the virtual wall sampled), by one of three laws:
 //!
-//! * [`finnie`]: Finnie (1960), ductile micro-cutting, in OpenFOAM's form;
-//! * [`dnv`]: DNV RP-O501, as implemented in Equinor's `pysand`;
-//! * [`oka`]: Oka, Okamura & Yoshida (2005).
+//! * `finnie`: Finnie (1960), ductile micro-cutting, in OpenFOAM's form;
+//! * `dnv`: DNV RP-O501, as implemented in Equinor's `pysand`;
+//! * `oka`: Oka, Okamura & Yoshida (2005).
 //!
 //! "Model only what a scene needs": a case without `[erosion]` computes none of it.
 
-pub mod dnv;
-pub mod finnie;
-pub mod oka;
+pub(crate) mod dnv;
+pub(crate) mod finnie;
+pub(crate) mod oka;
+
+pub use dnv::{AngleDependency, Dnv};
+pub use finnie::Finnie;
+pub use oka::{Oka, OkaInput};
 
 /// An erosion law with its parameters (SI units).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ErosionModel {
-    /// Finnie (1960), ductile micro-cutting, in OpenFOAM's form ([`finnie`]).
+    /// Finnie (1960), ductile micro-cutting, in OpenFOAM's form (`finnie`).
     Finnie(finnie::Finnie),
-    /// DNV RP-O501 (2015), Sec. 3, as implemented in Equinor's `pysand` ([`dnv`]).
+    /// DNV RP-O501 (2015), Sec. 3, as implemented in Equinor's `pysand` (`dnv`).
     Dnv(dnv::Dnv),
-    /// Oka, Okamura & Yoshida (2005), with the particle-size effect of Part 2 ([`oka`]).
+    /// Oka, Okamura & Yoshida (2005), with the particle-size effect of Part 2 (`oka`).
     Oka(oka::Oka),
 }
 

@@ -48,7 +48,8 @@ pub fn stiffness(e_star: f64, r1: f64, r2: f64) -> f64 {
 
 /// Complete elliptic integrals K(m), E(m) (parameter m = e²) by the arithmetic–geometric mean
 /// (Abramowitz & Stegun 1964, §17.6), for the exact Hertz ellipse (Johnson 1985, §4.2).
-pub fn elliptic_ke(m: f64) -> (f64, f64) {
+#[cfg(test)]
+fn elliptic_ke(m: f64) -> (f64, f64) {
     elliptic_ke_kp(m, (1.0 - m).sqrt())
 }
 

@@ -11,13 +11,18 @@
 //! `D` is the volume-equivalent diameter (Hu et al. 2021, Sec. 2 and Table 1), λ = b/a ≥ 1
 //! (b semi-major, a semi-minor axis), β the angle between the major axis and the wall.
 pub mod hertz_dynamic;
-pub mod hertz_rigid;
+pub(crate) mod hertz_rigid;
 pub mod hertz_sphere;
 pub mod hu2021;
 pub mod material;
-pub mod report;
-pub mod spheroid;
-pub mod sweep;
+pub(crate) mod report;
+pub(crate) mod spheroid;
+pub(crate) mod sweep;
+
+pub use report::{
+    accuracy, convergence, Accuracy, Convergence, CONVERGENCE_STEPS, REFERENCE_STEPS,
+};
+pub use sweep::{Row, Sweep};
 
 use crate::error::{Error, Result};
 

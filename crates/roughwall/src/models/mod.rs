@@ -22,41 +22,44 @@
 //! This module sits above the models it lists: [`crate::stochastic`] (the paper's model and
 //! what all share) and [`crate::calibrated`] are below it and know nothing of the others.
 //!
-//! * [`rough_wall_model`]: the traits, [`RoughWallModel`] (a model rebounds particles) and
+//! * `rough_wall_model`: the traits, [`RoughWallModel`] (a model rebounds particles) and
 //!   [`NamedModel`] (a case file names it; it checks its own parameters), and [`ModelParams`].
-//! * one file per model: [`radenkovic_simonin_2021`], [`sommerfeld_huber_1999`],
-//!   [`gaussian_angle`], [`gaussian_tilt`], [`normal_perturbation`] (with what the four
-//!   isotropic ones share, [`isotropic`]) and [`calibrated`];
-//! * [`registry`]: the list of the models, and [`AnyModel`], the dispatch between them;
-//! * [`rebound`]: one rebound from any model, the trivial cases ruled out alike;
-//! * [`simulate`]: many rebounds of one incident condition, parallel and reproducible.
+//! * one file per model: `radenkovic_simonin_2021`, `sommerfeld_huber_1999`,
+//!   `gaussian_angle`, `gaussian_tilt`, `normal_perturbation` (with what the four
+//!   isotropic ones share, `isotropic`) and `calibrated`;
+//! * `registry`: the list of the models, and [`AnyModel`], the dispatch between them;
+//! * `rebound`: one rebound from any model, the trivial cases ruled out alike;
+//! * `simulate`: many rebounds of one incident condition, parallel and reproducible.
 //!
 //! Adding a model: its file here implementing [`RoughWallModel`] and [`NamedModel`], its
-//! `mod` line below and its line in [`registry`]'s list, a test, and its row in the table
+//! `mod` line below and its line in `registry`'s list, a test, and its row in the table
 //! above and in `docs/cases.md` (CONTRIBUTING.md).
 
-pub mod calibrated;
-pub mod gaussian_angle;
-pub mod gaussian_tilt;
-pub mod isotropic;
-pub mod normal_perturbation;
-pub mod params;
-pub mod radenkovic_simonin_2021;
-pub mod rebound;
-pub mod registry;
-pub mod rough_wall_model;
-pub mod simulate;
-pub mod sommerfeld_huber_1999;
+pub(crate) mod calibrated;
+pub(crate) mod gaussian_angle;
+pub(crate) mod gaussian_tilt;
+pub(crate) mod isotropic;
+pub(crate) mod normal_perturbation;
+pub(crate) mod params;
+pub(crate) mod radenkovic_simonin_2021;
+pub(crate) mod rebound;
+pub(crate) mod registry;
+pub(crate) mod rough_wall_model;
+pub(crate) mod simulate;
+pub(crate) mod sommerfeld_huber_1999;
 
 pub use calibrated::Calibrated;
-pub use gaussian_angle::GaussianAngle;
-pub use gaussian_tilt::GaussianTilt;
-pub use normal_perturbation::NormalPerturbation;
+pub use gaussian_angle::{GaussianAngle, GaussianAngleWall};
+pub use gaussian_tilt::{GaussianTilt, GaussianTiltWall};
+pub use isotropic::{Isotropic, IsotropicDraw, IsotropicIncidence};
+pub use normal_perturbation::{NormalPerturbation, NormalPerturbationWall};
+pub use params::{refuse_delta_gamma, refuse_escape_table};
 pub use radenkovic_simonin_2021::RadenkovicSimonin2021;
 pub use rebound::{rebound_from_observed, rebound_with};
 pub use registry::{AnyIncidence, AnyModel};
 pub use rough_wall_model::{ModelParams, NamedModel, RoughWallModel};
-pub use sommerfeld_huber_1999::SommerfeldHuber1999;
+pub use simulate::{fill_block, gamma_model_curve, outcome, rebound_of, tally_spec, ModelSetup};
+pub use sommerfeld_huber_1999::{SommerfeldHuber1999, SommerfeldHuberWall};
 
 #[cfg(test)]
 mod tests {

@@ -63,7 +63,7 @@ pub trait NamedModel: RoughWallModel + Sized {
     const NAME: &'static str;
 
     /// The model with `params`, or a one-line error naming the key that does not apply to
-    /// it or is out of range ([`super::params`] has the shared checks).
+    /// it or is out of range (`super::params` has the shared checks).
     fn from_params(params: &ModelParams) -> Result<Self>;
 }
 

@@ -127,7 +127,7 @@ pub fn field_bytes(p: &SurfaceSpec) -> u64 {
     }
 }
 
-/// Peak memory of [`generate`] for `p` in bytes: the heights ([`field_bytes`]) plus the
+/// Peak memory of [`generate`] for `p` in bytes: the heights (`field_bytes`) plus the
 /// half-spectrum (a line of it for 1-D roughness, none for a flat or `z`-only field).
 pub fn generation_bytes(p: &SurfaceSpec) -> u64 {
     let n = p.nodes.max(1) as u64;

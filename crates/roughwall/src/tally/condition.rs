@@ -100,9 +100,9 @@ pub struct TallySpec {
     /// The particle mass (kg) when the case tallies erosion; `None` without `[erosion]`.
     pub erosion_particle_mass_kg: Option<f64>,
     /// Surface realisations the histories are spread over (`[deterministic] surfaces`;
-    /// history `i` on realisation [`realisation_of`]`(i, N)`): 1 for one surface and for the
+    /// history `i` on realisation `realisation_of``(i, N)`): 1 for one surface and for the
     /// stochastic model. With more than one, the standard error of every mean includes the
-    /// spread between realisations ([`ensemble_se`]).
+    /// spread between realisations (`ensemble_se`).
     pub realisations: u32,
 }
 
@@ -603,7 +603,7 @@ impl ConditionTally {
 
     /// Standard errors (degrees) of the running mean `α⁺` and mean `β⁺ − β⁻`, the
     /// quantities the stopping rule watches, with the spread between surface realisations
-    /// ([`ensemble_se`]); `None` before two particles were followed.
+    /// (`ensemble_se`); `None` before two particles were followed.
     pub fn running_se(&self) -> Option<(f64, f64)> {
         let se = |i: usize| quantity_se(&self.running, &self.running_by_realisation, i);
         Some((se(ALPHA_OUT)?, se(DBETA)?))

@@ -4,7 +4,7 @@
 use rand::SeedableRng;
 use rand_distr::{Distribution, StandardNormal};
 use rand_xoshiro::Xoshiro256PlusPlus;
-use roughwall::surface::HeightField;
+use roughwall::HeightField;
 use rustfft::num_complex::Complex;
 use rustfft::FftPlanner;
 
@@ -118,10 +118,11 @@ pub fn std(v: &[f64]) -> f64 {
     (v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0)).sqrt()
 }
 
-use roughwall::collision::CollisionLaw;
-use roughwall::deterministic::{run_condition, ConditionRun, ModelSetup, Tracker};
-use roughwall::incidence::{IncidentCondition, SpeedLaw};
-use roughwall::wall::Deviations;
+use roughwall::deterministic::{run_condition, ConditionRun, ModelSetup};
+use roughwall::CollisionLaw;
+use roughwall::Deviations;
+use roughwall::Tracker;
+use roughwall::{IncidentCondition, SpeedLaw};
 
 /// A Gaussian wall with normal-angle deviations `(Δξ, Δζ)` in degrees (Eq. 15,
 /// `c_L = √2 h / Δ`, `h = 1`), spacing `c_L,min / per_c`, side `≥ side · c_L,max`.

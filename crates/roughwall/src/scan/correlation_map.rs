@@ -155,7 +155,7 @@ pub fn map_bytes(nx: usize, ny: usize) -> u64 {
 }
 
 /// The autocorrelation `R(τ)/R(0)` of the levelled scan `f` (mean 0) for the lags within
-/// `half_width_m` (m) of the origin along the scan's `x` and `y` (at most [`MAX_HALF_LAGS`]
+/// `half_width_m` (m) of the origin along the scan's `x` and `y` (at most `MAX_HALF_LAGS`
 /// steps and the scan's own extent).
 pub fn correlation_map(f: &ScanField, half_width_m: [f64; 2]) -> CorrelationMap {
     correlation_map_within(f, half_width_m, MAX_MAP_POINTS)
@@ -317,9 +317,9 @@ fn lagged_sums(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::scan::correlation::correlation;
-    use crate::surface::scan::lay::lay_angle;
-    use crate::surface::scan::tests::sec3_wall;
+    use crate::scan::correlation::correlation;
+    use crate::scan::lay::lay_angle;
+    use crate::scan::tests::sec3_wall;
 
     /// The lagged mean products, pair by pair.
     fn brute_force(f: &ScanField, s: usize, hx: usize, hy: usize) -> Vec<f64> {

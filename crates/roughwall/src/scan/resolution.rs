@@ -108,7 +108,7 @@ impl Resolution {
         self.exact_fraction < MIN_EXACT_FRACTION || self.correlation_areas < MIN_CORRELATION_AREAS
     }
 
-    /// Fewer than [`MIN_PIXELS_PER_LENGTH`] pixels per `c_L` along or across the lay.
+    /// Fewer than `MIN_PIXELS_PER_LENGTH` pixels per `c_L` along or across the lay.
     pub fn too_coarse(&self) -> bool {
         self.pixels_per_length()
             .iter()
@@ -116,7 +116,7 @@ impl Resolution {
     }
 
     /// The direction (0 along, 1 across the lay) with the fewest pixels per `c_L`, and
-    /// [`finite_difference_ratio`] there.
+    /// `finite_difference_ratio` there.
     pub fn coarsest(&self) -> (usize, f64) {
         let p = self.pixels_per_length();
         let k = if p[1] < p[0] { 1 } else { 0 };
@@ -164,8 +164,8 @@ pub struct SeenBy {
 }
 
 /// For the point particle and then each of `diameters_m` (m, `> 0`): the deviations along and
-/// across the scan's lay of the particle's centre surface ([`seen_deviations`]; the point's
-/// are the scan's own, with no dilation), and the scan's [`resolution`] for it. `None`
+/// across the scan's lay of the particle's centre surface (`seen_deviations`; the point's
+/// are the scan's own, with no dilation), and the scan's `resolution` for it. `None`
 /// without a lay (no cell with four valid corners).
 pub fn seen_by(c: &Characterisation, diameters_m: &[f64]) -> Option<Vec<SeenBy>> {
     let lay = c.lay?;
@@ -191,7 +191,7 @@ pub fn seen_by(c: &Characterisation, diameters_m: &[f64]) -> Option<Vec<SeenBy>>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::scan::{characterise, tests::sec3_wall, ScanField};
+    use crate::scan::{characterise, tests::sec3_wall, ScanField};
 
     /// The Sec. 3 wall (h = 1 µm, c_Lx = 32.4 µm, c_Lz = 10.8 µm, 8 nodes per c_Lz) on
     /// `nodes²` nodes, read every `every`-th node, as a characterised scan; `spike` (m) is

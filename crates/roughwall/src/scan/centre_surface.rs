@@ -228,7 +228,7 @@ mod tests {
     /// neighbourhood and nothing else.
     #[test]
     fn equals_the_periodic_dilation_away_from_edges_and_gaps() {
-        let g = crate::surface::scan::tests::sec3_wall(256, 5);
+        let g = crate::scan::tests::sec3_wall(256, 5);
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, g.heights.clone()).unwrap();
         let d = 50e-6;
         let open = centre_surface(&scan, d);
@@ -264,7 +264,7 @@ mod tests {
     /// diameter, and a sphere wider than the scan sees nothing exact.
     #[test]
     fn seen_deviations_follow_the_periodic_ones() {
-        let g = crate::surface::scan::tests::sec3_wall(512, 9);
+        let g = crate::scan::tests::sec3_wall(512, 9);
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, g.heights.clone()).unwrap();
         let angle = super::super::lay::lay_angle(&scan).unwrap();
         let ds = [0.0, 50e-6, 200e-6, 1.0];

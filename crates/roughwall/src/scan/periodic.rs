@@ -174,7 +174,7 @@ pub fn mirrored_wall(f: &ScanField, lay_angle: f64) -> Result<(HeightField, Mirr
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::scan::lay::lay;
+    use crate::scan::lay::lay;
 
     #[test]
     fn the_inscribed_rectangle() {
@@ -194,7 +194,7 @@ mod tests {
     /// periodic and continuous, its lay along x, and its deviations those of the scan.
     #[test]
     fn a_turned_wall_comes_back_along_its_lay() {
-        let g = crate::surface::scan::tests::sec3_wall(512, 4);
+        let g = crate::scan::tests::sec3_wall(512, 4);
         // Turn the periodic wall by φ = 30°: the scan's node (x, y) samples the wall at
         // u = x cos φ + y sin φ along its x and w = x sin φ − y cos φ along its z.
         let phi = 30f64.to_radians();

@@ -1,36 +1,46 @@
 //! A measured wall: a profilometer, confocal or AFM scan, levelled and characterised in the
 //! terms the models use (issue 29, "your own wall").
 //!
-//! Unlike a generated surface ([`super::HeightField`]) a scan is not periodic and may miss
+//! Unlike a generated surface ([`crate::surface::HeightField`]) a scan is not periodic and may miss
 //! points (masked or unmeasured: NaN here). Every statistic is taken over the valid points,
 //! or over the triangles and differences whose nodes are all valid, and partial sums are
 //! formed row by row and added in row order, so the results do not depend on the thread
 //! count.
 //!
-//! * [`levelling`]: least-squares polynomial form removal (plane and up to cubic).
-//! * [`parameters`]: ISO 25178-2 height and gradient parameters (Sq, Ssk, Sku, Sdq).
-//! * [`lay`]: the lay direction and the normal-angle deviations along and across it, the
+//! * `levelling`: least-squares polynomial form removal (plane and up to cubic).
+//! * `parameters`: ISO 25178-2 height and gradient parameters (Sq, Ssk, Sku, Sdq).
+//! * `lay`: the lay direction and the normal-angle deviations along and across it, the
 //!   `Δξ`, `Δζ` of Radenkovic & Simonin 2021 (Eq. 15) measured on the scan's triangles.
-//! * [`correlation`]: the autocorrelation along and across the lay, and the correlation
+//! * `correlation`: the autocorrelation along and across the lay, and the correlation
 //!   lengths.
-//! * [`periodic`]: the scan turned to its lay, cropped and mirror-tiled into a periodic wall
+//! * `periodic`: the scan turned to its lay, cropped and mirror-tiled into a periodic wall
 //!   the deterministic model bounces on.
-//! * [`centre_surface`]: the surface a sphere's centre rides on, for the deviations a
+//! * `centre_surface`: the surface a sphere's centre rides on, for the deviations a
 //!   particle of each diameter sees.
-//! * [`resolution`]: whether the scan is large and fine enough for those deviations.
+//! * `resolution`: whether the scan is large and fine enough for those deviations.
 //! * [`correlation_map`]: the areal autocorrelation over a window of lags.
 //! * [`notes`]: the wall card's notes, in words: where the wall or the scan falls outside
 //!   what the models assume or what the deviations need.
 
-pub mod centre_surface;
-pub mod correlation;
-pub mod correlation_map;
-pub mod lay;
-pub mod levelling;
-pub mod notes;
-pub mod parameters;
-pub mod periodic;
-pub mod resolution;
+pub(crate) mod centre_surface;
+pub(crate) mod correlation;
+pub(crate) mod correlation_map;
+pub(crate) mod lay;
+pub(crate) mod levelling;
+pub(crate) mod notes;
+pub(crate) mod parameters;
+pub(crate) mod periodic;
+pub(crate) mod resolution;
+
+pub use centre_surface::{centre_surface_bytes, SeenDeviations};
+pub use correlation::Correlation;
+pub use correlation_map::{correlation_map, map_bytes, CorrelationMap};
+pub use lay::{angle_histograms, lay_angle, Lay};
+pub use levelling::{level, MAX_DEGREE};
+pub use notes::{criteria, labelled, missing_fraction, notes, reach_um, spread};
+pub use parameters::{area_parameters, AreaParameters};
+pub use periodic::{mirrored_wall, MirroredWall};
+pub use resolution::{seen_by, Resolution, SeenBy};
 
 use crate::error::{Error, Result};
 use std::ops::Range;
@@ -184,7 +194,7 @@ pub struct Characterisation {
 
 /// Bytes [`characterise`] needs beside the scan's own heights, which it levels in place: the
 /// levelling's Legendre table (32 per column) and, per thread, the lay's row buffers (13
-/// values per column); rows are summed a chunk at a time ([`in_row_chunks`]). Small for a
+/// values per column); rows are summed a chunk at a time (`in_row_chunks`). Small for a
 /// scan, large for a strip 10⁸ points wide.
 pub fn characterisation_bytes(nx: usize) -> u64 {
     let threads = rayon::current_num_threads() as u64;

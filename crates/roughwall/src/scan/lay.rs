@@ -430,7 +430,7 @@ const HISTOGRAM_ROWS: usize = 64;
 
 /// Fixed-width histograms of `ξ' = −asin(n·l)` (along the direction `l = (cos φ, sin φ)`,
 /// `φ = angle` from the scan's `x` towards its `y`) and `ζ' = −asin(n·t)` (across it, `t =
-/// (−sin φ, cos φ)`) over the triangles [`lay`] measures, not centred: at `angle =`
+/// (−sin φ, cos φ)`) over the triangles `lay` measures, not centred: at `angle =`
 /// [`Lay::angle`] the samples whose standard deviations are [`Lay::delta_xi`] and
 /// [`Lay::delta_zeta`] (Radenkovic & Simonin 2021, Eq. 15), to be drawn against the normal
 /// law of Eqs. (12)–(13). `spec` gives the range `[−half_range, half_range)` (rad) and the
@@ -523,7 +523,7 @@ mod tests {
     fn the_lay_of_a_generated_wall_is_its_smooth_axis() {
         // h = 1 µm, Δξ = 2.5°, Δζ = 7.5° (c_L = √2 h/Δ, Eq. 15), 8 nodes per c_Lz: a
         // surface of 64 c_Lz by 21 c_Lx.
-        let g = crate::surface::scan::tests::sec3_wall(512, 11);
+        let g = crate::scan::tests::sec3_wall(512, 11);
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, g.heights.clone()).unwrap();
         let l = lay(&scan).unwrap();
         assert!(
@@ -572,7 +572,7 @@ mod tests {
     /// say, with the same counts for any thread count; a tilted plane fills one bin.
     #[test]
     fn angle_histograms_hold_every_triangle_whatever_the_threads() {
-        let g = crate::surface::scan::tests::sec3_wall(256, 5);
+        let g = crate::scan::tests::sec3_wall(256, 5);
         let mut h = g.heights.clone();
         h[300] = f64::NAN;
         let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, h).unwrap();
@@ -691,7 +691,7 @@ mod tests {
     /// compiled for the baseline CPU.
     #[test]
     fn row_kernels_give_the_bits_of_the_triangle_by_triangle_reference() {
-        let g = crate::surface::scan::tests::sec3_wall(67, 2);
+        let g = crate::scan::tests::sec3_wall(67, 2);
         let mut h: Vec<f64> = g.heights.iter().map(|h| 8.0 * h).collect();
         for k in [5, 67 * 7, 67 * 7 + 66, 67 * 30 + 31] {
             h[k] = f64::NAN;

@@ -8,8 +8,9 @@
 //! The tests hold every interface to this list: the C header's and the Fortran type's fields
 //! (`crates/roughwall/tests/c_header.rs`), Python's `Wall` signature, its stub and the PyO3
 //! signature, the case-file reference `docs/cases.md`, the finiteness checks of
-//! [`crate::WallModel::new`] and the message each range gives (`tests/wall_messages.rs`,
-//! `tests/parameters.rs`). A parameter added here and forgotten in one of them fails there.
+//! [`crate::WallModel::new`] and the message each range gives
+//! (`crates/roughwall/tests/parameters.rs`; the case file's reading of each number:
+//! the application's `tests/wall_messages.rs`). A parameter added here and forgotten in one of them fails there.
 
 /// What values a parameter takes.
 #[derive(Clone, Copy, Debug, PartialEq)]

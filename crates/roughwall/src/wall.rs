@@ -18,6 +18,14 @@ pub struct Deviations {
     pub delta_zeta: f64,
 }
 
+impl Deviations {
+    /// Whether the wall is smooth (`Δξ = Δζ = 0`): every rough-wall model then collides with
+    /// the mean wall (docs/physics.md §9).
+    pub fn is_smooth(&self) -> bool {
+        self.delta_xi == 0.0 && self.delta_zeta == 0.0
+    }
+}
+
 /// Above this deviation the low-roughness approximation (Radenkovic & Simonin 2021, Eq. 6) is
 /// stretched: run, but warn (the paper finds Eq. 14 exact up to about 0.13 rad = 7.5°, Sec.
 /// 2.4, Fig. 4, and writes Eq. 15 for that range).

@@ -185,7 +185,7 @@ impl WallModel {
                 scale_pow2(w, k)
             }
         };
-        if self.wall.delta_xi == 0.0 && self.wall.delta_zeta == 0.0 {
+        if self.wall.is_smooth() {
             // A smooth wall: the collision with the mean wall, as `stochastic::rebound` gives
             // it (no random draw, one candidate wall), but computed in the host's axes rather
             // than through the wall's frame and back. For the elastic law that is

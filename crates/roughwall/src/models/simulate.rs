@@ -26,7 +26,7 @@ pub struct ModelSetup<M = AnyModel> {
     pub law: CollisionLaw,
     /// `ψ` of the single-collision probability `P(n = 1 | α⁺) = tanh(ψ α⁺/Δγ(β⁺))` (Radenkovic &
     /// Simonin 2021, Eq. 34; 2 there and by default, 1.5 in Konan et al. 2009). Read by the
-    /// paper's model; a value that is not positive and finite makes every variant collide with
+    /// paper's model; a value that is not positive and finite makes every model collide with
     /// the mean wall.
     pub psi: f64,
     /// Particle diameter `D` (m), the lever arm `R = D/2` of the spin in the collision law.

@@ -25,13 +25,6 @@ pub struct Contact<'a> {
     pub diameter_m: f64,
 }
 
-impl Contact<'_> {
-    /// Whether the wall is smooth (`Δξ = Δζ = 0`): every model collides with the mean wall.
-    pub fn smooth_wall(&self) -> bool {
-        self.wall.delta_xi == 0.0 && self.wall.delta_zeta == 0.0
-    }
-}
-
 /// Upper bound on the candidate walls drawn for one rebound (a guard: the expected
 /// number is ~1–3 for every admissible input).
 pub const MAX_TRIES: u32 = 100_000;
@@ -158,7 +151,7 @@ impl Rebound {
 /// rules for the hard cases of docs/physics.md §9, not the paper's (its procedure, §3,
 /// assumes a rough wall and a particle that reaches it).
 pub(crate) fn trivial(u_in: Vector3<f64>, omega_in: Vector3<f64>, c: &Contact) -> Option<Rebound> {
-    let (smooth_wall, law, psi, diameter_m) = (c.smooth_wall(), c.law, c.psi, c.diameter_m);
+    let (smooth_wall, law, psi, diameter_m) = (c.wall.is_smooth(), c.law, c.psi, c.diameter_m);
     let j = Vector3::new(0.0, 1.0, 0.0);
     let finite = u_in.iter().chain(omega_in.iter()).all(|c| c.is_finite());
     if !finite || u_in.y >= 0.0 {

@@ -2,8 +2,9 @@
 //!
 //! The package version (`CARGO_PKG_VERSION`) does not change from commit to commit, so on its
 //! own it cannot tell two builds apart. This script hashes what produces the results — every
-//! `.rs` file of `src/` (the application), `crates/roughwall/src/` (the library) and
-//! `crates/topography/src/` (the scan readers), and the three manifests and `Cargo.lock`, as
+//! `.rs` file of `src/` (the application), `crates/roughwall/src/` (the library),
+//! `crates/topography/src/` (the scan readers) and `crates/outputs/src/` (CSV tables and
+//! figures), and their four manifests and `Cargo.lock`, as
 //! sorted relative paths with their contents (each length-prefixed) — with 64-bit FNV-1a, and
 //! exports the 16 hex digits as `ROUGHWALL_SOURCE_DIGEST`. Partial tallies record
 //! `version+src.DIGEST` and `rebound merge` refuses shards of another build. No dependency:
@@ -45,11 +46,13 @@ fn main() {
     rust_files(&root.join("src"), &mut files);
     rust_files(&root.join("crates/roughwall/src"), &mut files);
     rust_files(&root.join("crates/topography/src"), &mut files);
+    rust_files(&root.join("crates/outputs/src"), &mut files);
     for name in [
         "Cargo.toml",
         "Cargo.lock",
         "crates/roughwall/Cargo.toml",
         "crates/topography/Cargo.toml",
+        "crates/outputs/Cargo.toml",
         "crates/roughwall/src/calibrated/aniso-escape.csv",
     ] {
         let path = root.join(name);

@@ -15,7 +15,7 @@ if [ "$QUICK" = 1 ]; then
 else
   ALPHAS="-1.0, -2.0, -3.0, -5.0, -7.5, -10.0, -12.5, -15.0, -17.5, -20.0, -25.0, -30.0, -35.0, -40.0, -45.0, -50.0, -60.0, -70.0, -80.0, -90.0"
 fi
-# The walls, name:Δξ:Δζ (degrees), and the directions β⁻: src/report/paths.rs (paths.sh).
+# The walls, name:Δξ:Δζ (degrees), and the directions β⁻: crates/reproduce/src/paths.rs (paths.sh).
 BETAS=$(echo "$P_EROSION_BETAS_DEG" | sed 's/ /, /g')
 for w in $P_EROSION_WALLS; do
   IFS=: read -r name dxi dze <<< "$w"

@@ -1,6 +1,6 @@
 # The layout of results/: the directory names the reproduction scripts write and
-# `rebound report` reads. Generated from src/report/paths.rs (its test paths_sh checks it;
-# `ROUGHWALL_BLESS=1 cargo test --bin rebound paths_sh` rewrites it): do not edit.
+# `rebound report` reads. Generated from crates/reproduce/src/paths.rs (its test paths_sh checks
+# it; `ROUGHWALL_BLESS=1 cargo test -p reproduce paths_sh` rewrites it): do not edit.
 # Sourced by scripts/common.sh.
 P_REPRODUCIBILITY="reproducibility.txt"
 P_RADENKOVIC2021="radenkovic2021"

@@ -8,8 +8,8 @@
 //! `partial` tallies; `writers` write each command's tables (columns named in `schema`),
 //! figures (`figures`, the one place that imports `plotters`) and `run.toml`, on the
 //! primitives of `output`; `compare` reads two runs and computes their distances;
-//! `pipe_flow` reduces a code_saturne pipe-flow study (`pipe-stats`); `report` writes
-//! `results/REPORT.md`. Files import each other without cycles (checked by the test
+//! `pipe_flow` reduces a code_saturne pipe-flow study (`pipe-stats`). The paper-reproduction
+//! report is not here: `rebound report` runs `rebound-report` (crates/reproduce). Files import each other without cycles (checked by the test
 //! `tests/layering.rs`).
 
 mod case;
@@ -21,7 +21,6 @@ mod output;
 mod partial;
 mod pipe_flow;
 mod progress;
-mod report;
 mod run_context;
 mod runner;
 mod scan_wall;

@@ -253,3 +253,22 @@ fn a_long_run_logs_its_progress_when_stderr_is_not_a_terminal() {
     assert!(quiet.is_empty(), "{quiet}");
     rebound(&["stochastic", "--log-every=-1"]).refused("invalid `--log-every` = -1");
 }
+
+/// Issue 41, part 5: the report lives in its own binary, `rebound-report`; `rebound report`
+/// runs it (found beside `rebound`), so the command works as before.
+#[test]
+fn report_runs_the_report_binary_beside_rebound() {
+    let dir = Dir::new();
+    let results = dir.join("results");
+    std::fs::create_dir(&results).unwrap();
+    let r = rebound(&["report", "--results", results.to_str().unwrap()]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(r.stderr.starts_with("report: read "), "{}", r.stderr);
+    let md = std::fs::read_to_string(results.join("REPORT.md")).unwrap();
+    assert!(md.starts_with("# rebound: reproduction report\n") && md.contains("*Not run: `"));
+    // `--quiet` reaches it.
+    let r = rebound(&["--quiet", "report", "--results", results.to_str().unwrap()]);
+    assert_eq!((r.code, r.stderr.as_str()), (0, ""));
+    // A missing tree is refused before anything runs.
+    rebound(&["report", "--results", dir.join("nope").to_str().unwrap()]).refused("--results");
+}

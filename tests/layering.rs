@@ -64,6 +64,8 @@ fn files_import_each_other_without_cycles() {
     for (krate, dir) in [
         ("roughwall", "crates/roughwall/src"),
         ("topography", "crates/topography/src"),
+        ("outputs", "crates/outputs/src"),
+        ("reproduce", "crates/reproduce/src"),
         ("rebound", "src"),
     ] {
         let graph = import_graph(&repo_root().join(dir));
@@ -82,8 +84,43 @@ fn files_import_each_other_without_cycles() {
         match krate {
             "roughwall" => assert!(edge("models/simulate.rs", "collision.rs")),
             "topography" => assert!(edge("x3p.rs", "xml.rs")),
+            "outputs" => assert!(edge("csv.rs", "atomic.rs")),
+            "reproduce" => assert!(edge("calibration.rs", "paths.rs")),
             _ => assert!(edge("commands/stochastic.rs", "case/stochastic.rs")),
         }
+    }
+}
+
+/// The paper-reproduction report is not in the shipped binary (issue 41): the application
+/// depends on no crate that holds it, and has no module of that name; `rebound report` runs
+/// the separate binary `rebound-report`.
+#[test]
+fn the_report_is_apart_from_the_shipped_binary() {
+    let manifest = std::fs::read_to_string(repo_root().join("Cargo.toml")).unwrap();
+    let deps = section(&manifest, "[dependencies]");
+    assert!(deps.iter().any(|l| l.starts_with("roughwall")));
+    for line in deps {
+        let name = line.split(['=', '.', ' ']).next().unwrap_or("").trim();
+        assert_ne!(
+            name, "reproduce",
+            "the application depends on the report crate"
+        );
+    }
+    assert!(!repo_root().join("src/report").exists());
+    for file in rust_files(&repo_root().join("src")) {
+        let text = std::fs::read_to_string(&file).unwrap();
+        assert!(
+            !code(&text).contains("reproduce::"),
+            "{} uses the report's crate",
+            file.display()
+        );
+    }
+    // Nor does the report's crate reach into the application.
+    let manifest =
+        std::fs::read_to_string(repo_root().join("crates/reproduce/Cargo.toml")).unwrap();
+    for line in section(&manifest, "[dependencies]") {
+        let name = line.split(['=', '.', ' ']).next().unwrap_or("").trim();
+        assert_ne!(name, "rebound", "the report depends on the application");
     }
 }
 
@@ -155,6 +192,8 @@ fn modules_import_each_other_without_circles() {
     for (krate, dir) in [
         ("roughwall", "crates/roughwall/src"),
         ("topography", "crates/topography/src"),
+        ("outputs", "crates/outputs/src"),
+        ("reproduce", "crates/reproduce/src"),
         ("rebound", "src"),
     ] {
         let circles: Vec<Vec<String>> = strongly_connected(&module_graph(dir))

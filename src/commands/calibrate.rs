@@ -3,7 +3,7 @@
 
 use crate::case::{builtin, deterministic::prepare};
 use crate::cli::CalibrateArgs;
-use crate::commands::{begin_out, context, counted, grouped, warn, Summary, Wrote};
+use crate::commands::{begin_out, context, counted, grouped, warn, Summary};
 use crate::output::out_dir::check_out;
 use crate::output::write_atomic;
 use crate::runner::TallyOverrides;
@@ -116,7 +116,7 @@ pub fn run(args: &CalibrateArgs) -> Result<Summary> {
             grouped(table.counts().total())
         ),
         rate: Some((histories, "histories")),
-        wrote: Wrote::Dir(dir),
+        wrote: dir,
     })
 }
 

@@ -2,7 +2,7 @@
 //! the PDFs of two runs (see `crate::compare`, which reads and computes; this writes).
 
 use crate::cli::CompareArgs;
-use crate::commands::{begin_out, Summary, Wrote};
+use crate::commands::{begin_out, Summary};
 use crate::compare::{compare_runs, comparison_table, read_run, unmatched_table};
 use crate::output::{out_dir, write_atomic};
 use roughwall::{Error, Result};
@@ -19,7 +19,7 @@ pub fn run(args: &CompareArgs) -> Result<Summary> {
     Ok(Summary {
         work: format!("{rows} rows compared{unmatched}"),
         rate: None,
-        wrote: Wrote::Dir(args.out.clone()),
+        wrote: args.out.clone(),
     })
 }
 

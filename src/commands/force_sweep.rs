@@ -16,7 +16,7 @@
 //! `--out` is written as a whole (staging directory, lock, swap: `crate::output::out_dir`).
 use crate::case::{builtin, force::resolve};
 use crate::cli::ForceSweepArgs;
-use crate::commands::{begin_out, context, grouped, Summary, Wrote};
+use crate::commands::{begin_out, context, grouped, Summary};
 use crate::figures;
 use crate::writers::force_sweep::{
     accuracy_table, convergence_outputs, convergence_runs, manifest_table, rows_table,
@@ -55,6 +55,6 @@ pub fn run(args: &ForceSweepArgs) -> Result<Summary> {
     Ok(Summary {
         work: format!("{} sweep points", grouped(rows.len() as u64)),
         rate: Some((rows.len() as u64, "points")),
-        wrote: Wrote::Dir(dir),
+        wrote: dir,
     })
 }

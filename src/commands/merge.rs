@@ -108,6 +108,6 @@ pub fn run(args: &MergeArgs) -> Result<Summary> {
         }
     }
     let dir = out.commit()?;
-    summary.wrote = crate::commands::Wrote::Dir(dir);
+    summary.wrote = dir;
     Ok(summary)
 }

@@ -29,16 +29,8 @@ pub struct Summary {
     pub work: String,
     /// Items done and their name, for a rate (e.g. `(1_200_000, "rebounds")`).
     pub rate: Option<(u64, &'static str)>,
-    /// What was written: a directory (its files are listed) or named files.
-    pub wrote: Wrote,
-}
-
-/// Where a command's outputs went.
-pub enum Wrote {
-    /// A whole output directory.
-    Dir(PathBuf),
-    /// Single files (`report` adds to an existing tree).
-    Files(Vec<PathBuf>),
+    /// The output directory written (its files are listed).
+    pub wrote: PathBuf,
 }
 
 impl Summary {
@@ -63,7 +55,7 @@ impl Summary {
                 grouped(particles)
             ),
             rate: Some((particles, unit)),
-            wrote: Wrote::Dir(dir.to_path_buf()),
+            wrote: dir.to_path_buf(),
         }
     }
 
@@ -75,14 +67,7 @@ impl Summary {
             }
             _ => String::new(),
         };
-        let wrote = match &self.wrote {
-            Wrote::Dir(d) => format!("{}/ ({})", d.display(), listing(d)),
-            Wrote::Files(f) => f
-                .iter()
-                .map(|p| p.display().to_string())
-                .collect::<Vec<_>>()
-                .join(", "),
-        };
+        let wrote = format!("{}/ ({})", self.wrote.display(), listing(&self.wrote));
         format!(
             "{command}: {} in {:.2} s{rate}; wrote {wrote}",
             self.work, seconds
@@ -259,7 +244,7 @@ fn dispatch(cli: &Cli) -> Result<Summary> {
         Command::Stochastic(a) => stochastic::run(a),
         Command::ForceSweep(a) => force_sweep::run(a),
         Command::Compare(a) => compare::run(a),
-        Command::Report(a) => report::run(a),
+        Command::Report(a) => Err(report::run(a, cli.quiet)),
         Command::Merge(a) => merge::run(a),
         Command::Calibrate(a) => calibrate::run(a),
         Command::Scan(a) => scan::run(a),

@@ -2,7 +2,7 @@
 //! (`crate::pipe_flow` reads and computes; this writes the tables, figures and `run.toml`).
 
 use crate::cli::PipeStatsArgs;
-use crate::commands::{begin_out, counted, Summary, Wrote};
+use crate::commands::{begin_out, counted, Summary};
 use crate::output::{out_dir, write_atomic};
 use crate::pipe_flow::{read, sums, tables};
 use roughwall::erosion::Finnie;
@@ -79,6 +79,6 @@ pub fn run(args: &PipeStatsArgs) -> Result<Summary> {
             hits
         ),
         rate: None,
-        wrote: Wrote::Dir(args.out.clone()),
+        wrote: args.out.clone(),
     })
 }

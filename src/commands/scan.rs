@@ -20,7 +20,7 @@
 use crate::case::builtin;
 use crate::case::scan::{generated_bytes, generated_scan, ReadScan, ScanSource};
 use crate::cli::ScanArgs;
-use crate::commands::{begin_out, context, warn, Summary, Wrote};
+use crate::commands::{begin_out, context, warn, Summary};
 use crate::figures;
 use crate::output::fmt_num;
 use crate::writers::scan::{manifest_table, summary_table, wall_card, Source};
@@ -315,7 +315,7 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
     Ok(Summary {
         work,
         rate: Some((points, "points")),
-        wrote: Wrote::Dir(dir),
+        wrote: dir,
     })
 }
 

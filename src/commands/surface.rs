@@ -9,7 +9,7 @@
 
 use crate::case::builtin;
 use crate::cli::SurfaceArgs;
-use crate::commands::{begin_out, context, counted, warn, Summary, Wrote};
+use crate::commands::{begin_out, context, counted, warn, Summary};
 use crate::figures;
 use crate::output::out_dir::place_file;
 use crate::writers::surface::{
@@ -127,6 +127,6 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
     Ok(Summary {
         work,
         rate: Some((nodes, "nodes")),
-        wrote: Wrote::Dir(dir),
+        wrote: dir,
     })
 }

@@ -20,14 +20,13 @@ pub mod compare;
 pub mod deterministic;
 pub mod force_sweep;
 pub mod pipe_flow;
-pub mod plot;
 pub mod png;
 pub mod scan;
 pub mod stochastic;
 pub mod surface;
 pub mod sweeps;
 
-pub use plot::{plot_grid_svg, plot_svg, Kind, Plot, Series};
+pub use outputs::{plot, plot_grid_svg, plot_svg, Kind, Plot, Series};
 pub use sweeps::{dbeta_sweeps, sweep_plots, sweep_series, SweepPoint};
 
 use roughwall::incidence::fmt_key;

@@ -4,11 +4,10 @@
 //! Low in the module picture: it depends on no physics, tally or case module. What each
 //! command writes lives in `writers`; the schema of the tally outputs in `tally::schema`.
 
-pub mod csv;
 pub mod out_dir;
 
-pub use self::csv::CsvTable;
 pub use self::out_dir::OutputDir;
+pub use outputs::{csv, write_atomic, write_atomic_with, CsvTable};
 pub use roughwall::format::{fmt_num, fmt_opt, fmt_sci};
 
 /// A TOML string (quoted and escaped), for outputs written as commented TOML text.
@@ -27,49 +26,12 @@ pub fn toml_float(x: f64) -> String {
 }
 
 use roughwall::{Error, Result};
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Creates the output directory (and parents). Commands write into the staging directory of
 /// an [`OutputDir`]; this only makes sure a directory exists.
 pub fn prepare_out_dir(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))
-}
-
-/// Writes `bytes` to `path` through a temporary file in the same directory and a rename,
-/// so a reader never sees a half-written file.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    write_atomic_with(path, |w| w.write_all(bytes))
-}
-
-/// Like [`write_atomic`], for content streamed by `fill` (e.g. a large height field).
-pub fn write_atomic_with(
-    path: &Path,
-    fill: impl FnOnce(&mut std::io::BufWriter<std::fs::File>) -> std::io::Result<()>,
-) -> Result<()> {
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| -> std::io::Result<()> {
-        let mut w = std::io::BufWriter::with_capacity(1 << 20, std::fs::File::create(&tmp)?);
-        fill(&mut w)?;
-        w.flush()?;
-        w.get_ref().sync_all()?;
-        drop(w);
-        std::fs::rename(&tmp, path)
-    })();
-    if let Err(e) = result {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(Error::io(path, e));
-    }
-    Ok(())
 }
 
 /// SHA-256 of `bytes`, in lowercase hex.

@@ -3,14 +3,15 @@
 //! stochastic model with those deviations (and with the nominal ones) matches the
 //! deterministic sphere. Writes `finite-size/finite_size.csv`.
 
-use super::common::missing;
-use super::paths::{
+use crate::common::missing;
+use crate::paths::{
     COMPARE, COMPARE_EFFECTIVE, COMPARE_NOMINAL, FINITE_SIZE, FINITE_SIZE_DIAMETER,
     FINITE_SIZE_DIAMETERS_UM, FINITE_SIZE_GRID, FINITE_SIZE_LAW, RADENKOVIC2021, SEC4_GLASS_STEEL,
     STOCHASTIC_EFFECTIVE,
 };
-use crate::output::csv::{num, run_toml, Rows};
-use crate::output::{fmt_num, CsvTable};
+use outputs::csv::{num, run_toml, Rows};
+use outputs::CsvTable;
+use roughwall::format::fmt_num;
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;

@@ -4,10 +4,11 @@
 //! this section tabulates the differences +b − (−b), their mean over the surfaces and its
 //! standard error (surface to surface). Writes `mirror/mirror.csv`.
 
-use super::common::{f, missing, subdirs, summary};
-use super::paths::{MIRROR, MIRROR_SEED, MIRROR_TRIANGULATIONS};
-use crate::output::csv::num;
-use crate::output::{fmt_num, CsvTable};
+use crate::common::{f, missing, subdirs, summary};
+use crate::paths::{MIRROR, MIRROR_SEED, MIRROR_TRIANGULATIONS};
+use outputs::csv::num;
+use outputs::CsvTable;
+use roughwall::format::fmt_num;
 use roughwall::tally::ShiftedSums;
 use roughwall::Result;
 use std::collections::BTreeMap;

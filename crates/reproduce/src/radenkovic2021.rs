@@ -2,14 +2,15 @@
 //! bouncing, Figs. 6–9, 12), the deterministic simulation against the stochastic model on every
 //! scene (Figs. 10–11, 14–17) and Sec. 4.2 (Figs. 16–17).
 
-use super::common::{f, missing, pct, rel, subdirs, summary, yes};
-use super::paths::{
+use crate::common::{f, missing, pct, rel, subdirs, summary, yes};
+use crate::paths::{
     COMPARE, DETERMINISTIC, FIG4, FIG4_RUN, RADENKOVIC2021, SEC3, SEC4, SEC4_FIGS_16_17,
     STOCHASTIC, TABLE1,
 };
-use crate::figures::{plot_grid_svg, Kind, Plot, Series};
-use crate::output::csv::{num, run_toml, Rows};
-use crate::output::{fmt_num, CsvTable};
+use outputs::csv::{num, run_toml, Rows};
+use outputs::CsvTable;
+use outputs::{plot_grid_svg, Kind, Plot, Series};
+use roughwall::format::fmt_num;
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;

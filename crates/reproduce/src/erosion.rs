@@ -3,10 +3,11 @@
 //! models. Writes `erosion/erosion.csv`, `erosion/erosion.svg` and
 //! `erosion/erosion_ratios.svg`; every number is read from the runs' `summary.csv`.
 
-use super::paths::{erosion_wall_name, DETERMINISTIC, EROSION, EROSION_WALLS, STOCHASTIC};
-use crate::figures::{plot_grid_svg, Kind, Plot, Series};
-use crate::output::csv::{num, run_toml, Rows};
-use crate::output::{fmt_num, fmt_sci, CsvTable};
+use crate::paths::{erosion_wall_name, DETERMINISTIC, EROSION, EROSION_WALLS, STOCHASTIC};
+use outputs::csv::{num, run_toml, Rows};
+use outputs::CsvTable;
+use outputs::{plot_grid_svg, Kind, Plot, Series};
+use roughwall::format::{fmt_num, fmt_sci};
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
@@ -462,7 +463,7 @@ mod tests {
 
     #[test]
     fn the_study_reads_the_walls_and_directions_the_script_runs() {
-        let script: Vec<f64> = super::super::paths::EROSION_BETAS_DEG
+        let script: Vec<f64> = crate::paths::EROSION_BETAS_DEG
             .iter()
             .map(|b| b.parse().unwrap())
             .collect();

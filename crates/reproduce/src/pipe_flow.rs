@@ -4,8 +4,8 @@
 //! ones. Every number is read from `pipe-flow/summary.csv`, `comparisons.csv` and
 //! `run.toml` (written by `rebound pipe-stats`).
 
-use super::paths::{PIPE_FLOW, PIPE_FLOW_QUICK};
-use crate::output::csv::{num, run_toml, Rows};
+use crate::paths::{PIPE_FLOW, PIPE_FLOW_QUICK};
+use outputs::csv::{num, run_toml, Rows};
 use roughwall::Result;
 use std::collections::HashMap;
 use std::fmt::Write;

@@ -1,11 +1,12 @@
 //! Speed against error: each run of `scripts/speed-vs-error.sh` against the reference run
 //! (`speed_vs_error.csv`, `speed_vs_error.svg` and the section of `REPORT.md`).
 
-use super::common::{f, missing, subdirs, summary};
-use super::paths::{SPEED_DETERMINISTIC, SPEED_STOCHASTIC, SPEED_VS_ERROR, VS_REFERENCE};
-use crate::figures::{plot_svg, Kind, Plot, Series};
-use crate::output::csv::{num, wall_time_s, Rows};
-use crate::output::{fmt_num, CsvTable};
+use crate::common::{f, missing, subdirs, summary};
+use crate::paths::{SPEED_DETERMINISTIC, SPEED_STOCHASTIC, SPEED_VS_ERROR, VS_REFERENCE};
+use outputs::csv::{num, wall_time_s, Rows};
+use outputs::CsvTable;
+use outputs::{plot_svg, Kind, Plot, Series};
+use roughwall::format::fmt_num;
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;

@@ -3,11 +3,12 @@
 //! Sec. 4 glass–steel scene, from both models (`scripts/spin.sh`). Writes `spin/spin.csv`
 //! and `spin/spin.svg`.
 
-use super::common::missing;
-use super::paths::SPIN;
-use crate::figures::{plot_grid_svg, Kind, Plot, Series};
-use crate::output::csv::{num, Rows};
-use crate::output::{fmt_num, CsvTable};
+use crate::common::missing;
+use crate::paths::SPIN;
+use outputs::csv::{num, Rows};
+use outputs::CsvTable;
+use outputs::{plot_grid_svg, Kind, Plot, Series};
+use roughwall::format::fmt_num;
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;

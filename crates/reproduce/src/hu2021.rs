@@ -1,9 +1,9 @@
 //! Hu et al. 2021: the peak elastic force of spheres and prolate spheroids (Figs. 4, 6, 9,
 //! 11b), the physical models against the paper's fit, and the cost of `hertz-dynamic`.
 
-use super::common::{f, missing, pct, yes};
-use super::paths::{HU2021, HU_FIG11B, HU_FIG4, HU_FIG6, HU_FIG9};
-use crate::output::csv::{num, run_toml, Rows};
+use crate::common::{f, missing, pct, yes};
+use crate::paths::{HU2021, HU_FIG11B, HU_FIG4, HU_FIG6, HU_FIG9};
+use outputs::csv::{num, run_toml, Rows};
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;

@@ -4,13 +4,14 @@
 //! `measured-walls/nominal.csv` and `measured-walls/study.csv`; every number is read from
 //! the runs' `compare`, `scan` and `run.toml` outputs.
 
-use super::common::missing;
-use super::paths::{
+use crate::common::missing;
+use crate::paths::{
     COMPARE, DETERMINISTIC, MEASURED_WALLS, NOMINAL, NOMINAL_EQ15, NOMINAL_WALLS, STUDY,
     STUDY_CARD, STUDY_GAUSSIAN, STUDY_ON_SCAN, STUDY_SCANS, STUDY_WITH_CARD, STUDY_WITH_TILED,
 };
-use crate::output::csv::{num, run_toml, Rows};
-use crate::output::{fmt_num, CsvTable};
+use outputs::csv::{num, run_toml, Rows};
+use outputs::CsvTable;
+use roughwall::format::fmt_num;
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;

@@ -1,24 +1,29 @@
-//! `rebound report`: reads the outputs the reproduction scripts wrote under `results/`
-//! and writes `REPORT.md` (ours beside the papers' numbers), `fig4.csv`/`fig4.svg`
-//! (Radenkovic & Simonin 2021, Fig. 4), the erosion study's table and figures and
-//! `speed_vs_error.csv`/`.svg`.
-//! Every number in the report is read from a file in `results/`; a missing run is said so.
+//! The paper-reproduction report, apart from the shipped `rebound` binary: reads the
+//! outputs the reproduction scripts (`scripts/*.sh`) wrote under `results/` and writes
+//! `REPORT.md` (ours beside the papers' numbers), `fig4.csv`/`fig4.svg` (Radenkovic &
+//! Simonin 2021, Fig. 4), the erosion study's table and figures and
+//! `speed_vs_error.csv`/`.svg`. Every number in the report is read from a file in
+//! `results/`; a missing run is said so.
+//!
+//! The binary `rebound-report` runs [`write_report`]; `rebound report` hands its arguments
+//! to it. [`paths`] names the directories of `results/` once, for this crate and (through the
+//! generated `scripts/paths.sh`) for the scripts.
 
-pub mod calibration;
+mod calibration;
 mod common;
-pub mod erosion;
-pub mod finite_size;
-pub mod hu2021;
-pub mod measured_walls;
-pub mod mirror;
+mod erosion;
+mod finite_size;
+mod hu2021;
+mod measured_walls;
+mod mirror;
 pub mod paths;
-pub mod pipe_flow;
-pub mod radenkovic2021;
-pub mod speed_vs_error;
-pub mod spin;
-pub mod wall_models;
+mod pipe_flow;
+mod radenkovic2021;
+mod speed_vs_error;
+mod spin;
+mod wall_models;
 
-use crate::output::write_atomic;
+use outputs::write_atomic;
 use roughwall::Result;
 use std::path::Path;
 

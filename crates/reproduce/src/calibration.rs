@@ -3,14 +3,15 @@
 //! surface, against `deterministic` at 10⁶ particles per condition; writes
 //! `calibration/calibration.csv`. Every number is read from the runs' `compare` outputs.
 
-use super::common::missing;
-use super::paths::{
+use crate::common::missing;
+use crate::paths::{
     calibration_scene_name, CALIBRATION, CALIBRATION_ENSEMBLE, CALIBRATION_NOISE,
     CALIBRATION_RESEED, CALIBRATION_RESEEDED, CALIBRATION_SCENES, CALIBRATION_SURFACES,
     CALIBRATION_TABLE, COMPARE, STOCHASTIC,
 };
-use crate::output::csv::{num, run_toml, Rows};
-use crate::output::{fmt_num, CsvTable};
+use outputs::csv::{num, run_toml, Rows};
+use outputs::CsvTable;
+use roughwall::format::fmt_num;
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::Path;
@@ -290,7 +291,7 @@ fn ensemble_error_table(dir: &Path, surfaces: f64) -> Result<String> {
         let det = dir
             .join(scene)
             .join(CALIBRATION_ENSEMBLE)
-            .join(super::paths::DETERMINISTIC);
+            .join(crate::paths::DETERMINISTIC);
         let Some(m) = Rows::read(&det.join("moments.csv"))? else {
             continue;
         };
@@ -340,7 +341,7 @@ pub fn calibration(results: &Path, md: &mut String) -> Result<()> {
             let det = dir
                 .join(calibration_scene_name(case))
                 .join(CALIBRATION_ENSEMBLE)
-                .join(super::paths::DETERMINISTIC);
+                .join(crate::paths::DETERMINISTIC);
             run_toml(&det)?
                 .get("surface_choice")?
                 .get("surfaces")?

@@ -36,7 +36,7 @@ impl CsvTable {
     }
 
     pub fn write(&self, path: &Path) -> Result<()> {
-        super::write_atomic(path, &self.to_bytes())
+        crate::write_atomic(path, &self.to_bytes())
     }
 }
 

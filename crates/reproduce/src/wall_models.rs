@@ -4,10 +4,11 @@
 //! a timing, is only in `REPORT.md`); every number is read from the runs' `compare` outputs
 //! and manifests.
 
-use super::common::missing;
-use super::paths::{scene_name, COMPARE, STOCHASTIC, WALL_MODELS, WALL_MODELS_SCENES};
-use crate::output::csv::{num, run_toml, Rows};
-use crate::output::{fmt_num, CsvTable};
+use crate::common::missing;
+use crate::paths::{scene_name, COMPARE, STOCHASTIC, WALL_MODELS, WALL_MODELS_SCENES};
+use outputs::csv::{num, run_toml, Rows};
+use outputs::CsvTable;
+use roughwall::format::fmt_num;
 use roughwall::Result;
 use roughwall::{AnyModel, RoughWallModel};
 use std::fmt::Write;

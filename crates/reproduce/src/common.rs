@@ -1,6 +1,6 @@
 //! Helpers the report's sections share: number cells, "missing run" notes, run directories.
 
-use crate::output::csv::Rows;
+use outputs::csv::Rows;
 use roughwall::Result;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};

@@ -1,7 +1,7 @@
 //! The line-plot renderer: [`Plot`]s of [`Series`] drawn with `plotters` into an SVG string
 //! and written atomically like every other output.
 
-use crate::output::write_atomic;
+use crate::write_atomic;
 use plotters::prelude::*;
 use roughwall::{Error, Result};
 use std::path::Path;
@@ -117,7 +117,7 @@ fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
 /// enough to be resolved (more than 1e-9 of its size), else a window around what is finite of
 /// it. Heat maps take their extents and colour ranges through it, as line plots take theirs
 /// through `range` (issue 42: a 1e303 m side made the tick search spin for minutes).
-pub(super) fn drawable(lo: f64, hi: f64) -> (f64, f64) {
+pub fn drawable(lo: f64, hi: f64) -> (f64, f64) {
     let scale = lo.abs().max(hi.abs());
     if lo.is_finite() && hi.is_finite() && hi - lo > 1e-9 * scale && hi > lo {
         return (lo, hi);
@@ -181,7 +181,7 @@ pub fn plot_svg(path: &Path, plot: &Plot) -> Result<()> {
 }
 
 /// A `plotters` failure as the crate's error.
-pub(super) fn draw_err<E: std::fmt::Debug>(e: E) -> Error {
+pub fn draw_err<E: std::fmt::Debug>(e: E) -> Error {
     Error::Io(format!("drawing figure: {e:?}"))
 }
 

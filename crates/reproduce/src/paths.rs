@@ -3,7 +3,7 @@
 //!
 //! The scripts read the same names from `scripts/paths.sh`, which is generated from
 //! `SHELL` by a unit test of this module, which fails when the committed file differs;
-//! `ROUGHWALL_BLESS=1 cargo test --bin rebound paths_sh` rewrites it. Some names exist only
+//! `ROUGHWALL_BLESS=1 cargo test -p reproduce paths_sh` rewrites it. Some names exist only
 //! for the scripts (the report does not read them).
 //! `scripts/common.sh` sources it. The files inside a run directory (`summary.csv`,
 //! `run.toml`, …) are named by the command that writes them, not here.
@@ -68,7 +68,6 @@ pub const HU_FIG9: &str = "fig9";
 /// Hu et al. 2021, Fig. 11b (F_max against U_N).
 pub const HU_FIG11B: &str = "fig11b";
 /// Every Hu et al. figure run, one directory each, from `configs/cases/hu-<figure>.toml`.
-#[cfg_attr(not(test), allow(dead_code))] // read by the scripts only
 pub const HU2021_FIGS: [&str; 9] = [
     HU_FIG4, HU_FIG6, "fig8", HU_FIG9, "fig10", "fig10b", "fig11", HU_FIG11B, "fig12",
 ];
@@ -118,7 +117,6 @@ pub fn erosion_wall_name(wall: &str) -> &str {
 }
 
 /// The erosion study's incident directions β⁻ (degrees).
-#[cfg_attr(not(test), allow(dead_code))] // read by the scripts only
 pub const EROSION_BETAS_DEG: [&str; 3] = ["0.0", "45.0", "90.0"];
 
 /// A calibration scene's directory name: its case file's name ([`CALIBRATION_SCENES`]).
@@ -134,7 +132,6 @@ pub fn scene_name(dir: &str) -> &str {
 }
 
 /// Speed against error: the reference run.
-#[cfg_attr(not(test), allow(dead_code))] // read by the scripts only
 pub const SPEED_REFERENCE: &str = "reference";
 /// Speed against error: prefix of the deterministic runs (`det-n1000-s8`, `det-t0.1-s8`).
 pub const SPEED_DETERMINISTIC: &str = "det-";
@@ -164,7 +161,6 @@ pub const CALIBRATION_SURFACES: &str = "64";
 /// each under [`MIRROR`].
 pub const MIRROR_TRIANGULATIONS: [&str; 2] = roughwall::Triangulation::NAMES;
 /// Mirror symmetry: the surfaces' seeds (full mode; quick mode runs the first two).
-#[cfg_attr(not(test), allow(dead_code))] // read by the scripts only
 pub const MIRROR_SEEDS: [&str; 8] = ["1", "2", "3", "4", "5", "6", "7", "8"];
 /// Mirror symmetry: prefix of one surface's run (`seed1`, …).
 pub const MIRROR_SEED: &str = "seed";
@@ -201,7 +197,6 @@ pub const FINITE_SIZE_DIAMETER: &str = "d";
 /// Finite size: `stochastic` with the deviations the sphere sees.
 pub const STOCHASTIC_EFFECTIVE: &str = "stochastic-effective";
 /// Finite size: `stochastic` with the wall's nominal deviations.
-#[cfg_attr(not(test), allow(dead_code))] // read by the scripts only
 pub const STOCHASTIC_NOMINAL: &str = "stochastic-nominal";
 /// Finite size: [`DETERMINISTIC`] against [`STOCHASTIC_EFFECTIVE`].
 pub const COMPARE_EFFECTIVE: &str = "compare-effective";
@@ -214,7 +209,6 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-#[cfg(test)]
 pub const SHELL: [(&str, &[&str]); 63] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
@@ -282,12 +276,11 @@ pub const SHELL: [(&str, &[&str]); 63] = [
 ];
 
 /// The text of `scripts/paths.sh`: one `P_<NAME>=<value>` line per entry of [`SHELL`].
-#[cfg(test)]
 pub fn shell_script() -> String {
     let mut s = String::from(
         "# The layout of results/: the directory names the reproduction scripts write and\n\
-         # `rebound report` reads. Generated from src/report/paths.rs (its test paths_sh checks it;\n\
-         # `ROUGHWALL_BLESS=1 cargo test --bin rebound paths_sh` rewrites it): do not edit.\n\
+         # `rebound report` reads. Generated from crates/reproduce/src/paths.rs (its test paths_sh checks\n\
+         # it; `ROUGHWALL_BLESS=1 cargo test -p reproduce paths_sh` rewrites it): do not edit.\n\
          # Sourced by scripts/common.sh.\n",
     );
     for (name, value) in SHELL {
@@ -338,11 +331,11 @@ mod tests {
 
     /// `scripts/paths.sh` (the names of the results directories, for the scripts) is what
     /// this module generates, so the scripts and `rebound report` cannot drift.
-    /// After changing `src/report/paths.rs`, regenerate it with
-    /// `ROUGHWALL_BLESS=1 cargo test --bin rebound paths_sh`.
+    /// After changing `crates/reproduce/src/paths.rs`, regenerate it with
+    /// `ROUGHWALL_BLESS=1 cargo test -p reproduce paths_sh`.
     #[test]
     fn paths_sh_is_generated_from_the_rust_constants() {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/paths.sh");
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scripts/paths.sh");
         let generated = shell_script();
         if std::env::var_os("ROUGHWALL_BLESS").is_some() {
             std::fs::write(&path, &generated).unwrap();
@@ -350,11 +343,11 @@ mod tests {
         let committed = std::fs::read_to_string(&path).unwrap_or_default();
         assert!(
             committed == generated,
-            "scripts/paths.sh differs from src/report/paths.rs; regenerate: ROUGHWALL_BLESS=1 cargo test --bin rebound paths_sh"
+            "scripts/paths.sh differs from crates/reproduce/src/paths.rs; regenerate: ROUGHWALL_BLESS=1 cargo test -p reproduce paths_sh"
         );
         // Every script that writes under results/ takes its directory names from it.
         let common = std::fs::read_to_string(
-            Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/common.sh"),
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scripts/common.sh"),
         )
         .unwrap();
         assert!(common.contains("source \"$ROOT/scripts/paths.sh\""));
@@ -363,7 +356,9 @@ mod tests {
             .lines()
             .filter_map(|l| l.split_once('=').map(|(n, _)| n.to_string()))
             .collect();
-        for e in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts")).unwrap() {
+        for e in
+            std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../scripts")).unwrap()
+        {
             let p = e.unwrap().path();
             if p.extension().is_none_or(|x| x != "sh") {
                 continue;

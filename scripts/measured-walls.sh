@@ -7,10 +7,12 @@
 #     built with Eq. (15) (`"eq15"`, as the papers build theirs: 0.3–2.1 % less), and both
 #     stochastic models with the typed deviations against each.
 #  2. Real scans (part 7), $P_STUDY_SCANS (configs/scans/<name>.toml): `rebound scan` writes
-#     the wall card; `deterministic` bounces on the scan itself (mirror-tiled) and on Gaussian
-#     walls (16 surfaces); both stochastic models run. The Gaussian walls and the models get
-#     the card's deviations ($P_STUDY_WITH_CARD/) and those of the tiled wall the particles
-#     met ($P_STUDY_WITH_TILED/). Every run is compared with the scan's.
+#     the wall card; `deterministic` bounces on the scan itself in place (the reference,
+#     issue 39 part 1), on the scan turned to its lay and mirror-tiled (the earlier reference,
+#     $P_STUDY_ON_SCAN_MIRRORED/, compared with the in-place one: what the tiling cost) and on
+#     Gaussian walls (16 surfaces); both stochastic models run. The Gaussian walls and the
+#     models get the card's deviations ($P_STUDY_WITH_CARD/) and those of the tiled wall
+#     ($P_STUDY_WITH_TILED/). Every run is compared with the in-place one.
 # The cases are configs/calibration/test-5-5.toml (part 1) and configs/scans/study.toml
 # (part 2) with the deviations replaced. Writes $REBOUND_RESULTS/measured-walls/.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -90,12 +92,19 @@ for s in $P_STUDY_SCANS; do
   with_wall scans/study.toml "$xi" "$ze" "study-$s" > "$c"
   grep -q "^delta_xi_deg = $xi\$" "$c" || { echo "measured-walls.sh: could not write $c" >&2; exit 1; }
   run deterministic --case "$c" --surface "configs/scans/$file" --particles "$N" --out "$det"
-  # Two sets of deviations: the card's (the scan's own triangles, what a user has) and those of
-  # the mirror-tiled wall the particles met (resampled along the lay, a little smoother): the
-  # second isolates the Gaussian assumption from the tiling.
-  txi=$(awk -F' = ' '/^measured_delta_xi_deg/{print $2; exit}' "$det/run.toml")
-  tze=$(awk -F' = ' '/^measured_delta_zeta_deg/{print $2; exit}' "$det/run.toml")
-  [ -n "$txi" ] && [ -n "$tze" ] || { echo "measured-walls.sh: no measured deviations in $det/run.toml" >&2; exit 1; }
+  # The earlier reference: the same scan turned to its lay, resampled and mirror-tiled.
+  detm="$d/$P_STUDY_ON_SCAN_MIRRORED/$P_DETERMINISTIC"
+  cm="$M/cases/study-$s-mirrored.toml"
+  with_wall scans/study.toml "$xi" "$ze" "study-$s-mirrored" 'scan_wall="mirrored"' > "$cm"
+  grep -q '^scan_wall = "mirrored"$' "$cm" || { echo "measured-walls.sh: could not write $cm" >&2; exit 1; }
+  run deterministic --case "$cm" --surface "configs/scans/$file" --particles "$N" --out "$detm"
+  run compare --a "$det" --b "$detm" --out "$d/$P_STUDY_ON_SCAN_MIRRORED/$P_COMPARE"
+  # Two sets of deviations: the card's (the scan's own triangles, what a user has and what the
+  # in-place reference meets) and those of the mirror-tiled wall (resampled along the lay, a
+  # little smoother): the second shows what the tiled reference's deviations did.
+  txi=$(awk -F' = ' '/^measured_delta_xi_deg/{print $2; exit}' "$detm/run.toml")
+  tze=$(awk -F' = ' '/^measured_delta_zeta_deg/{print $2; exit}' "$detm/run.toml")
+  [ -n "$txi" ] && [ -n "$tze" ] || { echo "measured-walls.sh: no measured deviations in $detm/run.toml" >&2; exit 1; }
   for which in "$P_STUDY_WITH_CARD:$xi:$ze" "$P_STUDY_WITH_TILED:$txi:$tze"; do
     IFS=: read -r tag wxi wze <<< "$which"
     cw="$M/cases/study-$s-$tag.toml"

@@ -1,11 +1,14 @@
 //! `rebound deterministic --surface FILE` with a measured scan instead of a height file of
-//! `rebound surface --heights`: read by `topography`, levelled by its plane, turned to its
-//! lay, cropped and mirror-tiled into a periodic wall (`roughwall::surface::scan`), with what
-//! was done recorded in `run.toml` (`[scan]`).
+//! `rebound surface --heights`: read by `topography`, levelled by its plane, and made the
+//! run's wall as `[deterministic] scan_wall` asks: in place (the scan's own triangles, the
+//! incident directions turned by its lay; the default) or turned to its lay and mirror-tiled
+//! into a periodic wall. What was done is recorded in `run.toml` (`[scan]`).
 
+use crate::case::deterministic::DeterministicOptions;
+use roughwall::deterministic::{in_place_wall, surface_from_field, BuiltSurface, ScanReference};
+use roughwall::deterministic::{LEFT_PATCH_BOUND, MARGIN_FLIGHTS};
 use roughwall::scan::{characterise, mirrored_wall};
 use roughwall::surface::MAGIC;
-use roughwall::HeightField;
 use roughwall::ScanField;
 use roughwall::Warning;
 use roughwall::{Error, Result};
@@ -21,12 +24,26 @@ fn is_height_file(path: &Path) -> bool {
         .is_ok_and(|_| magic == MAGIC)
 }
 
-/// The wall of a measured scan, its `[scan]` manifest table and the reader's warnings; `None` for a height file
-/// of `rebound surface --heights` (or a path that is not a file: its reader says so).
-pub fn scan_wall(path: &Path) -> Result<Option<(HeightField, toml::Table, Vec<Warning>)>> {
+/// A measured scan made the run's wall.
+pub struct ScanWall {
+    /// The wall the tracker walks (a patch in place, or the periodic mirrored wall).
+    pub built: BuiltSurface,
+    /// The `[scan]` table of `run.toml`.
+    pub table: toml::Table,
+    /// What the reader read despite a flaw.
+    pub warnings: Vec<Warning>,
+    /// In place: `(Δξ, Δζ)` (rad) of the wall's own triangles along and across its lay,
+    /// what the particles met (the periodic wall's are measured on it as for any surface).
+    pub met: Option<(f64, f64)>,
+}
+
+/// The wall of a measured scan; `None` for a height file of `rebound surface --heights` (or
+/// a path that is not a file: its reader says so).
+pub fn scan_wall(path: &Path, opt: &DeterministicOptions) -> Result<Option<ScanWall>> {
     if !path.is_file() || is_height_file(path) {
         return Ok(None);
     }
+    let t0 = std::time::Instant::now();
     let t = topography::read(path).map_err(|e| Error::Input(format!("--surface {e}")))?;
     // What the reader read despite a flaw (an X3P whose main.xml alone fails its checksum).
     let warnings: Vec<Warning> = t
@@ -46,7 +63,6 @@ pub fn scan_wall(path: &Path) -> Result<Option<(HeightField, toml::Table, Vec<Wa
             "no cell with four valid corners: no wall to bounce on".into(),
         ))
     })?;
-    let (wall, info) = mirrored_wall(&c.levelled, lay.angle).map_err(named)?;
     let mut table = toml::Table::new();
     let mut put = |k: &str, v: toml::Value| {
         table.insert(k.into(), v);
@@ -66,18 +82,73 @@ pub fn scan_wall(path: &Path) -> Result<Option<(HeightField, toml::Table, Vec<Wa
     put("lay_deg", lay.angle.to_degrees().into());
     put("delta_xi_deg", lay.delta_xi.to_degrees().into());
     put("delta_zeta_deg", lay.delta_zeta.to_degrees().into());
-    put(
-        "rectangle_points",
-        toml::Value::Array(vec![
-            (info.rectangle[0] as i64).into(),
-            (info.rectangle[1] as i64).into(),
-        ]),
-    );
-    put("rectangle_area_fraction", info.area_fraction.into());
-    put("spacing_um", (info.spacing_m * 1e6).into());
-    put(
-        "periodic_wall",
-        "mirrored tiling of the rectangle along the lay (docs/models.md, Measured walls)".into(),
-    );
-    Ok(Some((wall, table, warnings)))
+    put("reference", opt.scan_reference.name().into());
+    let secs = t0.elapsed().as_secs_f64();
+    let (built, met) = match opt.scan_reference {
+        ScanReference::InPlace => {
+            let t1 = std::time::Instant::now();
+            let wall = in_place_wall(
+                &c.levelled,
+                lay.angle,
+                opt.sphere_diameter_m,
+                opt.triangulation,
+            )
+            .map_err(named)?;
+            let dilation_s = t1.elapsed().as_secs_f64();
+            let [x0, y0, nx, ny] = wall.crop;
+            put(
+                "block_first_point",
+                toml::Value::Array(vec![(x0 as i64).into(), (y0 as i64).into()]),
+            );
+            put(
+                "block_points",
+                toml::Value::Array(vec![(nx as i64).into(), (ny as i64).into()]),
+            );
+            put("block_area_fraction", wall.area_fraction.into());
+            let range = {
+                let h = &wall.field.heights;
+                let (lo, hi) = h
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                        (a.min(x), b.max(x))
+                    });
+                hi - lo
+            };
+            put("height_range_um", (range * 1e6).into());
+            put("margin_flights", MARGIN_FLIGHTS.into());
+            put("left_patch_bound", LEFT_PATCH_BOUND.into());
+            put(
+                "wall",
+                "the scan's own triangles at its pixel, not resampled or mirrored; incident directions turned by the lay; particles enter over an inner region (docs/models.md, Measured walls)".into(),
+            );
+            let met = wall.deviations.as_ref().map(|d| (d.delta_xi, d.delta_zeta));
+            (BuiltSurface::in_place(wall, secs, dilation_s), met)
+        }
+        ScanReference::Mirrored => {
+            let (wall, info) = mirrored_wall(&c.levelled, lay.angle).map_err(named)?;
+            put(
+                "rectangle_points",
+                toml::Value::Array(vec![
+                    (info.rectangle[0] as i64).into(),
+                    (info.rectangle[1] as i64).into(),
+                ]),
+            );
+            put("rectangle_area_fraction", info.area_fraction.into());
+            put("spacing_um", (info.spacing_m * 1e6).into());
+            put(
+                "periodic_wall",
+                "mirrored tiling of the rectangle along the lay (docs/models.md, Measured walls)"
+                    .into(),
+            );
+            let built =
+                surface_from_field(wall, "scan", secs, opt.sphere_diameter_m, opt.triangulation)?;
+            (built, None)
+        }
+    };
+    Ok(Some(ScanWall {
+        built,
+        table,
+        warnings,
+        met,
+    }))
 }

@@ -509,43 +509,90 @@ fn an_unreached_target_over_surfaces_names_the_surfaces() {
     );
 }
 
-/// `--surface` with a measured scan (issue 29, part 4): the scan is levelled, turned to its
-/// lay, cropped and mirror-tiled; `run.toml` says how. A scan with missing points inside the
-/// rectangle, or a file that is no scan, is one line naming it, exit 2, nothing written.
+/// `--surface` with a measured scan: by default the in-place reference (issue 39, part 1),
+/// the scan's own triangles with the incident directions turned by its lay, `run.toml`
+/// saying which block and how many histories left it; with `scan_wall = "mirrored"` the
+/// earlier reference (issue 29, part 4): levelled, turned to its lay, cropped and
+/// mirror-tiled. A scan with missing points inside, a file that is no scan, or an unknown
+/// `scan_wall` is one line naming it, exit 2, nothing written.
 #[test]
 fn a_measured_scan_is_a_wall_to_bounce_on() {
     let dir = Dir::new();
-    let case = case_with(
-        dir.path(),
-        &[
-            ("beta_deg = [0.0, 60.0]", "beta_deg = [0.0]"),
-            ("count = 2000", "count = 1000"),
-        ],
-    );
+    let edits = [
+        ("beta_deg = [0.0, 60.0]", "beta_deg = [0.0]"),
+        ("count = 2000", "count = 1000"),
+    ];
+    let case = case_with(dir.path(), &edits);
     let scans = repo_root().join("tests/data/scans");
-    let out = dir.join("x3p");
     let x3p = scans.join("x3p-2.x3p");
+    let scan_table = |out: &Path| -> toml::Table {
+        let manifest = std::fs::read_to_string(out.join("run.toml")).unwrap();
+        toml::from_str::<toml::Table>(&manifest).unwrap()["scan"]
+            .as_table()
+            .unwrap()
+            .clone()
+    };
+    let out = dir.join("x3p");
     run_case(
         "deterministic",
         &case,
         &out,
         &["--surface", x3p.to_str().unwrap()],
     );
-    let manifest = std::fs::read_to_string(out.join("run.toml")).unwrap();
-    let scan: toml::Table = toml::from_str::<toml::Table>(&manifest).unwrap()["scan"]
-        .as_table()
-        .unwrap()
-        .clone();
+    let scan = scan_table(&out);
     // The grooves of this scan run along its y: the lay is at about 87°.
     let lay = scan["lay_deg"].as_float().unwrap();
     assert!((80.0..=90.0).contains(&lay), "{scan:?}");
     assert_eq!(scan["format"].as_str(), Some("x3p"));
-    let fraction = scan["rectangle_area_fraction"].as_float().unwrap();
-    assert!(fraction > 0.5 && fraction <= 1.0, "{scan:?}");
+    assert_eq!(scan["reference"].as_str(), Some("in-place"));
+    // 650 × 650 points, cut to 648 × 648 (a multiple of 8): nothing resampled.
+    let block: Vec<i64> = scan["block_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_integer().unwrap())
+        .collect();
+    assert_eq!(block, [648, 648], "{scan:?}");
+    let manifest: toml::Table =
+        toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
+    let row = &manifest["conditions"].as_array().unwrap()[0];
+    let left = row["left_patch"].as_integer().unwrap();
+    assert!(left < 10, "{left} of 1000 left the scan");
+    // The deviations measured for the wall met are the scan's own along its lay.
+    let met = manifest["surface_choice"]["measured_delta_xi_deg"]
+        .as_float()
+        .unwrap();
+    let card = scan["delta_xi_deg"].as_float().unwrap();
+    assert!((met / card - 1.0).abs() < 0.02, "{met} vs {card}");
     let summary = Csv::read(&out.join("summary.csv"));
     assert_eq!(summary.records().count(), 1);
+    // The earlier reference, on request (its case beside, not over, the first).
+    let mirrored_dir = dir.join("mirrored");
+    std::fs::create_dir(&mirrored_dir).unwrap();
+    let mirrored = case_with(
+        &mirrored_dir,
+        &[
+            edits[0],
+            edits[1],
+            (
+                "side_per_corr_length = 20.0",
+                "side_per_corr_length = 20.0\nscan_wall = \"mirrored\"",
+            ),
+        ],
+    );
+    let out_m = dir.join("x3p-mirrored");
+    run_case(
+        "deterministic",
+        &mirrored,
+        &out_m,
+        &["--surface", x3p.to_str().unwrap()],
+    );
+    let scan = scan_table(&out_m);
+    assert_eq!(scan["reference"].as_str(), Some("mirrored"));
+    let fraction = scan["rectangle_area_fraction"].as_float().unwrap();
+    assert!(fraction > 0.5 && fraction <= 1.0, "{scan:?}");
     for (name, needle) in [
-        ("sur-2.sur", "needs a complete wall"),
+        ("sur-2.sur", "needs every point"),
         ("ORIGIN.md", "ORIGIN.md"),
     ] {
         let o = dir.join(name);
@@ -561,4 +608,56 @@ fn a_measured_scan_is_a_wall_to_bounce_on() {
         .refused(needle);
         assert!(!o.exists());
     }
+    refuses(
+        &[(
+            "side_per_corr_length = 20.0",
+            "side_per_corr_length = 20.0\nscan_wall = \"tiled\"",
+        )],
+        &[],
+        "deterministic.scan_wall",
+    );
+}
+
+/// A sphere on a scan in place (issue 39, part 1): its centre rides on the scan's centre
+/// surface, known on a block that loses the dilation's reach at the edges; `run.toml` records
+/// the sphere's contact and the block, and the sphere sees smaller deviations than the point.
+#[test]
+fn a_sphere_bounces_on_the_scan_through_its_centre_surface() {
+    let dir = Dir::new();
+    let edits = [
+        ("beta_deg = [0.0, 60.0]", "beta_deg = [0.0]"),
+        ("count = 2000", "count = 1000\ndiameter_um = 20.0"),
+        (
+            "side_per_corr_length = 20.0",
+            "side_per_corr_length = 20.0\ncontact = \"sphere\"",
+        ),
+    ];
+    let case = case_with(dir.path(), &edits);
+    let x3p = repo_root().join("tests/data/scans/x3p-2.x3p");
+    let out = dir.join("sphere");
+    run_case(
+        "deterministic",
+        &case,
+        &out,
+        &["--surface", x3p.to_str().unwrap()],
+    );
+    let manifest: toml::Table =
+        toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
+    let scan = manifest["scan"].as_table().unwrap();
+    let first: Vec<i64> = scan["block_first_point"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_integer().unwrap())
+        .collect();
+    assert!(first.iter().all(|&k| k > 0), "{scan:?}");
+    let contact = manifest["sphere_contact"]["contact_fraction"]
+        .as_float()
+        .unwrap();
+    assert!(contact > 0.0 && contact < 1.0, "{contact}");
+    let met = manifest["surface_choice"]["measured_delta_xi_deg"]
+        .as_float()
+        .unwrap();
+    let point = scan["delta_xi_deg"].as_float().unwrap();
+    assert!(met < point, "the sphere sees {met}°, the point {point}°");
 }

@@ -6,7 +6,7 @@ use super::{Case, Scene, WallSource};
 use crate::runner::TallyOverrides;
 use roughwall::check::{check_int_range, check_range, check_value};
 use roughwall::deterministic::{tally_spec, ModelSetup, DEFAULT_MAX_COLLISIONS};
-use roughwall::deterministic::{SceneOptions, SurfacePlan, WallDeviations};
+use roughwall::deterministic::{ScanReference, SceneOptions, SurfacePlan, WallDeviations};
 use roughwall::tally::TallySpec;
 use roughwall::ErosionSetup;
 use roughwall::Triangulation;
@@ -37,6 +37,8 @@ pub struct DeterministicOptions {
     pub triangulation: Triangulation,
     /// Independent surface realisations (`[deterministic] surfaces`, default 1).
     pub surfaces: u32,
+    /// What a measured scan becomes (`[deterministic] scan_wall`).
+    pub scan_reference: ScanReference,
 }
 
 /// `[deterministic] triangulation`, validated: how the cells of a generated or read surface
@@ -152,10 +154,22 @@ pub fn deterministic_options(case: &Case, height_file: bool) -> Result<Determini
         MAX_SURFACES,
         "an integer from 1 to 1024 (independent surface realisations the histories are spread over)",
     )?;
+    let names = ScanReference::NAMES;
+    let k = check_value(
+        "deterministic.scan_wall",
+        d.scan_wall
+            .as_deref()
+            .unwrap_or(ScanReference::default().name()),
+        &names,
+        "\"in-place\" (a scan given as --surface is bounced on as measured, the incident direction turned by its lay; the default) or \"mirrored\" (turned to its lay, resampled and mirror-tiled into a periodic wall, the earlier reference)",
+    )?;
+    let scan_reference = ScanReference::from_name(names[k])
+        .ok_or_else(|| Error::Internal(format!("scan_wall `{}`", names[k])))?;
     Ok(DeterministicOptions {
         max_collisions: mc as u32,
         triangulation,
         surfaces: surfaces as u32,
+        scan_reference,
         scene: SceneOptions {
             spacing_per_corr_length: spc,
             side_per_corr_length: side,

@@ -209,6 +209,11 @@ pub struct DeterministicSection {
     /// realisation `i mod surfaces`): the ensemble a statistical wall model stands for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub surfaces: Option<i64>,
+    /// What a measured scan given as `--surface` becomes: `"in-place"` (the scan itself, the
+    /// incident direction turned by its lay; the default) or `"mirrored"` (turned to its lay,
+    /// resampled and mirror-tiled into a periodic wall, the earlier reference).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scan_wall: Option<String>,
 }
 
 /// `[scan]` for `scan`: the scan of a wall (without `file`, the case's `[wall]` or `[surface]`

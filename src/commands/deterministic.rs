@@ -9,9 +9,7 @@ use crate::commands::{apply_wall_card, context, warn, Summary};
 use crate::output::out_dir::{check_distinct, check_out};
 use crate::writers::deterministic::{finish, sphere_table, surface_table};
 use roughwall::deterministic::fill_block;
-use roughwall::deterministic::{
-    build_surfaces, realisations, surface_from_field, BuiltSurface, SphereDilation,
-};
+use roughwall::deterministic::{build_surfaces, realisations, BuiltSurface, SphereDilation};
 use roughwall::HeightField;
 use roughwall::Result;
 
@@ -48,20 +46,18 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     check_distinct(target, "--out", &inputs)?;
     // Everything the user gave is checked; now the surfaces (the only slow input step).
     let sphere = p.options.sphere_diameter_m;
-    let t0 = std::time::Instant::now();
-    let built = match file.map(crate::scan_wall::scan_wall).transpose()?.flatten() {
-        // A measured scan: its wall, turned to its lay and mirror-tiled.
-        Some((wall, table, read_warnings)) => {
-            warn(read_warnings);
-            p.notes.insert("scan".into(), toml::Value::Table(table));
-            let secs = t0.elapsed().as_secs_f64();
-            vec![surface_from_field(
-                wall,
-                "scan",
-                secs,
-                sphere,
-                p.options.triangulation,
-            )?]
+    let scan = match file {
+        Some(path) => crate::scan_wall::scan_wall(path, &p.options)?,
+        None => None,
+    };
+    let mut met = None;
+    let built = match scan {
+        // A measured scan: in place, or turned to its lay and mirror-tiled.
+        Some(s) => {
+            warn(s.warnings);
+            p.notes.insert("scan".into(), toml::Value::Table(s.table));
+            met = s.met;
+            vec![s.built]
         }
         None => build_surfaces(
             p.surface.as_ref(),
@@ -86,6 +82,7 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
         source,
         &p.options.scene,
         measure,
+        met,
     );
     p.notes.insert("surface_choice".into(), choice);
     if let Some(s) = pooled_sphere(&built) {

@@ -6,8 +6,8 @@ use crate::case::Warning;
 use crate::figures;
 use crate::output::{prepare_out_dir, Manifest};
 use crate::schema::write_tables;
-use roughwall::deterministic::LostCounts;
 use roughwall::deterministic::SceneOptions;
+use roughwall::deterministic::{LostCounts, ScanReference, LEFT_PATCH_BOUND};
 use roughwall::deterministic::{SphereDilation, SurfacePlan};
 use roughwall::surface::pooled_deviations;
 use roughwall::tally::ConditionStats;
@@ -28,6 +28,7 @@ pub fn surface_table(
     source: &str,
     opt: &SceneOptions,
     measure: bool,
+    met: Option<(f64, f64)>,
 ) -> toml::Value {
     let Some(&field) = fields.first() else {
         return toml::Value::Table(toml::Table::new());
@@ -89,7 +90,15 @@ pub fn surface_table(
         // The realisations' seeds follow from the run's (`scene::realisation_seed`).
         t.insert("surfaces".into(), toml::Value::Integer(fields.len() as i64));
     }
-    if measure {
+    if let (true, Some((xi, zeta))) = (measure, met) {
+        // A scan in place: its own triangles along and across its lay (the field's axes are
+        // the scan's, and the seam cells that close its period are not the scan's).
+        t.insert("measured_delta_xi_deg".into(), f(round(xi.to_degrees(), 4)));
+        t.insert(
+            "measured_delta_zeta_deg".into(),
+            f(round(zeta.to_degrees(), 4)),
+        );
+    } else if measure {
         // Over all realisations: the deviations of the ensemble the histories saw.
         let m = pooled_deviations(fields);
         t.insert(
@@ -132,19 +141,56 @@ pub fn finish(
     seconds: f64,
 ) -> Result<Vec<Warning>> {
     let mut warnings = Vec::new();
+    let in_place = p
+        .notes
+        .get("scan")
+        .and_then(|s| s.get("reference"))
+        .and_then(|r| r.as_str())
+        == Some(ScanReference::InPlace.name());
     let mut results = Vec::with_capacity(tallies.len());
     let mut rows = Vec::with_capacity(tallies.len());
     for (k, t) in tallies.iter().enumerate() {
         let cond = t.spec.condition;
         let lost = LostCounts::from_tally(&t.counters.lost);
-        if lost.total() > 0 {
+        // On a scan in place, histories leave the patch at a rate the margins keep small:
+        // only a rate above the bound is worth a warning. Every other loss is.
+        let others = LostCounts {
+            left_patch: 0,
+            ..lost
+        };
+        if others.total() > 0 {
             warnings.push(Warning(format!(
                 "α⁻ = {}°, β⁻ = {}°: {} of {} particles lost ({})",
                 cond.alpha_in_deg(),
                 cond.beta_in_deg(),
-                lost.total(),
+                others.total(),
                 t.counters.particles,
-                lost.describe()
+                others.describe()
+            )));
+        }
+        let left = lost.left_patch as f64 / t.counters.particles.max(1) as f64;
+        if left > LEFT_PATCH_BOUND {
+            warnings.push(Warning(format!(
+                "α⁻ = {}°, β⁻ = {}°: {} of {} histories ({:.2} %, above the bound of {} %) left the scan before escaping above it; they are not tallied, so the reference lacks some of its longest (most grazing) flights: use a larger scan or a steeper α⁻",
+                cond.alpha_in_deg(),
+                cond.beta_in_deg(),
+                lost.left_patch,
+                t.counters.particles,
+                100.0 * left,
+                100.0 * LEFT_PATCH_BOUND,
+            )));
+        }
+        if t.followed() == 0 && lost.left_patch == lost.total() {
+            // Every history flew off the scan: the scan is too small for this incidence.
+            let scan = p.notes.get("scan");
+            let file = scan
+                .and_then(|s| s.get("file"))
+                .and_then(|f| f.as_str())
+                .unwrap_or("the scan");
+            return Err(Error::Input(format!(
+                "--surface `{file}`: at α⁻ = {}°, β⁻ = {}° every history left the scan before escaping above it: the scan is too small for this incidence (its margins follow from its height range and α⁻; docs/models.md, Measured walls); use a larger scan or a steeper α⁻",
+                cond.alpha_in_deg(),
+                cond.beta_in_deg(),
             )));
         }
         if t.followed() == 0 {
@@ -162,6 +208,7 @@ pub fn finish(
             &lost,
             stats.and_then(|s| s.get(k)),
             &r,
+            in_place,
         ));
         results.push(r);
     }
@@ -201,6 +248,7 @@ fn condition_row(
     lost: &LostCounts,
     stats: Option<&ConditionStats>,
     r: &ConditionResult,
+    in_place: bool,
 ) -> toml::Value {
     let mut row = toml::Table::new();
     row.insert("alpha_in_deg".into(), f(cond.alpha_in_deg()));
@@ -233,5 +281,11 @@ fn condition_row(
         "collision_cap_hits".into(),
         toml::Value::Integer(lost.collision_cap as i64),
     );
+    if in_place {
+        row.insert(
+            "left_patch".into(),
+            toml::Value::Integer(lost.left_patch as i64),
+        );
+    }
     toml::Value::Table(row)
 }

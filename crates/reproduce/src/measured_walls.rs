@@ -7,7 +7,8 @@
 use crate::common::missing;
 use crate::paths::{
     COMPARE, DETERMINISTIC, MEASURED_WALLS, NOMINAL, NOMINAL_EQ15, NOMINAL_WALLS, STUDY,
-    STUDY_CARD, STUDY_GAUSSIAN, STUDY_ON_SCAN, STUDY_SCANS, STUDY_WITH_CARD, STUDY_WITH_TILED,
+    STUDY_CARD, STUDY_GAUSSIAN, STUDY_ON_SCAN, STUDY_ON_SCAN_MIRRORED, STUDY_SCANS,
+    STUDY_WITH_CARD, STUDY_WITH_TILED,
 };
 use outputs::csv::{num, run_toml, Rows};
 use outputs::CsvTable;
@@ -243,10 +244,37 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
             cell(e_xi, 3),
             cell(e_ze, 3),
         );
-        let on_scan = dir.join(STUDY_ON_SCAN).join(DETERMINISTIC);
-        let tiled = surface_choice(&on_scan, "measured_delta_xi_deg")
-            .zip(surface_choice(&on_scan, "measured_delta_zeta_deg"));
-        let mut against_all = Vec::new();
+        let mirrored = dir.join(STUDY_ON_SCAN_MIRRORED);
+        let tiled = surface_choice(&mirrored.join(DETERMINISTIC), "measured_delta_xi_deg").zip(
+            surface_choice(&mirrored.join(DETERMINISTIC), "measured_delta_zeta_deg"),
+        );
+        let met = surface_choice(
+            &dir.join(STUDY_ON_SCAN).join(DETERMINISTIC),
+            "measured_delta_xi_deg",
+        )
+        .zip(surface_choice(
+            &dir.join(STUDY_ON_SCAN).join(DETERMINISTIC),
+            "measured_delta_zeta_deg",
+        ));
+        // What the earlier reference (turned, resampled, mirror-tiled) cost against the scan
+        // in place.
+        if let Some(w) = worst(&mirrored.join(COMPARE))? {
+            let _ = writeln!(
+                verdicts,
+                "- {s}: the mirror-tiled scan, the earlier reference, differs from the scan in                  place by a KS distance of up to {:.3} in α⁺ and {:.3} in β⁺ − β⁻, and by up to                  {:+.3}° in mean α⁺ at ({}°, {}°) (|z| {:.0} with the runs' own standard errors;                  both bounce on the same scan, so this is what resampling along the lay and                  mirroring did, not a second realisation).",
+                w.ks_alpha,
+                w.ks_dbeta,
+                w.signed_bias_alpha,
+                fmt_num(w.at.0),
+                fmt_num(w.at.1),
+                w.z_at_bias
+            );
+        }
+        let mut against_all = vec![(
+            "the mirror-tiled scan (the earlier reference)".to_string(),
+            mirrored.join(COMPARE),
+            false,
+        )];
         for (tag, what) in [
             (STUDY_WITH_CARD, "the card's (Δξ, Δζ)".to_string()),
             (
@@ -260,7 +288,7 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
             against_all.push((
                 format!("Gaussian walls, {what}"),
                 t.join(STUDY_GAUSSIAN).join(COMPARE),
-                tag == STUDY_WITH_TILED,
+                tag == STUDY_WITH_CARD,
             ));
             for m in MODELS {
                 against_all.push((format!("{m}, {what}"), t.join(m).join(COMPARE), false));
@@ -268,8 +296,9 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
         }
         for (against, cmp, gaussian_alone) in against_all {
             let Some(w) = worst(&cmp)? else { continue };
-            // The Gaussian walls with the tiled wall's deviations: the Gaussian assumption
-            // alone, judged by the goal the models meet on Gaussian walls.
+            // The Gaussian walls with the deviations of the wall the particles met in place (the
+            // card's): the Gaussian assumption alone, judged by the goal the models meet on
+            // Gaussian walls.
             if gaussian_alone {
                 let _ = writeln!(
                     verdicts,
@@ -315,16 +344,17 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
                 w.max_z
             );
         }
-        if let Some((x, z)) = tiled {
+        if let (Some((x, z)), Some((mx, mz))) = (tiled, met) {
             let _ = writeln!(
                 figures,
-                "- {s}: the mirror-tiled wall the particles met has ({x:.3}°, {z:.3}°) (its run.toml); \
+                "- {s}: the scan in place has ({mx:.3}°, {mz:.3}°) on the block the particles met, the mirror-tiled wall ({x:.3}°, {z:.3}°) (their run.toml); \
                  [height map]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/height_map.svg), \
                  [slopes against the normal law]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/slope_angle_pdfs.svg), \
                  [autocorrelation]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/autocorrelation.svg) \
                  and [its map with the lay]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_CARD}/autocorrelation_map.svg), \
                  α⁺ on the scan against the calibrated model with the card: [PDFs]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_WITH_CARD}/calibrated/{COMPARE}/overlay_alpha_out.svg), \
-                 against Gaussian walls with the tiled wall's deviations: [PDFs]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_WITH_TILED}/{STUDY_GAUSSIAN}/{COMPARE}/overlay_alpha_out.svg)."
+                 against Gaussian walls with the tiled wall's deviations: [PDFs]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_WITH_TILED}/{STUDY_GAUSSIAN}/{COMPARE}/overlay_alpha_out.svg), \
+                 against the mirror-tiled scan: [PDFs]({MEASURED_WALLS}/{STUDY}/{s}/{STUDY_ON_SCAN_MIRRORED}/{COMPARE}/overlay_alpha_out.svg)."
             );
         }
     }
@@ -337,17 +367,21 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
         md,
         "Real instrument scans (`configs/scans/`, files from SurfaceTopography's test set): \
          `rebound scan` writes the wall card; `deterministic` bounces ideally elastic centres on \
-         the scan itself (levelled, turned to its lay, resampled and mirror-tiled) and on \
-         Gaussian (Garcia–Stoll) walls; both stochastic models run. The Gaussian walls and the \
-         models get the card's deviations (what a user has) and those of the tiled wall the \
-         particles met (the resampling smooths it: the second isolates the Gaussian assumption) \
+         the scan itself in place (levelled; its own triangles at its pixel, neither resampled \
+         nor mirrored; the incident directions turned by the lay; the reference), on the scan \
+         turned to its lay, resampled and mirror-tiled (the earlier reference) and on Gaussian \
+         (Garcia–Stoll) walls; both stochastic models run. The Gaussian walls and the models \
+         get the card's deviations (what a user has, and what the in-place reference meets) \
+         and those of the tiled wall (the resampling smooths it) \
          (`configs/scans/study.toml`: α⁻ = −5°, −15°, −35°; β⁻ = 0°, 45°, 90° from the \
          lay; table `measured-walls/study.csv`). Eq. (15) from the fitted Garcia–Stoll \
          parameters, √2 Sq/c_L with the 1/e correlation lengths, is shown beside the measured \
          deviations: where they differ, the scan is not the Gaussian wall Eq. (15) describes.\n\n\
          | scan | grid, pixel | format | card (Δξ, Δζ) | lay | Sq | Ssk / Sku | kurtosis ξ′ / ζ′ | c_L along / across | √2 Sq/c_L |\n\
          |---|---|---|---|---|---|---|---|---|---|\n{cards}\n\
-         Against `deterministic` on the scan (b − a = the row's run − the scan's):\n\n\
+         Against `deterministic` on the scan in place (b − a = the row's run − the scan's; \
+         |z| uses each run's own standard errors, so it does not include the scan's \
+         realisation noise):\n\n\
          | scan | against | max KS α⁺ | max KS β⁺−β⁻ | worst bias mean α⁺ (°) | max \\|z\\| |\n\
          |---|---|---|---|---|---|\n{rows}\n{verdicts}\n{figures}\n"
     );

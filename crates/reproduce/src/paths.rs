@@ -181,13 +181,17 @@ pub const STUDY_SCANS: [&str; 2] = ["x3p-2", "matrix-3"];
 pub const STUDY: &str = "study";
 /// Measured walls: `rebound scan` of a study scan (its wall card).
 pub const STUDY_CARD: &str = "scan";
-/// Measured walls: `deterministic` on the scan itself (mirror-tiled).
+/// Measured walls: `deterministic` on the scan itself, in place (the reference).
 pub const STUDY_ON_SCAN: &str = "on-scan";
+/// Measured walls: `deterministic` on the scan turned to its lay and mirror-tiled (the earlier
+/// reference), and its comparison with [`STUDY_ON_SCAN`]: what the tiling cost.
+pub const STUDY_ON_SCAN_MIRRORED: &str = "on-scan-mirrored";
 /// Measured walls: `deterministic` on Gaussian (Garcia–Stoll) walls of given deviations.
 pub const STUDY_GAUSSIAN: &str = "gaussian";
 /// Measured walls: the runs with the wall card's deviations.
 pub const STUDY_WITH_CARD: &str = "card";
-/// Measured walls: the runs with the deviations of the mirror-tiled wall the particles met.
+/// Measured walls: the runs with the deviations of the mirror-tiled wall (what the particles
+/// met on [`STUDY_ON_SCAN_MIRRORED`]).
 pub const STUDY_WITH_TILED: &str = "tiled";
 
 /// Finite size: the sphere diameters (µm), one run directory each.
@@ -209,7 +213,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 63] = [
+pub const SHELL: [(&str, &[&str]); 64] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -270,6 +274,7 @@ pub const SHELL: [(&str, &[&str]); 63] = [
     ("STUDY", &[STUDY]),
     ("STUDY_CARD", &[STUDY_CARD]),
     ("STUDY_ON_SCAN", &[STUDY_ON_SCAN]),
+    ("STUDY_ON_SCAN_MIRRORED", &[STUDY_ON_SCAN_MIRRORED]),
     ("STUDY_GAUSSIAN", &[STUDY_GAUSSIAN]),
     ("STUDY_WITH_CARD", &[STUDY_WITH_CARD]),
     ("STUDY_WITH_TILED", &[STUDY_WITH_TILED]),

@@ -88,6 +88,13 @@ fn histories(c: &mut Criterion) {
     g.bench_function("histories_aniso_a-12.5_b0_one_core_finnie", |b| {
         b.iter(|| one_block_eroding(&t, n, Some(finnie)))
     });
+    // Issue 39, part 9: the in-place reference on a scan against periodic `deterministic` on
+    // a wall of the same size (the same generated wall taken as a patch, its lay at 30°, so
+    // every history is turned): goal ≥ 0.5× the periodic rate.
+    let t_patch = Realisations::from(Tracker::in_place(&f, 1000, 30f64.to_radians()).unwrap());
+    g.bench_function("histories_aniso_a-12.5_b0_one_core_in_place", |b| {
+        b.iter(|| one_block(&t_patch, n))
+    });
     g.finish();
 }
 

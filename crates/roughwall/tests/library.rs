@@ -12,6 +12,7 @@ mod c_header;
 mod deterministic_hard;
 mod deterministic_physics;
 mod force_models;
+mod in_place;
 mod own_model;
 mod parameters;
 mod stochastic_sampler;

@@ -1,8 +1,12 @@
 //! `rebound deterministic`: particle-centre bouncing on a generated anisotropic
 //! rough wall (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5 and 4; docs/physics.md §5).
+pub(crate) mod in_place;
+pub(crate) mod patch;
 pub(crate) mod scene;
 pub(crate) mod trace;
 
+pub use in_place::{in_place_wall, InPlaceWall, ScanReference};
+pub use patch::{Margins, Patch, LEFT_PATCH_BOUND, MARGIN_FLIGHTS, MAX_MARGIN_SHARE};
 pub use scene::{
     build_surfaces, choose_surface, generate_surface, realisation_seed, realisations,
     surface_from_field, BuiltSurface, SceneOptions, SphereDilation, SurfacePlan, WallDeviations,
@@ -136,13 +140,21 @@ pub(crate) fn history_observed(
 ) -> History {
     let (lx, lz) = tracker.periods();
     let mut r = prefix.stream(i);
-    let x = r.gen::<f64>() * lx;
-    let z = r.gen::<f64>() * lz;
+    // The same draws, in the same order, on a periodic wall and on a patch.
+    let (a, b) = (r.gen::<f64>(), r.gen::<f64>());
     let u_h = draw_speed(&setup.speed, &mut r);
     let u = setup.speed.velocity(cond.alpha_in, cond.beta_in, u_h);
     let w = setup.spin.draw(&mut r);
     let collide = |u, w, n| setup.law.collide(u, w, n, setup.diameter_m);
-    tracker.trace_observed(x, z, u, w, collide, observe)
+    let Some(patch) = tracker.patch() else {
+        return tracker.trace_observed(a * lx, b * lz, u, w, collide, observe);
+    };
+    // On a measured patch the incident direction is turned by the lay, not the wall.
+    let (u, w) = (patch.to_field(&u), patch.to_field(&w));
+    let (x, z) = patch.start(cond.alpha_in, &u, a, b);
+    let mut observe = observe;
+    let h = tracker.trace_observed(x, z, u, w, collide, |hit| observe(&hit.to_models(patch)));
+    h.to_models(patch)
 }
 
 /// The tallied record of a followed history (`None` for a lost one).
@@ -333,6 +345,8 @@ pub struct LostCounts {
     /// Histories for which the collision law returned a zero or non-finite velocity
     /// ([`LostReason::Stopped`]).
     pub stopped: u64,
+    /// Histories whose flight left a measured patch ([`LostReason::LeftPatch`]).
+    pub left_patch: u64,
 }
 
 impl LostCounts {
@@ -343,12 +357,13 @@ impl LostCounts {
             below_surface: lost[LostReason::BelowSurface as usize],
             step_budget: lost[LostReason::StepBudget as usize],
             stopped: lost[LostReason::Stopped as usize],
+            left_patch: lost[LostReason::LeftPatch as usize],
         }
     }
 
     /// All lost histories, whatever the reason.
     pub fn total(&self) -> u64 {
-        self.collision_cap + self.below_surface + self.step_budget + self.stopped
+        self.collision_cap + self.below_surface + self.step_budget + self.stopped + self.left_patch
     }
 
     fn add(&mut self, r: LostReason) {
@@ -357,6 +372,7 @@ impl LostCounts {
             LostReason::BelowSurface => self.below_surface += 1,
             LostReason::StepBudget => self.step_budget += 1,
             LostReason::Stopped => self.stopped += 1,
+            LostReason::LeftPatch => self.left_patch += 1,
         }
     }
 
@@ -367,6 +383,7 @@ impl LostCounts {
             (self.below_surface, LostReason::BelowSurface),
             (self.step_budget, LostReason::StepBudget),
             (self.stopped, LostReason::Stopped),
+            (self.left_patch, LostReason::LeftPatch),
         ]
         .iter()
         .filter(|(n, _)| *n > 0)

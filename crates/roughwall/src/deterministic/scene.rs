@@ -311,7 +311,11 @@ pub fn realisations<'a>(
     let trackers = built
         .iter()
         .map(|b| {
-            Tracker::new(&b.field, max_collisions).map_err(|e| match (e, file) {
+            let tracker = match b.in_place_lay {
+                Some(lay) => Tracker::in_place(&b.field, max_collisions, lay),
+                None => Tracker::new(&b.field, max_collisions),
+            };
+            tracker.map_err(|e| match (e, file) {
                 (Error::Input(m), Some(path)) => {
                     Error::Input(format!("--surface `{}`: {m}", path.display()))
                 }
@@ -381,6 +385,27 @@ pub struct BuiltSurface {
     pub generate_s: f64,
     /// For a sphere: the dilation of the surface.
     pub sphere: Option<SphereDilation>,
+    /// A measured scan in place ([`super::in_place`]): its lay angle (rad); the tracker then
+    /// takes the field as a non-periodic patch. `None`: a periodic wall.
+    pub in_place_lay: Option<f64>,
+}
+
+impl BuiltSurface {
+    /// A measured scan as the in-place reference's wall ([`super::in_place_wall`]); `secs`:
+    /// the time to read and characterise the scan.
+    pub fn in_place(wall: super::InPlaceWall, secs: f64, dilation_s: f64) -> BuiltSurface {
+        BuiltSurface {
+            sphere: wall.diameter_m.map(|d| SphereDilation {
+                diameter_m: d,
+                contact_fraction: wall.contact_fraction.unwrap_or(1.0),
+                dilation_s,
+            }),
+            in_place_lay: Some(wall.lay_angle),
+            field: wall.field,
+            source: "scan",
+            generate_s: secs,
+        }
+    }
 }
 
 /// A sphere's centre surface, made from the generated one (`surface::dilation`).
@@ -436,6 +461,7 @@ pub fn surface_from_field(
             source,
             generate_s,
             sphere: None,
+            in_place_lay: None,
         });
     };
     let t = std::time::Instant::now();
@@ -449,6 +475,7 @@ pub fn surface_from_field(
             contact_fraction: dil.contact_fraction,
             dilation_s: t.elapsed().as_secs_f64(),
         }),
+        in_place_lay: None,
     })
 }
 

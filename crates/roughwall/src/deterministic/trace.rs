@@ -11,6 +11,7 @@
 //! through a piece where `g` falls to `≤ 0`, and that piece is the hit. A coarse
 //! map of tile maxima lets the walk jump over tiles the ray passes above.
 
+use super::patch::Patch;
 use crate::error::{Error, Result};
 use crate::surface::HeightField;
 use nalgebra::Vector3;
@@ -26,6 +27,9 @@ pub enum LostReason {
     StepBudget,
     /// The collision law returned a zero or non-finite velocity.
     Stopped,
+    /// Its flight left a measured patch (the in-place reference on a scan,
+    /// [`super::in_place`]) below the entry height: no measured wall to meet there.
+    LeftPatch,
 }
 
 impl LostReason {
@@ -36,6 +40,7 @@ impl LostReason {
             LostReason::BelowSurface => "centre found below the surface",
             LostReason::StepBudget => "cell-walk step budget exhausted (near-horizontal flight)",
             LostReason::Stopped => "collision law returned a zero or non-finite velocity",
+            LostReason::LeftPatch => "left the scan before escaping above it",
         }
     }
 }
@@ -85,6 +90,34 @@ pub struct HitInfo {
     /// Triangle of the cell hit, 0 or 1, as numbered by
     /// [`HeightField::cell_normals`](crate::surface::HeightField::cell_normals).
     pub triangle: u8,
+}
+
+impl History {
+    /// This history, traced in a patch's axes, in the models' frame
+    /// ([`Patch::to_models`]).
+    pub fn to_models(self, patch: &Patch) -> History {
+        History {
+            incident: patch.to_models(&self.incident),
+            first_normal: patch.to_models(&self.first_normal),
+            first_velocity: patch.to_models(&self.first_velocity),
+            velocity: patch.to_models(&self.velocity),
+            omega: patch.to_models(&self.omega),
+            ..self
+        }
+    }
+}
+
+impl HitInfo {
+    /// This collision, reported in a patch's axes, with its vectors in the models' frame
+    /// (the point and cell stay the patch's).
+    pub fn to_models(&self, patch: &Patch) -> HitInfo {
+        HitInfo {
+            normal: patch.to_models(&self.normal),
+            u_in: patch.to_models(&self.u_in),
+            u_out: patch.to_models(&self.u_out),
+            ..*self
+        }
+    }
 }
 
 /// Default cap on collisions per particle.
@@ -145,6 +178,8 @@ pub struct Tracker<'a> {
     tiles: Option<Tiles>,
     /// The field's cells alternate their diagonal ([`crate::surface::Triangulation`]).
     alternating: bool,
+    /// A measured patch rather than a periodic wall ([`Tracker::in_place`]).
+    patch: Option<Patch>,
 }
 
 impl std::fmt::Debug for Tracker<'_> {
@@ -253,7 +288,42 @@ impl<'a> Tracker<'a> {
             max_steps,
             tiles,
             alternating: field.triangulation == crate::surface::Triangulation::Alternating,
+            patch: None,
         })
+    }
+
+    /// A tracker on `field` taken as a measured, non-periodic patch (the in-place reference,
+    /// [`super::in_place`]): whose lay is at `lay_angle` (rad) from its `x` towards its `−z`
+    /// (the scan's `y`). Histories are then shot over an inner region and counted as
+    /// [`LostReason::LeftPatch`] when a flight leaves the patch; the periodic wrap only
+    /// carries the walk until that is seen. At least 3 × 3 nodes.
+    pub fn in_place(field: &'a HeightField, max_collisions: u32, lay_angle: f64) -> Result<Self> {
+        if field.nx < 3 || field.nz < 3 {
+            return Err(Error::Input(format!(
+                "a patch of {} × {} nodes: the in-place reference needs at least 3 × 3",
+                field.nx, field.nz
+            )));
+        }
+        if !lay_angle.is_finite() {
+            return Err(Error::Input(format!(
+                "lay angle {lay_angle}: must be finite"
+            )));
+        }
+        let mut t = Tracker::new(field, max_collisions)?;
+        t.patch = Some(Patch::new(
+            field.nx,
+            field.nz,
+            field.dx,
+            field.dz,
+            t.hmax - t.hmin,
+            lay_angle,
+        ));
+        Ok(t)
+    }
+
+    /// The measured patch this tracker walks, if it is one ([`Tracker::in_place`]).
+    pub fn patch(&self) -> Option<&Patch> {
+        self.patch.as_ref()
     }
 
     /// The same tracker without the coarse max-height map (for tests and benches).
@@ -498,6 +568,8 @@ impl<'a> Tracker<'a> {
                 Walk::Escape => {
                     hist.fate = if hist.collisions == 0 {
                         Fate::Lost(LostReason::BelowSurface)
+                    } else if self.escapes_off_patch(&o, &d) {
+                        Fate::Lost(LostReason::LeftPatch)
                     } else {
                         Fate::Escaped
                     };
@@ -512,6 +584,12 @@ impl<'a> Tracker<'a> {
                     cell: hc,
                     tri: k,
                 } => {
+                    if let Some(patch) = &self.patch {
+                        if !patch.holds_cell(hc.ix, hc.iz, self.nx, self.nz) {
+                            hist.fate = Fate::Lost(LostReason::LeftPatch);
+                            break;
+                        }
+                    }
                     if hist.collisions >= self.max_collisions {
                         hist.fate = Fate::Lost(LostReason::CollisionCap);
                         break;
@@ -556,6 +634,21 @@ impl<'a> Tracker<'a> {
         hist.velocity = d;
         hist.omega = w;
         hist
+    }
+
+    /// On a patch: whether the flight from `o` (on the patch) along `d` (rising) reaches the
+    /// entry height off the patch. The flight is straight and the patch convex, so it stayed
+    /// on the patch if its end did.
+    #[inline]
+    fn escapes_off_patch(&self, o: &Vector3<f64>, d: &Vector3<f64>) -> bool {
+        let Some(patch) = &self.patch else {
+            return false;
+        };
+        if d.y <= 0.0 {
+            return false;
+        }
+        let t = ((self.hmax - o.y) / d.y).max(0.0);
+        !patch.holds_point(o.x + d.x * t, o.z + d.z * t)
     }
 
     /// Walks the straight segment `o + d t`, `t ≥ 0`, starting in `cell`,

@@ -186,6 +186,67 @@ pub fn centre_surface(f: &ScanField, diameter_m: f64) -> CentreSurface {
     }
 }
 
+/// The share of the points where the centre surface `c` of a sphere over the scan `f` is
+/// exact that a resting sphere touches: the points the opening `min over p of [c(p) +
+/// |p − q|²/2R]` brings back to the scan's height (it lies above the scan elsewhere;
+/// Felzenszwalb & Huttenlocher's envelope on `−c`, as for the dilation). 1 for a point.
+/// The same quantity as [`crate::surface::dilation::Dilated::contact_fraction`], counted on
+/// the exact region only.
+pub fn contact_fraction(f: &ScanField, c: &CentreSurface) -> f64 {
+    let (nx, ny) = (f.nx, f.ny);
+    let radius = 0.5 * c.diameter_m;
+    if radius <= 0.0 {
+        return 1.0;
+    }
+    let neg: Vec<f64> = c.field.heights.iter().map(|h| -h).collect();
+    let ax = f.dx * f.dx / (2.0 * radius);
+    let mut rows = vec![0.0; nx * ny];
+    rows.par_chunks_mut(nx)
+        .zip(neg.par_chunks(nx))
+        .for_each_init(
+            || (Vec::new(), Vec::new()),
+            |(v, z), (out, row)| max_plus_open(row, ax, out, v, z),
+        );
+    drop(neg);
+    let ay = f.dy * f.dy / (2.0 * radius);
+    let (lo, hi) = f
+        .heights
+        .iter()
+        .filter(|h| h.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
+            (a.min(h), b.max(h))
+        });
+    // Rounding of the parabolas' terms, far below any height step a scan resolves.
+    let tol = 1e-9 * (hi - lo).max(f64::MIN_POSITIVE);
+    let (touched, exact) = (0..nx)
+        .into_par_iter()
+        .map_init(
+            || (Vec::new(), Vec::new()),
+            |(v, z), ix| {
+                let col: Vec<f64> = (0..ny).map(|iy| rows[iy * nx + ix]).collect();
+                let mut out = vec![0.0; ny];
+                max_plus_open(&col, ay, &mut out, v, z);
+                let mut counts = (0u64, 0u64);
+                for (iy, o) in out.iter().enumerate() {
+                    let p = iy * nx + ix;
+                    if c.field.heights[p].is_finite() {
+                        counts.1 += 1;
+                        // The opening is −out: at least the scan's height, equal where touched.
+                        if -o - f.heights[p] <= tol {
+                            counts.0 += 1;
+                        }
+                    }
+                }
+                counts
+            },
+        )
+        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
+    if exact == 0 {
+        return 0.0;
+    }
+    touched as f64 / exact as f64
+}
+
 /// The deviations a sphere of one diameter sees on a scan.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SeenDeviations {

@@ -32,10 +32,12 @@ pub(crate) mod parameters;
 pub(crate) mod periodic;
 pub(crate) mod resolution;
 
-pub use centre_surface::{centre_surface_bytes, SeenDeviations};
+pub use centre_surface::{
+    centre_surface, centre_surface_bytes, contact_fraction, CentreSurface, SeenDeviations,
+};
 pub use correlation::Correlation;
 pub use correlation_map::{correlation_map, map_bytes, CorrelationMap};
-pub use lay::{angle_histograms, lay_angle, Lay};
+pub use lay::{angle_histograms, lay_angle, lay_at, Lay};
 pub use levelling::{level, MAX_DEGREE};
 pub use notes::{criteria, labelled, missing_fraction, notes, reach_um, spread};
 pub use parameters::{area_parameters, AreaParameters};

@@ -82,7 +82,7 @@ pub struct ErosionOutcome {
 }
 
 /// Number of reasons a deterministic history can be lost (`deterministic::LostReason`).
-pub const LOST_REASONS: usize = 4;
+pub const LOST_REASONS: usize = 5;
 
 /// What one condition tallies and how.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,0 +1,198 @@
+//! The deterministic reference on a measured scan itself (issue 39, part 1): the particle
+//! centre bounces on the scan's own triangles, at its own pixel, with no resampling and no
+//! mirroring (Radenkovic & Simonin 2021, Sec. 3.1, on a measured wall; docs/models.md,
+//! "Measured walls").
+//!
+//! A scan is a patch: not periodic, and in general not aligned with its lay. Instead of
+//! turning the wall to its lay (which resamples it), the incident direction is turned: the
+//! models' frame (`x` along the lay, `β⁻` measured from it) is the scan's frame turned by the
+//! lay angle `φ` about the wall normal, `R_y(φ)` ([`super::Patch::to_field`]). Particles enter at
+//! the highest node over an inner region of the patch whose margins follow from the height
+//! range `Δh` and `α⁻` ([`super::Patch::margins`]); a history whose flight leaves the patch below
+//! the highest node has no measured wall to meet and is counted as
+//! [`LostReason::LeftPatch`](super::LostReason::LeftPatch).
+//!
+//! The tracker walks the patch as if it were periodic (so it keeps its coarse tile map), and
+//! [`super::Patch`] decides what is off it: a hit in a cell outside the scan's `(nx − 1) × (nz − 1)`
+//! cells (the seam cells that close the period are not the scan's), or an escape point
+//! outside the patch. A flight is a straight segment and the patch is convex, so a segment
+//! between two points on it stays on it.
+
+use crate::error::{Error, Result};
+use crate::scan::{centre_surface, ScanField};
+use crate::surface::{HeightField, Triangulation};
+
+/// What a measured scan becomes for `deterministic` (`[deterministic] scan_wall`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ScanReference {
+    /// The scan itself, in place ([`in_place_wall`], [`crate::Tracker::in_place`]): the
+    /// reference.
+    #[default]
+    InPlace,
+    /// Turned to its lay, resampled, cropped and mirror-tiled into a periodic wall
+    /// ([`crate::scan::mirrored_wall`]): the earlier reference, kept to measure what it cost.
+    Mirrored,
+}
+
+impl ScanReference {
+    /// The names the case key accepts, in the order of the variants.
+    pub const NAMES: [&'static str; 2] = ["in-place", "mirrored"];
+
+    /// The case-file name.
+    pub fn name(self) -> &'static str {
+        match self {
+            ScanReference::InPlace => Self::NAMES[0],
+            ScanReference::Mirrored => Self::NAMES[1],
+        }
+    }
+
+    /// The variant of a case-file name.
+    pub fn from_name(name: &str) -> Option<Self> {
+        [ScanReference::InPlace, ScanReference::Mirrored]
+            .into_iter()
+            .find(|r| r.name() == name)
+    }
+}
+
+/// A measured scan made ready for the in-place reference ([`in_place_wall`]).
+#[derive(Clone, Debug)]
+pub struct InPlaceWall {
+    /// The scan (or, for a sphere, its centre surface) on its own grid, in the tracker's axes:
+    /// `x` the scan's `x`, `z` its `−y` (rows reversed), cropped as [`Self::crop`] says.
+    pub field: HeightField,
+    /// The lay angle the incident directions are turned by (rad).
+    pub lay_angle: f64,
+    /// The scan's points used: first column and row, and counts along `x` and `y`.
+    pub crop: [usize; 4],
+    /// For a sphere: the diameter (m) whose centre surface this is.
+    pub diameter_m: Option<f64>,
+    /// Share of the scan's points the wall keeps.
+    pub area_fraction: f64,
+    /// For a sphere: the share of the scan's points a resting sphere touches (among those
+    /// the wall keeps).
+    pub contact_fraction: Option<f64>,
+    /// The deviations of this wall's own triangles along and across the lay (for a sphere,
+    /// those of its centre surface): what the particles met.
+    pub deviations: Option<crate::scan::Lay>,
+}
+
+/// Side of the coarse tile map of the tracker, in cells: a crop to a multiple of it keeps
+/// the map (`deterministic::trace`).
+const TILE_MULTIPLE: usize = 8;
+
+/// The scan `f` (levelled) as the in-place reference's wall for a particle centre
+/// (`diameter_m = None`) or a sphere of that diameter, whose centre rides on the scan's
+/// centre surface (the paraboloid dilation of [`crate::scan::centre_surface`]).
+///
+/// Nothing is resampled: the wall is the largest block of the scan's own nodes on which the
+/// surface is known (for a sphere, exact: the edges lose the dilation's reach), cut to a
+/// multiple of 8 nodes along each axis (at most 7 rows and columns) so that the tracker
+/// keeps its tile map. A missing point inside that block is refused: the reference needs
+/// every node it may hit.
+pub fn in_place_wall(
+    f: &ScanField,
+    lay_angle: f64,
+    diameter_m: Option<f64>,
+    triangulation: Triangulation,
+) -> Result<InPlaceWall> {
+    crate::memory::require(
+        "--surface",
+        format!("{} × {} points", f.nx, f.ny),
+        (f.nx as u64)
+            .saturating_mul(f.ny as u64)
+            .saturating_mul(8 * if diameter_m.is_some() { 4 } else { 1 }),
+        "the in-place wall of the scan",
+    )?;
+    let (surface, contact_fraction) = match diameter_m {
+        Some(d) => {
+            let c = centre_surface::centre_surface(f, d);
+            let touched = centre_surface::contact_fraction(f, &c);
+            (c.field, Some(touched))
+        }
+        None => (f.clone(), None),
+    };
+    let [x0, y0, nx, ny] = known_block(&surface);
+    let what = match diameter_m {
+        Some(d) => format!(
+            "the centre surface of a {} µm sphere",
+            crate::format::fmt_num(d * 1e6)
+        ),
+        None => "the scan".to_string(),
+    };
+    if nx < 3 || ny < 3 {
+        return Err(Error::Input(format!(
+            "{what} is known on a block of {nx} × {ny} points of the {} × {} scan: the in-place reference needs at least 3 × 3",
+            f.nx, f.ny
+        )));
+    }
+    let cut = |n: usize| {
+        if n >= 2 * TILE_MULTIPLE {
+            n - n % TILE_MULTIPLE
+        } else {
+            n
+        }
+    };
+    let (nx, ny) = (cut(nx), cut(ny));
+    // The block in the scan's own axes, for its deviations along the lay.
+    let mut block = Vec::with_capacity(nx * ny);
+    for iy in y0..y0 + ny {
+        block.extend_from_slice(&surface.heights[iy * surface.nx + x0..iy * surface.nx + x0 + nx]);
+    }
+    drop(surface);
+    let missing = block.iter().filter(|h| !h.is_finite()).count();
+    if missing > 0 {
+        return Err(Error::Input(format!(
+            "{what} misses {missing} of the {nx} × {ny} points inside its known block: the in-place reference needs every point it may hit (fill the gaps in the instrument's software, or crop the scan to a complete block)"
+        )));
+    }
+    let block = ScanField {
+        nx,
+        ny,
+        dx: f.dx,
+        dy: f.dy,
+        heights: block,
+    };
+    let deviations = crate::scan::lay_at(&block, lay_angle);
+    // The tracker's z is the scan's −y: its first row is the scan's last.
+    let mut heights = block.heights;
+    let mut rows = heights.chunks_exact_mut(nx);
+    while let (Some(a), Some(b)) = (rows.next(), rows.next_back()) {
+        a.swap_with_slice(b);
+    }
+    let field = HeightField {
+        nx,
+        nz: ny,
+        dx: f.dx,
+        dz: f.dy,
+        heights,
+        triangulation,
+    };
+    Ok(InPlaceWall {
+        field,
+        lay_angle,
+        crop: [x0, y0, nx, ny],
+        diameter_m,
+        area_fraction: (nx * ny) as f64 / (f.nx * f.ny) as f64,
+        contact_fraction,
+        deviations,
+    })
+}
+
+/// The smallest block `[x0, y0, nx, ny]` holding every known point of `f` (rows and columns
+/// of missing points at its edges cut off; for a centre surface, the band the dilation
+/// cannot know).
+fn known_block(f: &ScanField) -> [usize; 4] {
+    let row_known = |iy: usize| {
+        f.heights[iy * f.nx..(iy + 1) * f.nx]
+            .iter()
+            .any(|h| h.is_finite())
+    };
+    let col_known = |ix: usize| (0..f.ny).any(|iy| f.heights[iy * f.nx + ix].is_finite());
+    let Some(y0) = (0..f.ny).find(|&iy| row_known(iy)) else {
+        return [0, 0, 0, 0];
+    };
+    let y1 = (0..f.ny).rev().find(|&iy| row_known(iy)).unwrap_or(y0);
+    let x0 = (0..f.nx).find(|&ix| col_known(ix)).unwrap_or(0);
+    let x1 = (0..f.nx).rev().find(|&ix| col_known(ix)).unwrap_or(x0);
+    [x0, y0, x1 - x0 + 1, y1 - y0 + 1]
+}

@@ -119,20 +119,38 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
     } else {
         format!("the scan {}", toml_str(src.file))
     };
+    let f = &c.levelled;
+    let diameters = card_tables(seen, f);
     let mut s = format!(
         "# Wall card of {what}.\n\
          # Written by `rebound scan`.\n\
          #\n\
-         # Run a case on it with `rebound stochastic --wall-card THIS_FILE` (or `deterministic`),\n\
-         # or paste [wall] into a case file: the deviations are those along the lay (Δξ) and\n\
-         # across it (Δζ), so the models' x runs along the lay and β⁻ is measured from the lay\n\
-         # ([lay] angle_deg gives it in the scan's axes).\n\
-         # For the C library: set rw_wall_params.delta_xi_deg and delta_zeta_deg to these values, and\n\
-         # rw_hit.lay to the lay direction (direction_scan_xy, in the scan's x and y) turned into\n\
-         # the CFD wall's axes.\n\
-         # Only [wall] goes into a case file: [lay], [scan] and notes describe the measurement, and\n\
-         # each [[diameter]] (if any) gives what a sphere of that diameter sees instead of [wall].\n\n"
+         # For particles of diameter D, take the [[diameter]] row of D (below, before [wall]):\n\
+         # `rebound stochastic --wall-card THIS_FILE` does, for [particles] diameter_um.\n\
+         # [wall] is the point particle's: every triangle of the scan, so a property of its\n\
+         # pixel as much as of the wall (its resolution check is in wall_card_diameters.csv).\n\
+         # The deviations are those along the lay (Δξ) and across it (Δζ), so the models' x runs\n\
+         # along the lay and β⁻ is measured from the lay ([lay] angle_deg gives it in the scan's\n\
+         # axes). `deterministic --surface` on the scan itself is the reference to check against.\n\
+         # For the C library: set rw_wall_params.delta_xi_deg and delta_zeta_deg to a row's values,\n\
+         # and rw_hit.lay to the lay direction (direction_scan_xy, in the scan's x and y) turned\n\
+         # into the CFD wall's axes.\n\
+         # Only [wall] (or a row's two deviations under [wall]) goes into a case file: [lay],\n\
+         # [scan] and notes describe the measurement.\n"
     );
+    // A scan smaller than a particle: said first.
+    let (lx, ly) = ((f.nx - 1) as f64 * f.dx, (f.ny - 1) as f64 * f.dy);
+    for d in seen.iter().map(|r| r.seen.diameter_m) {
+        if d > lx.min(ly) {
+            s += &format!(
+                "#\n# THE SCAN ({:.0} × {:.0} µm) IS SMALLER THAN THE {} µm PARTICLE: no row for it can be trusted.\n",
+                lx * 1e6,
+                ly * 1e6,
+                fmt_num(d * 1e6)
+            );
+        }
+    }
+    s += "\n";
     s += "notes = [";
     if notes.is_empty() {
         s += "]\n";
@@ -143,9 +161,11 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
         }
         s += "]\n";
     }
+    s += &diameters;
     if let Some(l) = &c.lay {
         s += &format!(
-            "\n[wall]\n\
+            "\n# The point particle: every triangle at the scan's pixel.\n\
+             [wall]\n\
              delta_xi_deg = {}    # along the lay\n\
              delta_zeta_deg = {}    # across the lay\n",
             toml_float(l.delta_xi.to_degrees()),
@@ -163,7 +183,6 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
             );
         }
     }
-    let f = &c.levelled;
     let p = &c.parameters;
     s += "\n[scan]\n";
     if !src.file.is_empty() {
@@ -191,7 +210,7 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
             toml_float(sdq)
         );
     }
-    s + &card_tables(seen, f)
+    s
 }
 
 /// The `[scan]` table of `run.toml`: what was read, the grid, the levelling, and what the

@@ -11,10 +11,14 @@ use roughwall::scan::{criteria, reach_um};
 use roughwall::ScanField;
 
 /// The columns of `wall_card_diameters.csv`.
-pub const DIAMETERS_HEADER: [&str; 10] = [
+pub const DIAMETERS_HEADER: [&str; 14] = [
     "diameter_um",
     "delta_xi_deg",
     "delta_zeta_deg",
+    "delta_xi_deg_2x_pixel",
+    "delta_zeta_deg_2x_pixel",
+    "change_xi_2x_pixel",
+    "change_zeta_2x_pixel",
     "exact_fraction",
     "reach_x_um",
     "reach_y_um",
@@ -39,10 +43,25 @@ pub fn diameters_table(rows: &[SeenBy], f: &ScanField) -> CsvTable {
             None => (String::new(), String::new()),
         };
         let se = r.relative_error();
+        let (xi2, zeta2) = match &s.at_double_pixel {
+            Some(l) => (
+                fmt_num(l.delta_xi.to_degrees()),
+                fmt_num(l.delta_zeta.to_degrees()),
+            ),
+            None => (String::new(), String::new()),
+        };
+        let (cxi, czeta) = match s.resolution_change() {
+            Some([a, b]) => (fmt_num(a), fmt_num(b)),
+            None => (String::new(), String::new()),
+        };
         t.push(vec![
             fmt_num(s.seen.diameter_m * 1e6),
             xi,
             zeta,
+            xi2,
+            zeta2,
+            cxi,
+            czeta,
             fmt_num(r.exact_fraction),
             fmt_num(rx),
             fmt_num(ry),
@@ -68,12 +87,14 @@ pub fn card_tables(rows: &[SeenBy], f: &ScanField) -> String {
     }
     let mut s = "\n\
         # One [[diameter]] per particle diameter: Δξ (along the lay) and Δζ (across it) of the\n\
-        # surface the sphere's centre rides on, the definition of [wall] (its point particle).\n\
+        # surface the sphere's centre rides on. Use the row of your particles' diameter:\n\
         # `rebound stochastic --wall-card THIS_FILE` takes the row of [particles] diameter_um;\n\
         # or paste a row's delta_xi_deg and delta_zeta_deg under a case's [wall]. For the C\n\
         # library: rw_wall_params.delta_xi_deg and delta_zeta_deg for particles of that\n\
-        # diameter. `note` says where the scan is too small or too coarse for it (\"\": it\n\
-        # serves it); without deviations no triangle of the centre surface is exact.\n"
+        # diameter. `*_2x_pixel`: the same on the scan read at twice its pixel, and their\n\
+        # relative change (the resolution check); `note` says where the scan is too small or\n\
+        # the row resolution-limited (\"\": it serves it); without deviations no triangle of the\n\
+        # centre surface is exact.\n"
         .to_string();
     for d in spheres {
         s += &format!(
@@ -85,6 +106,15 @@ pub fn card_tables(rows: &[SeenBy], f: &ScanField) -> String {
                 "delta_xi_deg = {}\ndelta_zeta_deg = {}\n",
                 toml_float(l.delta_xi.to_degrees()),
                 toml_float(l.delta_zeta.to_degrees())
+            );
+        }
+        if let (Some(l), Some([a, b])) = (&d.at_double_pixel, d.resolution_change()) {
+            s += &format!(
+                "delta_xi_deg_2x_pixel = {}\ndelta_zeta_deg_2x_pixel = {}\nchange_2x_pixel = [{}, {}]\n",
+                toml_float(l.delta_xi.to_degrees()),
+                toml_float(l.delta_zeta.to_degrees()),
+                toml_float(a),
+                toml_float(b)
             );
         }
         s += &format!(
@@ -164,7 +194,10 @@ mod tests {
         assert_eq!(table[0]["diameter_um"].as_float(), Some(100.0));
         let lay = rows[1].seen.lay.unwrap();
         let row = card.split("[[diameter]]\n").nth(1).unwrap();
-        let lines: Vec<&str> = row.lines().filter(|l| l.starts_with("delta_")).collect();
+        let lines: Vec<&str> = row
+            .lines()
+            .filter(|l| l.starts_with("delta_xi_deg =") || l.starts_with("delta_zeta_deg ="))
+            .collect();
         assert_eq!(lines.len(), 2);
         let case = crate::case::parse(
             &format!("name = \"pasted\"\n[wall]\n{}\n", lines.join("\n")),
@@ -181,7 +214,11 @@ mod tests {
         let csv = String::from_utf8(diameters_table(&rows, f).to_bytes()).unwrap();
         assert!(!csv.to_ascii_lowercase().contains("nan"), "{csv}");
         let last: Vec<&str> = csv.lines().nth(3).unwrap().split(',').collect();
-        assert_eq!((last[1], last[2], last[8]), ("", "", ""), "{csv}");
+        let se = DIAMETERS_HEADER
+            .iter()
+            .position(|h| *h == "delta_rel_se")
+            .unwrap();
+        assert_eq!((last[1], last[2], last[se]), ("", "", ""), "{csv}");
         assert_eq!(csv.lines().next().unwrap(), DIAMETERS_HEADER.join(","));
         assert!(csv.lines().nth(1).unwrap().starts_with("0,"), "{csv}");
         // run.toml: the same rows, the undefined values left out.
@@ -195,8 +232,8 @@ mod tests {
     }
 
     /// Each note's trigger, worded with its numbers: too few correlation areas (a point on a
-    /// 7 × 20 c_L scan), too little exact (a 500 µm sphere on it), too coarse (2 pixels per
-    /// c_Lz, with the Gaussian wall's ratio).
+    /// 7 × 20 c_L scan), too little exact (a 500 µm sphere on it), resolution-limited (2
+    /// pixels per c_Lz: Δζ changes by about −16 % at twice the pixel).
     #[test]
     fn each_note_names_its_trigger_and_its_numbers() {
         let small = wall(160, 1);
@@ -229,9 +266,12 @@ mod tests {
         let n = criteria(&rows[0], &coarse.levelled);
         assert_eq!(n.len(), 1, "{n:?}");
         assert!(
-            n[0].starts_with("too coarse: 2.") && n[0].contains(" pixels per correlation length across the lay (fewer than 4): on a Gaussian wall the triangles' Δ is "),
+            n[0].starts_with("resolution-limited: Δξ and Δζ change by ")
+                && n[0].contains(" when the pixel is doubled (more than 5 %): a point particle's deviations are those of the pixel"),
             "{n:?}"
         );
+        let change = rows[0].resolution_change().unwrap()[1];
+        assert!((-0.2..-0.12).contains(&change), "{change}");
         // A wall served: no note.
         let good = wall(512, 1);
         let rows = seen_by(&good, &[50e-6]).unwrap();

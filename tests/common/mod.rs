@@ -419,7 +419,7 @@ pub mod headers {
     /// `scan_summary.csv` of `scan`.
     pub const SCAN_SUMMARY: &str = "file,format,nx,ny,dx_um,dy_um,valid_points,missing_fraction,level_degree,sq_um,ssk,sku,sdq,sdq_x,sdq_y,lay_deg,delta_xi_deg,delta_zeta_deg,rho_xi_zeta,skewness_xi,skewness_zeta,kurtosis_xi,kurtosis_zeta,delta_scan_x_deg,delta_scan_y_deg,corr_length_along_um,corr_length_across_um";
     /// `wall_card_diameters.csv` of `scan` with diameters.
-    pub const WALL_CARD_DIAMETERS: &str = "diameter_um,delta_xi_deg,delta_zeta_deg,exact_fraction,reach_x_um,reach_y_um,footprint_um,correlation_areas,delta_rel_se,note";
+    pub const WALL_CARD_DIAMETERS: &str = "diameter_um,delta_xi_deg,delta_zeta_deg,delta_xi_deg_2x_pixel,delta_zeta_deg_2x_pixel,change_xi_2x_pixel,change_zeta_2x_pixel,exact_fraction,reach_x_um,reach_y_um,footprint_um,correlation_areas,delta_rel_se,note";
     /// `force_sweep.csv` of `force-sweep`.
     pub const FORCE_SWEEP: &str = "model,lambda,beta_deg,u_n_m_s,diameter_um,density_kg_m3,youngs_pa,poisson,f_max_n,xi,contact_time_s";
 }

@@ -256,6 +256,38 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
             &dir.join(STUDY_ON_SCAN).join(DETERMINISTIC),
             "measured_delta_zeta_deg",
         ));
+        // How much of the in-place reference left the scan (the bound of a warning: 10⁻³).
+        if let Some(conditions) = run_toml(&dir.join(STUDY_ON_SCAN).join(DETERMINISTIC))
+            .and_then(|t| t.get("conditions").and_then(|c| c.as_array()).cloned())
+        {
+            let worst_left = conditions
+                .iter()
+                .filter_map(|c| {
+                    let left = c.get("left_patch")?.as_integer()? as f64;
+                    let n = c.get("histories")?.as_integer()? as f64;
+                    let a = c.get("alpha_in_deg")?.as_float()?;
+                    let b = c.get("beta_in_deg")?.as_float()?;
+                    Some((left / n.max(1.0), a, b))
+                })
+                .fold(None, |m: Option<(f64, f64, f64)>, x| match m {
+                    Some(m) if m.0 >= x.0 => Some(m),
+                    _ => Some(x),
+                });
+            if let Some((share, a, b)) = worst_left {
+                let _ = writeln!(
+                    verdicts,
+                    "- {s}: up to {:.2} % of the in-place reference's histories left the scan (at ({}°, {}°)){}",
+                    100.0 * share,
+                    fmt_num(a),
+                    fmt_num(b),
+                    if share > 1e-3 {
+                        ": above the 0.1 % bound, the scan is too small for that incidence and the reference there lacks its longest flights"
+                    } else {
+                        ", within the 0.1 % bound"
+                    }
+                );
+            }
+        }
         // What the earlier reference (turned, resampled, mirror-tiled) cost against the scan
         // in place.
         if let Some(w) = worst(&mirrored.join(COMPARE))? {

@@ -127,7 +127,17 @@ fn diameter_row<'py>(py: Python<'py>, s: &SeenBy, f: &ScanField) -> PyResult<Bou
     let se = r.relative_error();
     d.set_item("delta_rel_se", se.is_finite().then_some(se))?;
     d.set_item("too_small", s.seen.lay.is_none() || r.too_small())?;
-    d.set_item("too_coarse", r.too_coarse())?;
+    // The resolution check: the same deviations at twice the pixel and their change.
+    d.set_item(
+        "delta_xi_deg_2x_pixel",
+        s.at_double_pixel.map(|l| deg(l.delta_xi)),
+    )?;
+    d.set_item(
+        "delta_zeta_deg_2x_pixel",
+        s.at_double_pixel.map(|l| deg(l.delta_zeta)),
+    )?;
+    d.set_item("change_2x_pixel", s.resolution_change().map(|[a, b]| (a, b)))?;
+    d.set_item("resolution_limited", s.resolution_limited())?;
     d.set_item("notes", labelled(s, f))?;
     Ok(d)
 }

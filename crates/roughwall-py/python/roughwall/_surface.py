@@ -95,7 +95,8 @@ def wall_card(
     scan levelled by its least-squares polynomial of `level_degree` (1: plane), ISO 25178
     parameters, the lay, the normal-angle deviations along and across it (the Δξ, Δζ a Wall
     takes) and, for each particle diameter in `diameters_m` (m), those of the surface that
-    sphere's centre rides on, with where the scan is too small or too coarse for it.
+    sphere's centre rides on, with where the scan is too small for it and the resolution
+    check (the same deviations at twice the pixel, their change, `resolution_limited`).
 
     `scan` is a Scan (from read_scan), a path to one, or a 2-D height array (m, NaN for a
     missing point; then give `dx`, `dy` in m). Returns a dict: "wall" (delta_xi_deg,

@@ -42,7 +42,7 @@ pub use levelling::{level, MAX_DEGREE};
 pub use notes::{criteria, labelled, missing_fraction, notes, reach_um, spread};
 pub use parameters::{area_parameters, AreaParameters};
 pub use periodic::{mirrored_wall, MirroredWall};
-pub use resolution::{seen_by, Resolution, SeenBy};
+pub use resolution::{decimated, seen_by, Resolution, SeenBy, MAX_RESOLUTION_CHANGE};
 
 use crate::error::{Error, Result};
 use std::ops::Range;

@@ -2,11 +2,11 @@
 //! Python package's `roughwall.wall_card`): where a characterised scan is outside what the
 //! models assume (deviations beyond the low-roughness range of Radenkovic & Simonin 2021,
 //! Eq. 6, slopes far from Gaussian), too holed or too small to trust, and, per particle
-//! diameter, where it is too small or too coarse for the deviations that particle sees (the
-//! criteria of [`super::resolution`]). One line per note, in words.
+//! diameter, where it is too small for the deviations that particle sees or they are
+//! resolution-limited (the criteria of [`super::resolution`]). One line per note, in words.
 
 use super::lay::Lay;
-use super::resolution::{SeenBy, MIN_CORRELATION_AREAS, MIN_EXACT_FRACTION, MIN_PIXELS_PER_LENGTH};
+use super::resolution::{SeenBy, MAX_RESOLUTION_CHANGE, MIN_CORRELATION_AREAS, MIN_EXACT_FRACTION};
 use super::{Characterisation, ScanField};
 use crate::format::fmt_num;
 use crate::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
@@ -104,8 +104,9 @@ pub fn notes(c: &Characterisation) -> Vec<String> {
     out
 }
 
-/// Where the scan is too small or too coarse for the particle of `s`, one line per
-/// criterion met (none: the scan serves it).
+/// Where the scan is too small for the particle of `s`, or its deviations resolution-limited
+/// (they change by more than 5 % at twice the pixel), one line per criterion met (none: the
+/// scan serves it).
 pub fn criteria(s: &SeenBy, f: &ScanField) -> Vec<String> {
     let r = &s.resolution;
     let point = s.seen.diameter_m == 0.0;
@@ -151,18 +152,19 @@ pub fn criteria(s: &SeenBy, f: &ScanField) -> Vec<String> {
         }
         out.push(format!("too small: {}", why.join("; ")));
     }
-    if r.too_coarse() {
-        let (k, ratio) = r.coarsest();
-        let sphere = match point {
-            true => "",
-            false => "; a sphere's Δ falls at least as much (docs/models.md, \"Measured walls\")",
+    if s.resolution_limited() {
+        let [xi, zeta] = s.resolution_change().unwrap_or([0.0, 0.0]);
+        let pct = |x: f64| format!("{:+.1} %", 100.0 * x);
+        let what = if point {
+            "a point particle's deviations are those of the pixel: measure with a finer pixel, or take the row of the particle's diameter"
+        } else {
+            "measure with a finer pixel, or this diameter's deviations are a bound (a larger particle settles sooner)"
         };
         out.push(format!(
-            "too coarse: {} pixels per correlation length {} the lay (fewer than {MIN_PIXELS_PER_LENGTH}): on a Gaussian wall the triangles' Δ is {} % below the wall's (√((1 − e^(−δ²/c²)) c²/δ²) = {}){sphere}",
-            fmt_num(round(r.pixels_per_length()[k], 2)),
-            ["along", "across"][k],
-            fmt_num(round(100.0 * (1.0 - ratio), 1)),
-            fmt_num(round(ratio, 3)),
+            "resolution-limited: Δξ and Δζ change by {} and {} when the pixel is doubled (more than {} %): {what}",
+            pct(xi),
+            pct(zeta),
+            100.0 * MAX_RESOLUTION_CHANGE,
         ));
     }
     out

@@ -6,7 +6,7 @@ use super::scan_diameters::card_tables;
 use crate::output::{fmt_num, fmt_opt, toml_float, toml_str, CsvTable};
 use roughwall::scan::Characterisation;
 use roughwall::scan::SeenBy;
-use roughwall::scan::{missing_fraction, spread};
+use roughwall::scan::{lay_uncertainty, missing_fraction, spread};
 
 /// The columns of `scan_summary.csv`.
 pub const SUMMARY_HEADER: [&str; 27] = [
@@ -163,16 +163,34 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
     }
     s += &diameters;
     if let Some(l) = &c.lay {
+        // A wall whose anisotropy the scan does not show beyond its noise is isotropic: no
+        // lay, and both deviations the rms of the two.
+        let u = lay_uncertainty(f, l.angle);
+        let isotropic = u.is_some_and(|u| !u.significant());
+        let (xi, zeta) = if isotropic {
+            let rms = (0.5 * (l.delta_xi.powi(2) + l.delta_zeta.powi(2))).sqrt();
+            (rms, rms)
+        } else {
+            (l.delta_xi, l.delta_zeta)
+        };
+        let (along, across) = if isotropic {
+            (
+                "isotropic: the rms of the two",
+                "isotropic: the rms of the two",
+            )
+        } else {
+            ("along the lay", "across the lay")
+        };
         s += &format!(
             "\n# The point particle: every triangle at the scan's pixel.\n\
              [wall]\n\
-             delta_xi_deg = {}    # along the lay\n\
-             delta_zeta_deg = {}    # across the lay\n",
-            toml_float(l.delta_xi.to_degrees()),
-            toml_float(l.delta_zeta.to_degrees())
+             delta_xi_deg = {}    # {along}\n\
+             delta_zeta_deg = {}    # {across}\n",
+            toml_float(xi.to_degrees()),
+            toml_float(zeta.to_degrees())
         );
         let [sx, sz] = spread(l);
-        if sx || sz {
+        if (sx || sz) && !isotropic {
             s += &format!(
                 "\n[lay]\n\
                  angle_deg = {}    # from the scan's x towards its y: the models' β* of the lay\n\
@@ -181,6 +199,15 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
                 toml_float(l.angle.cos()),
                 toml_float(l.angle.sin())
             );
+            if let Some(u) = u {
+                s += &format!(
+                    "angle_se_deg = {}    # standard error, from {} sub-patches\n\
+                     anisotropy_t = {}    # (Δζ − Δξ) over its standard error between sub-patches\n",
+                    toml_float(u.angle_se.to_degrees()),
+                    u.patches,
+                    toml_float(if u.t().is_finite() { u.t() } else { f64::MAX }),
+                );
+            }
         }
     }
     let p = &c.parameters;

@@ -136,7 +136,10 @@ fn diameter_row<'py>(py: Python<'py>, s: &SeenBy, f: &ScanField) -> PyResult<Bou
         "delta_zeta_deg_2x_pixel",
         s.at_double_pixel.map(|l| deg(l.delta_zeta)),
     )?;
-    d.set_item("change_2x_pixel", s.resolution_change().map(|[a, b]| (a, b)))?;
+    d.set_item(
+        "change_2x_pixel",
+        s.resolution_change().map(|[a, b]| (a, b)),
+    )?;
     d.set_item("resolution_limited", s.resolution_limited())?;
     d.set_item("notes", labelled(s, f))?;
     Ok(d)
@@ -163,11 +166,25 @@ fn card<'py>(
     out.set_item("level_degree", c.degree)?;
     match &c.lay {
         Some(l) => {
+            // As `rebound scan`'s card: a wall whose anisotropy is not significant over the
+            // sub-patches is isotropic, both deviations the rms of the two.
+            let u = roughwall::scan::lay_uncertainty(&c.levelled, l.angle);
+            let isotropic = u.is_some_and(|u| !u.significant());
+            let rms = (0.5 * (l.delta_xi.powi(2) + l.delta_zeta.powi(2))).sqrt();
             let wall = PyDict::new(py);
-            wall.set_item("delta_xi_deg", deg(l.delta_xi))?;
-            wall.set_item("delta_zeta_deg", deg(l.delta_zeta))?;
+            wall.set_item(
+                "delta_xi_deg",
+                deg(if isotropic { rms } else { l.delta_xi }),
+            )?;
+            wall.set_item(
+                "delta_zeta_deg",
+                deg(if isotropic { rms } else { l.delta_zeta }),
+            )?;
             out.set_item("wall", wall)?;
             let lay = PyDict::new(py);
+            lay.set_item("isotropic", isotropic)?;
+            lay.set_item("angle_se_deg", u.map(|u| deg(u.angle_se)))?;
+            lay.set_item("anisotropy_t", u.map(|u| u.t()))?;
             let [sx, sz] = spread(l);
             lay.set_item("angle_deg", (sx || sz).then_some(deg(l.angle)))?;
             lay.set_item("direction_scan_xy", (l.angle.cos(), l.angle.sin()))?;

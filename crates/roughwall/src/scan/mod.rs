@@ -11,6 +11,8 @@
 //! * `parameters`: ISO 25178-2 height and gradient parameters (Sq, Ssk, Sku, Sdq).
 //! * `lay`: the lay direction and the normal-angle deviations along and across it, the
 //!   `Δξ`, `Δζ` of Radenkovic & Simonin 2021 (Eq. 15) measured on the scan's triangles.
+//! * `lay_uncertainty`: how well the scan fixes its lay, and whether its anisotropy is
+//!   significant (sub-patches as clusters).
 //! * `correlation`: the autocorrelation along and across the lay, and the correlation
 //!   lengths.
 //! * `periodic`: the scan turned to its lay, cropped and mirror-tiled into a periodic wall
@@ -26,6 +28,7 @@ pub(crate) mod centre_surface;
 pub(crate) mod correlation;
 pub(crate) mod correlation_map;
 pub(crate) mod lay;
+pub(crate) mod lay_uncertainty;
 pub(crate) mod levelling;
 pub(crate) mod notes;
 pub(crate) mod parameters;
@@ -38,6 +41,7 @@ pub use centre_surface::{
 pub use correlation::Correlation;
 pub use correlation_map::{correlation_map, map_bytes, CorrelationMap};
 pub use lay::{angle_histograms, lay_angle, lay_at, Lay};
+pub use lay_uncertainty::{lay_uncertainty, LayUncertainty, ANISOTROPY_T, PATCHES_PER_SIDE};
 pub use levelling::{level, MAX_DEGREE};
 pub use notes::{criteria, labelled, missing_fraction, notes, reach_um, spread};
 pub use parameters::{area_parameters, AreaParameters};

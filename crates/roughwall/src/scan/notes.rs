@@ -84,6 +84,19 @@ pub fn notes(c: &Characterisation) -> Vec<String> {
                     ));
                 }
             }
+            if let Some(u) = super::lay_uncertainty::lay_uncertainty(&c.levelled, l.angle) {
+                if !u.significant() && spread(l).iter().any(|&s| s) {
+                    out.push(format!(
+                        "isotropic within what the scan shows: Δζ − Δξ = {}° ± {}° over {} sub-patches ({} standard errors, fewer than {}), and the sub-patches put the lay {}° apart: no lay is given, and [wall] has the rms of the two deviations for both",
+                        fmt_num(significant(u.anisotropy.to_degrees(), 3)),
+                        fmt_num(significant(u.anisotropy_se.to_degrees(), 2)),
+                        u.patches,
+                        fmt_num(round(u.t(), 1)),
+                        super::lay_uncertainty::ANISOTROPY_T,
+                        fmt_num(significant((u.angle_se * (u.patches as f64).sqrt()).to_degrees(), 2)),
+                    ));
+                }
+            }
         }
     }
     let missing = missing_fraction(c);

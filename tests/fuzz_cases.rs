@@ -1224,7 +1224,8 @@ fn scan_empty_allowed(col: &str, row: &dyn Fn(&str) -> String) -> bool {
 /// - `force_sweep.csv`: `contact_time_s` for `hu2021` and for U_N = 0 only;
 /// - `scan_summary.csv`: what is undefined for the scan ([`scan_empty_allowed`]);
 /// - `wall_card_diameters.csv`: the deviations of a sphere with nothing exact, the error with
-///   no correlation area, a note where there is none;
+///   no correlation area, a note where there is none, the resolution check of a row without
+///   deviations or too small a scan;
 /// - a standard deviation or standard error of a single value ("undefined for this run"):
 ///   `std`, `se`, `se_histories` of a `moments.csv` row with `n = 1`, `std_*`, `se_*` of a `summary.csv` row
 ///   with one particle;
@@ -1253,6 +1254,14 @@ fn empty_allowed(cmd: Cmd, file: &str, col: &str, row: &dyn Fn(&str) -> String) 
         "wall_card_diameters.csv" => match col {
             "delta_xi_deg" | "delta_zeta_deg" => row("note").starts_with("too small: no triangle"),
             "delta_rel_se" => near_zero(&row("correlation_areas"), 0.0),
+            // The resolution check needs the deviations at twice the pixel: none without the
+            // row's own, and possibly none where the scan is already too small for the row.
+            "delta_xi_deg_2x_pixel"
+            | "delta_zeta_deg_2x_pixel"
+            | "change_xi_2x_pixel"
+            | "change_zeta_2x_pixel" => {
+                row("delta_xi_deg").is_empty() || row("note").contains("too small")
+            }
             "note" => true,
             _ => false,
         },

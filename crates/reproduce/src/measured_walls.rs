@@ -293,7 +293,7 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
         if let Some(w) = worst(&mirrored.join(COMPARE))? {
             let _ = writeln!(
                 verdicts,
-                "- {s}: the mirror-tiled scan, the earlier reference, differs from the scan in                  place by a KS distance of up to {:.3} in α⁺ and {:.3} in β⁺ − β⁻, and by up to                  {:+.3}° in mean α⁺ at ({}°, {}°) (|z| {:.0} with the runs' own standard errors;                  both bounce on the same scan, so this is what resampling along the lay and                  mirroring did, not a second realisation).",
+                "- {s}: the mirror-tiled scan, the earlier reference, differs from the scan in place by a KS distance of up to {:.3} in α⁺ and {:.3} in β⁺ − β⁻, and by up to {:+.3}° in mean α⁺ at ({}°, {}°) (|z| {:.0} with the runs' own standard errors; both bounce on the same scan, so this is what resampling along the lay and mirroring did, not a second realisation).",
                 w.ks_alpha,
                 w.ks_dbeta,
                 w.signed_bias_alpha,

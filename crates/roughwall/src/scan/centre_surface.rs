@@ -97,6 +97,29 @@ fn near_gap(bad: &[bool], n: usize, reach: usize) -> Vec<bool> {
         .collect()
 }
 
+/// `max over q of (h[q] − ax (Δi)² − ay (Δj)²)` on an open `nx × ny` grid (NaN: missing),
+/// separably: along `x` row by row, then along `y`; returned column by column (`[ix][iy]`).
+/// The dilation of [`centre_surface`] and, on `−c`, the opening of [`contact_fraction`].
+fn max_plus_2d(h: &[f64], nx: usize, ny: usize, ax: f64, ay: f64) -> Vec<Vec<f64>> {
+    let mut rows = vec![0.0; nx * ny];
+    rows.par_chunks_mut(nx).zip(h.par_chunks(nx)).for_each_init(
+        || (Vec::new(), Vec::new()),
+        |(v, z), (out, row)| max_plus_open(row, ax, out, v, z),
+    );
+    (0..nx)
+        .into_par_iter()
+        .map_init(
+            || (Vec::new(), Vec::new()),
+            |(v, z), ix| {
+                let col: Vec<f64> = (0..ny).map(|iy| rows[iy * nx + ix]).collect();
+                let mut out = vec![0.0; ny];
+                max_plus_open(&col, ay, &mut out, v, z);
+                out
+            },
+        )
+        .collect()
+}
+
 /// The centre surface of a sphere of diameter `diameter_m` over the (levelled) scan `f`
 /// (paraboloid cap: valid for `R ≫` the heights, as on generated walls,
 /// docs/models.md "Sphere contact"). `diameter_m = 0` is the scan itself.
@@ -121,30 +144,13 @@ pub fn centre_surface(f: &ScanField, diameter_m: f64) -> CentreSurface {
     let span = (2.0 * radius * (hi - lo).max(0.0)).sqrt();
     let reach = |d: f64| ((span / d).ceil() as usize).saturating_add(1);
     let (rx, ry) = (reach(f.dx), reach(f.dy));
-    // Along x, row by row.
-    let ax = f.dx * f.dx / (2.0 * radius);
-    let mut rows = vec![0.0; nx * ny];
-    rows.par_chunks_mut(nx)
-        .zip(f.heights.par_chunks(nx))
-        .for_each_init(
-            || (Vec::new(), Vec::new()),
-            |(v, z), (out, row)| max_plus_open(row, ax, out, v, z),
-        );
-    // Along y, column by column.
-    let ay = f.dy * f.dy / (2.0 * radius);
-    let cols: Vec<Vec<f64>> = (0..nx)
-        .into_par_iter()
-        .map_init(
-            || (Vec::new(), Vec::new()),
-            |(v, z), ix| {
-                let col: Vec<f64> = (0..ny).map(|iy| rows[iy * nx + ix]).collect();
-                let mut out = vec![0.0; ny];
-                max_plus_open(&col, ay, &mut out, v, z);
-                out
-            },
-        )
-        .collect();
-    drop(rows);
+    let cols = max_plus_2d(
+        &f.heights,
+        nx,
+        ny,
+        f.dx * f.dx / (2.0 * radius),
+        f.dy * f.dy / (2.0 * radius),
+    );
     // Exact where no gap lies within reach: along x, then along y of that.
     let bad_x: Vec<bool> = f
         .heights
@@ -199,16 +205,14 @@ pub fn contact_fraction(f: &ScanField, c: &CentreSurface) -> f64 {
         return 1.0;
     }
     let neg: Vec<f64> = c.field.heights.iter().map(|h| -h).collect();
-    let ax = f.dx * f.dx / (2.0 * radius);
-    let mut rows = vec![0.0; nx * ny];
-    rows.par_chunks_mut(nx)
-        .zip(neg.par_chunks(nx))
-        .for_each_init(
-            || (Vec::new(), Vec::new()),
-            |(v, z), (out, row)| max_plus_open(row, ax, out, v, z),
-        );
+    let cols = max_plus_2d(
+        &neg,
+        nx,
+        ny,
+        f.dx * f.dx / (2.0 * radius),
+        f.dy * f.dy / (2.0 * radius),
+    );
     drop(neg);
-    let ay = f.dy * f.dy / (2.0 * radius);
     let (lo, hi) = f
         .heights
         .iter()
@@ -218,28 +222,23 @@ pub fn contact_fraction(f: &ScanField, c: &CentreSurface) -> f64 {
         });
     // Rounding of the parabolas' terms, far below any height step a scan resolves.
     let tol = 1e-9 * (hi - lo).max(f64::MIN_POSITIVE);
-    let (touched, exact) = (0..nx)
-        .into_par_iter()
-        .map_init(
-            || (Vec::new(), Vec::new()),
-            |(v, z), ix| {
-                let col: Vec<f64> = (0..ny).map(|iy| rows[iy * nx + ix]).collect();
-                let mut out = vec![0.0; ny];
-                max_plus_open(&col, ay, &mut out, v, z);
-                let mut counts = (0u64, 0u64);
-                for (iy, o) in out.iter().enumerate() {
-                    let p = iy * nx + ix;
-                    if c.field.heights[p].is_finite() {
-                        counts.1 += 1;
-                        // The opening is −out: at least the scan's height, equal where touched.
-                        if -o - f.heights[p] <= tol {
-                            counts.0 += 1;
-                        }
+    let (touched, exact) = cols
+        .par_iter()
+        .enumerate()
+        .map(|(ix, out)| {
+            let mut counts = (0u64, 0u64);
+            for (iy, o) in out.iter().enumerate() {
+                let p = iy * nx + ix;
+                if c.field.heights[p].is_finite() {
+                    counts.1 += 1;
+                    // The opening is −out: at least the scan's height, equal where touched.
+                    if -o - f.heights[p] <= tol {
+                        counts.0 += 1;
                     }
                 }
-                counts
-            },
-        )
+            }
+            counts
+        })
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     if exact == 0 {
         return 0.0;

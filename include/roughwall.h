@@ -103,6 +103,12 @@
 #define RW_MODEL_CALIBRATED 5
 
 /*
+ The rebound law measured on the wall itself (a scan's in-place deterministic reference),
+ from the table `rebound scan --measured-wall` writes (`wall_table_text`, required).
+ */
+#define RW_MODEL_MEASURED_WALL 6
+
+/*
  An immutable wall handle, safe to share between threads.
  */
 typedef struct rw_wall rw_wall;
@@ -185,6 +191,15 @@ typedef struct {
    each): a 17th is `RW_INVALID_PARAMETER`.
    */
   const char *escape_table_csv;
+  /*
+   `RW_MODEL_MEASURED_WALL` only, and required there: the wall's table as the
+   NUL-terminated text `rebound scan --measured-wall` writes (`measured_wall_*.txt`,
+   named by the wall card's row). The handle keeps its own copy; a process keeps each
+   distinct table for its life, at most 16 (about 1.2 MB each). The deviations are then
+   the table's (`delta_xi_deg`, `delta_zeta_deg` are not used), and the sign of
+   `rw_hit.lay` matters: a measured wall need not be its own mirror image.
+   */
+  const char *wall_table_text;
 } rw_wall_params;
 
 /*

@@ -20,7 +20,7 @@ trap 'rm -f "$BEFORE"' EXIT
 # one, e.g. results written before the line existed).
 PREVIOUS_MODE=$(awk '/^mode: /{print $2; exit}' "$OUT/$P_REPRODUCIBILITY" 2>/dev/null || true)
 PREVIOUS_MODE=${PREVIOUS_MODE:-unknown}
-for part in radenkovic2021 wall-models calibrate measured-walls mirror hu2021 erosion finite-size spin speed-vs-error; do
+for part in radenkovic2021 wall-models calibrate measured-walls measured-wall-model mirror hu2021 erosion finite-size spin speed-vs-error; do
   echo "=== scripts/$part.sh"
   bash "$ROOT/scripts/$part.sh"
 done

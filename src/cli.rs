@@ -212,6 +212,16 @@ pub struct ScanArgs {
         allow_negative_numbers = true
     )]
     pub diameter_um: Vec<f64>,
+    /// Also build the wall's own stochastic model: the measured-wall table of the point
+    /// particle and of each diameter (the rebound law of the deterministic reference on the
+    /// scan itself; about 15 s each on a 4096² scan), named by the card for `[stochastic]
+    /// model = "measured-wall"`. Overrides the case's `[scan] measured_wall`.
+    #[arg(long = "measured-wall")]
+    pub measured_wall: bool,
+    /// Histories per incident direction of each measured-wall table (1024 … 1000000);
+    /// overrides the case's `[scan] measured_wall_histories` [default: 17711].
+    #[arg(long = "measured-wall-histories", value_name = "N")]
+    pub measured_wall_histories: Option<i64>,
 }
 
 #[derive(Args, Debug, Clone, Default)]

@@ -17,6 +17,7 @@ mod cli;
 mod commands;
 mod compare;
 mod figures;
+mod measured_wall;
 mod output;
 mod partial;
 mod pipe_flow;

@@ -57,7 +57,7 @@ pub fn scan_wall(path: &Path, opt: &DeterministicOptions) -> Result<Option<ScanW
         other => other,
     };
     let field = ScanField::new(t.nx, t.ny, t.dx_m, t.dy_m, t.heights_m).map_err(named)?;
-    let c = characterise(field, 1).map_err(named)?;
+    let c = characterise(field, opt.scan_level_degree).map_err(named)?;
     let lay = c.lay.ok_or_else(|| {
         named(Error::Input(
             "no cell with four valid corners: no wall to bounce on".into(),
@@ -77,7 +77,14 @@ pub fn scan_wall(path: &Path, opt: &DeterministicOptions) -> Result<Option<ScanW
         "pixel_um",
         toml::Value::Array(vec![(t.dx_m * 1e6).into(), (t.dy_m * 1e6).into()]),
     );
-    put("levelling", "plane".into());
+    put(
+        "levelling",
+        match opt.scan_level_degree {
+            1 => "plane".to_string(),
+            d => format!("polynomial of degree {d}"),
+        }
+        .into(),
+    );
     put("sq_um", (c.parameters.sq_m * 1e6).into());
     put("lay_deg", lay.angle.to_degrees().into());
     put("delta_xi_deg", lay.delta_xi.to_degrees().into());

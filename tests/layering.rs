@@ -154,8 +154,8 @@ const LIBRARY_LAYERS: [&[&str]; 7] = [
     ],
     // The two models of the paper: stochastic (Fig. 13) and deterministic (Secs. 3.1–3.3).
     &["deterministic", "stochastic"],
-    // The calibrated model, counted on deterministic runs.
-    &["calibrated"],
+    // The calibrated model and the measured-wall tables, counted on deterministic runs.
+    &["calibrated", "measured_wall"],
     // Every rough-wall model and the dispatch between them.
     &["models"],
     // A CFD code's wall.

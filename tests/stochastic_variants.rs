@@ -18,7 +18,45 @@ use roughwall::{CollisionLaw, ShParams};
 const D: f64 = 500e-6;
 
 fn variant(name: &str) -> AnyModel {
-    AnyModel::with_defaults(name).unwrap()
+    match name {
+        "measured-wall" => measured_wall(false),
+        _ => AnyModel::with_defaults(name).unwrap(),
+    }
+}
+
+/// The measured-wall model of a small generated (≈ 2.5°, 7.5°) wall, or of a flat one
+/// (`flat`), its table of 1024 histories a cell: the model has no default, its table is a
+/// wall's.
+fn measured_wall(flat: bool) -> AnyModel {
+    use std::sync::OnceLock;
+    static TABLES: [OnceLock<&'static roughwall::measured_wall::MeasuredWallTable>; 2] =
+        [OnceLock::new(), OnceLock::new()];
+    let table = TABLES[flat as usize].get_or_init(|| {
+        let mut field = roughwall::surface::generate(
+            &roughwall::SurfaceSpec {
+                length_m: 128e-6,
+                nodes: 128,
+                rms_height_m: 0.37e-6,
+                corr_length_x_m: Some(12e-6),
+                corr_length_z_m: Some(4e-6),
+            },
+            3,
+        );
+        if flat {
+            field.heights.iter_mut().for_each(|h| *h = 0.0);
+        }
+        let t = roughwall::Tracker::new(&field, 1000).unwrap();
+        let dev = roughwall::surface::measured_deviations(&field);
+        let opts = roughwall::measured_wall::BuildOptions {
+            histories_per_cell: 1024,
+            seed: 1,
+        };
+        roughwall::measured_wall::build_table(&t, dev, "test wall", &opts, &|_| {})
+            .unwrap()
+            .intern()
+            .unwrap()
+    });
+    AnyModel::MeasuredWall(roughwall::models::MeasuredWall { table })
 }
 
 fn run(
@@ -102,7 +140,11 @@ fn ks_cdf(v: &[f64], cdf: impl Fn(f64) -> f64) -> f64 {
 #[test]
 fn smooth_wall_is_one_specular_collision_for_every_variant() {
     for &kind in AnyModel::NAMES {
-        let v = variant(kind);
+        // The measured-wall model rebounds off the wall it was measured on: a flat one here.
+        let v = match kind {
+            "measured-wall" => measured_wall(true),
+            _ => variant(kind),
+        };
         for law in [
             CollisionLaw::Elastic,
             CollisionLaw::SommerfeldHuber(ShParams::glass_steel()),
@@ -168,7 +210,10 @@ fn mirror_symmetry_beta_to_minus_beta() {
     let wall = dev(3.8, 7.5);
     let law = CollisionLaw::SommerfeldHuber(ShParams::glass_steel());
     for &kind in AnyModel::NAMES {
-        if kind == "normal-perturbation" {
+        // The measured-wall model is as symmetric as its wall: a generated wall is only
+        // statistically, and the table's own noise differs between β⁻ and −β⁻ (its columns);
+        // tests/measured_wall.rs of the library holds it to a wall that is not symmetric.
+        if kind == "normal-perturbation" || kind == "measured-wall" {
             continue;
         }
         let n = 30_000;
@@ -307,11 +352,20 @@ fn case_key_selects_the_variant_and_refuses_bad_ones() {
     let base = "name = \"v\"\n[wall]\ndelta_xi_deg = 3.8\ndelta_zeta_deg = 7.5\n\
                 [incidence]\nalpha_deg = [-5.0]\n[particles]\ncount = 2000\n";
     let mut outputs = Vec::new();
+    let table = tmp.path().join("measured_wall_point.txt");
+    let AnyModel::MeasuredWall(m) = measured_wall(false) else {
+        unreachable!()
+    };
+    std::fs::write(&table, m.table.to_text()).unwrap();
     for &kind in AnyModel::NAMES {
+        let extra = match kind {
+            "measured-wall" => format!("wall_table = {:?}\n", table.display().to_string()),
+            _ => String::new(),
+        };
         let case = common::write_case(
             tmp.path(),
             "c.toml",
-            &format!("{base}[stochastic]\nmodel = \"{}\"\n", kind),
+            &format!("{base}[stochastic]\nmodel = \"{}\"\n{extra}", kind),
         );
         let out = common::run_case("stochastic", &case, &tmp.path().join(kind), &[]);
         let manifest: toml::Table =
@@ -340,6 +394,13 @@ fn case_key_selects_the_variant_and_refuses_bad_ones() {
         (
             "model = \"gaussian-tilt\"\ndelta_gamma_deg = 25",
             "stochastic.delta_gamma_deg",
+        ),
+        // The measured-wall model needs its table, and no other model takes one.
+        ("model = \"measured-wall\"", "stochastic.wall_table"),
+        ("wall_table = \"t.txt\"", "stochastic.wall_table"),
+        (
+            "model = \"measured-wall\"\nwall_table = \"nonexistent.txt\"",
+            "stochastic.wall_table",
         ),
     ] {
         let case = common::write_case(

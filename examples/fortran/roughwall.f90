@@ -15,7 +15,8 @@ module roughwall
   integer(c_int32_t), parameter, public :: RW_PRESET_NONE = 0, RW_PRESET_GLASS_STEEL = 1
   integer(c_int32_t), parameter, public :: RW_MODEL_RADENKOVIC_SIMONIN_2021 = 0, &
        RW_MODEL_SOMMERFELD_HUBER_1999 = 1, RW_MODEL_GAUSSIAN_ANGLE = 2, &
-       RW_MODEL_GAUSSIAN_TILT = 3, RW_MODEL_NORMAL_PERTURBATION = 4, RW_MODEL_CALIBRATED = 5
+       RW_MODEL_GAUSSIAN_TILT = 3, RW_MODEL_NORMAL_PERTURBATION = 4, RW_MODEL_CALIBRATED = 5, &
+       RW_MODEL_MEASURED_WALL = 6
 
   !> What a wall is built from (rw_wall_params): start from rw_wall_params_default.
   type, bind(c), public :: rw_wall_params
@@ -27,6 +28,7 @@ module roughwall
      integer(c_int32_t) :: model
      real(c_double) :: delta_gamma_deg
      type(c_ptr) :: escape_table_csv   ! C_NULL_PTR: the built-in table
+     type(c_ptr) :: wall_table_text    ! RW_MODEL_MEASURED_WALL only: its table's text
   end type rw_wall_params
 
   !> One particle-wall hit in global axes, SI units (rw_hit).

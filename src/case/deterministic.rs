@@ -39,6 +39,8 @@ pub struct DeterministicOptions {
     pub surfaces: u32,
     /// What a measured scan becomes (`[deterministic] scan_wall`).
     pub scan_reference: ScanReference,
+    /// The degree a measured scan is levelled by (`[deterministic] scan_level_degree`).
+    pub scan_level_degree: u32,
 }
 
 /// `[deterministic] triangulation`, validated: how the cells of a generated or read surface
@@ -165,11 +167,19 @@ pub fn deterministic_options(case: &Case, height_file: bool) -> Result<Determini
     )?;
     let scan_reference = ScanReference::from_name(names[k])
         .ok_or_else(|| Error::Internal(format!("scan_wall `{}`", names[k])))?;
+    let scan_level_degree = check_int_range(
+        "deterministic.scan_level_degree",
+        d.scan_level_degree.unwrap_or(1),
+        1,
+        3,
+        "1 (a plane), 2 or 3: the total degree of the polynomial form removed from a scan given as --surface",
+    )? as u32;
     Ok(DeterministicOptions {
         max_collisions: mc as u32,
         triangulation,
         surfaces: surfaces as u32,
         scan_reference,
+        scan_level_degree,
         scene: SceneOptions {
             spacing_per_corr_length: spc,
             side_per_corr_length: side,

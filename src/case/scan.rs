@@ -25,6 +25,10 @@ pub struct ScanSetup {
     /// Particle diameters (m) whose centre surfaces the card measures (`[scan] diameters_um`
     /// or `--diameter-um`), in the order given.
     pub diameters_m: Vec<f64>,
+    /// Whether to build the measured-wall tables (`[scan] measured_wall`, `--measured-wall`).
+    pub measured_wall: bool,
+    /// Histories per incident direction of each table (`[scan] measured_wall_histories`).
+    pub measured_wall_histories: u64,
 }
 
 /// Where the heights come from.
@@ -139,9 +143,24 @@ impl Case {
         case_dir: Option<&Path>,
         scan_arg: Option<&Path>,
         diameters_arg: &[f64],
+        (measured_wall_arg, histories_arg): (bool, Option<i64>),
         warnings: &mut Vec<Warning>,
     ) -> Result<ScanSetup> {
         let s = self.scan.clone().unwrap_or_default();
+        let measured_wall = measured_wall_arg || s.measured_wall.unwrap_or(false);
+        let measured_wall_histories = check_int_range(
+            if histories_arg.is_some() {
+                "--measured-wall-histories"
+            } else {
+                "scan.measured_wall_histories"
+            },
+            histories_arg
+                .or(s.measured_wall_histories)
+                .unwrap_or(roughwall::measured_wall::HISTORIES_PER_CELL as i64),
+            1024,
+            1_000_000,
+            "1024 to 1000000 histories per incident direction of the table's grid",
+        )? as u64;
         let diameters_m = diameters(diameters_arg, &s.diameters_um)?;
         let degree = check_int_range(
             "scan.level_degree",
@@ -272,6 +291,8 @@ impl Case {
                 level_degree: degree,
                 source: ScanSource::Generated(plan),
                 diameters_m,
+                measured_wall,
+                measured_wall_histories,
             });
         };
         for (sec, there) in [
@@ -343,6 +364,8 @@ impl Case {
                 height_unit_m: unit,
             }),
             diameters_m,
+            measured_wall,
+            measured_wall_histories,
         })
     }
 }
@@ -419,6 +442,7 @@ mod tests {
             Some(Path::new("/nonexistent-dir")),
             scan,
             &[],
+            (false, None),
             &mut Vec::new(),
         )
     }
@@ -481,7 +505,9 @@ mod tests {
             )
             .unwrap()
         };
-        let run = |list: &str, arg: &[f64]| case(list).scan_setup(None, None, arg, &mut Vec::new());
+        let run = |list: &str, arg: &[f64]| {
+            case(list).scan_setup(None, None, arg, (false, None), &mut Vec::new())
+        };
         let um = |d: &[f64]| d.iter().map(|d| d * 1e-6).collect::<Vec<_>>();
         assert_eq!(
             run("[100.0, 50.0]", &[]).unwrap().diameters_m,

@@ -173,6 +173,10 @@ pub struct StochasticSection {
     /// given, else under `configs/`); default: the built-in table.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub escape_table: Option<String>,
+    /// `measured-wall` only, and required there: the wall's table (`rebound scan
+    /// --measured-wall` writes it; a path as given, else under `configs/`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wall_table: Option<String>,
 }
 
 /// `[deterministic]`: tracker limits and the automatic surface choice.
@@ -214,6 +218,10 @@ pub struct DeterministicSection {
     /// resampled and mirror-tiled into a periodic wall, the earlier reference).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub scan_wall: Option<String>,
+    /// The polynomial degree a scan given as `--surface` is levelled by (1: a plane, the
+    /// default; 2 or 3 remove a curved form, as `[scan] level_degree` does for `scan`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scan_level_degree: Option<i64>,
 }
 
 /// `[scan]` for `scan`: the scan of a wall (without `file`, the case's `[wall]` or `[surface]`
@@ -240,6 +248,13 @@ pub struct ScanSection {
     /// centre surface on the scan (`[[diameter]]` of `wall_card.toml`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub diameters_um: Vec<f64>,
+    /// Build the measured-wall table of the point particle and of each diameter (the
+    /// in-place reference's rebound law, `model = "measured-wall"`), beside the card.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub measured_wall: Option<bool>,
+    /// Histories per incident direction of each measured-wall table (default 17 711).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub measured_wall_histories: Option<i64>,
 }
 
 /// `[impactor]` (formerly `[particle]`) for `force-sweep`: a material preset or explicit

@@ -10,7 +10,7 @@ use roughwall::stochastic::{checked_psi, PSI_PAPER};
 use roughwall::tally::TallySpec;
 use roughwall::Deviations;
 use roughwall::ErosionSetup;
-use roughwall::{AnyModel, ModelParams};
+use roughwall::{AnyModel, ModelParams, RoughWallModel};
 use roughwall::{Error, Result};
 
 /// What a stochastic run resolves from its case before any rebound is drawn.
@@ -40,6 +40,20 @@ pub fn prepare(case: &Case, o: &TallyOverrides, seed: u64) -> Result<Prepared> {
         }
         None => scene.wall.deviations(),
     };
+    // A model measured on a wall of its own (`measured-wall`) rebounds off that wall.
+    let given = wall;
+    let wall = scene.model.wall(&given);
+    if wall != given {
+        notes.insert(
+            "wall_from_model".into(),
+            toml::Value::String(format!(
+                "model = \"{}\" rebounds off the wall its table was measured on: Δξ = {:.4}°, Δζ = {:.4}° (the case's [wall] is not used)",
+                scene.model.name(),
+                wall.delta_xi.to_degrees(),
+                wall.delta_zeta.to_degrees()
+            )),
+        );
+    }
     if let WallSource::Surface(_) = scene.wall {
         let note = format!(
             "the case gives a surface; the stochastic model uses its deviations from Eq. (15): Δξ = {:.4}°, Δζ = {:.4}°",
@@ -201,12 +215,17 @@ impl Case {
     pub fn model(&self) -> Result<AnyModel> {
         let st = self.stochastic.clone().unwrap_or_default();
         let read_table = || read_escape_table(st.escape_table.as_deref().unwrap_or_default());
+        let read_wall_table = || read_wall_table(st.wall_table.as_deref().unwrap_or_default());
         let params = ModelParams {
             delta_gamma_deg: st.delta_gamma_deg,
             escape_table: st
                 .escape_table
                 .as_ref()
                 .map(|_| &read_table as &dyn Fn() -> Result<_>),
+            wall_table: st
+                .wall_table
+                .as_ref()
+                .map(|_| &read_wall_table as &dyn Fn() -> Result<_>),
         };
         AnyModel::named(st.model.as_deref(), &params)
     }
@@ -219,10 +238,36 @@ const MAX_ESCAPE_TABLE_BYTES: u64 = 1 << 23;
 /// Reads the escape table at `path` (`[stochastic] escape_table`): as given, else under
 /// `configs/`; one-line errors that name the key and the file.
 fn read_escape_table(path: &str) -> Result<&'static roughwall::calibrated::EscapeTable> {
-    let key = "stochastic.escape_table";
+    let (text, what) = read_table_text(
+        "stochastic.escape_table",
+        path,
+        MAX_ESCAPE_TABLE_BYTES,
+        "an escape table",
+    )?;
+    roughwall::calibrated::EscapeTable::parse(&text, &what)?.intern()
+}
+
+/// Largest measured-wall table read (bytes): a table of the fixed grid is about 4.5 MB.
+const MAX_WALL_TABLE_BYTES: u64 = 1 << 24;
+
+/// Reads the measured-wall table at `path` (`[stochastic] wall_table`), as
+/// [`read_escape_table`] does.
+fn read_wall_table(path: &str) -> Result<&'static roughwall::measured_wall::MeasuredWallTable> {
+    let (text, what) = read_table_text(
+        "stochastic.wall_table",
+        path,
+        MAX_WALL_TABLE_BYTES,
+        "a measured-wall table",
+    )?;
+    roughwall::measured_wall::MeasuredWallTable::parse(&text, &what)?.intern()
+}
+
+/// The text of the table file `path` of case key `key` (as given, else under `configs/`) and
+/// how errors name it; one-line errors for a missing, unreadable or oversized file.
+fn read_table_text(key: &str, path: &str, max_bytes: u64, kind: &str) -> Result<(String, String)> {
     let file = super::load::resolve_path(std::path::Path::new(path)).map_err(|_| {
         match roughwall::check::not_a_regular_file(std::path::Path::new(path)) {
-            Some(kind) => Error::Input(format!("`{key}` = \"{path}\": {kind}, not a file")),
+            Some(k) => Error::Input(format!("`{key}` = \"{path}\": {k}, not a file")),
             None => Error::Input(format!(
                 "`{key}` = \"{path}\": file not found (looked as given and under configs/)"
             )),
@@ -230,12 +275,12 @@ fn read_escape_table(path: &str) -> Result<&'static roughwall::calibrated::Escap
     })?;
     let what = format!("`{key}` = \"{path}\"");
     let len = std::fs::metadata(&file).map(|m| m.len()).unwrap_or(0);
-    if len > MAX_ESCAPE_TABLE_BYTES {
+    if len > max_bytes {
         return Err(Error::Input(format!(
-            "{what}: {len} bytes, more than an escape table ({MAX_ESCAPE_TABLE_BYTES} at most)"
+            "{what}: {len} bytes, more than {kind} ({max_bytes} at most)"
         )));
     }
     let text = std::fs::read_to_string(&file)
         .map_err(|e| Error::Input(format!("{what}: cannot read it: {e}")))?;
-    roughwall::calibrated::EscapeTable::parse(&text, &what)?.intern()
+    Ok((text, what))
 }

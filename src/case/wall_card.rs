@@ -14,6 +14,10 @@
 //!
 //! The card's `[scan] sq_um` becomes the wall's `rms_height_um`, the absolute scale a sphere
 //! on the automatic surface needs (`[deterministic] rms_height_um` still wins).
+//!
+//! With `[stochastic] model = "measured-wall"` and no `wall_table`, `stochastic` takes the
+//! measured-wall table the taken row (or `[wall]`) names (`measured_wall_table`, written by
+//! `rebound scan --measured-wall` beside the card; relative to the card's directory).
 
 use super::scene::DEFAULT_DIAMETER_UM;
 use super::schema::{Case, WallSpec};
@@ -36,6 +40,8 @@ struct Row {
     /// `(Δξ, Δζ)` in degrees; `None` when nothing of the centre surface was exact.
     deviations: Option<(f64, f64)>,
     note: String,
+    /// `measured_wall_table`: the row's measured-wall table, relative to the card.
+    table: Option<String>,
 }
 
 /// A wall card, read and checked.
@@ -51,6 +57,10 @@ pub struct WallCard {
     /// `[scan] file`, when the card names one.
     scan_file: Option<String>,
     rows: Vec<Row>,
+    /// `[wall] measured_wall_table`: the point particle's table, relative to the card.
+    wall_table: Option<String>,
+    /// The card's directory (its tables are named relative to it).
+    dir: std::path::PathBuf,
 }
 
 /// What applying a card did: the `[wall_card]` table of `run.toml` and the lines to print.
@@ -58,6 +68,18 @@ pub struct WallCard {
 pub struct Applied {
     pub manifest: toml::Table,
     pub warnings: Vec<Warning>,
+}
+
+/// A text of the card at `table.key` (`None` when absent), or the one-line error naming the
+/// file and the key.
+fn text_of(what: &str, table: &toml::Table, section: &str, key: &str) -> Result<Option<String>> {
+    match table.get(key) {
+        None => Ok(None),
+        Some(toml::Value::String(s)) if !s.trim().is_empty() => Ok(Some(s.clone())),
+        Some(v) => Err(Error::Input(format!(
+            "{what}: `{section}{key}` = {v} is not a file name"
+        ))),
+    }
 }
 
 /// A number of the card at `table.key`, or the one-line error naming the file and the key.
@@ -135,6 +157,7 @@ impl WallCard {
                         diameter_um: d,
                         deviations,
                         note: note.into(),
+                        table: text_of(&what, r, "diameter.", "measured_wall_table")?,
                     })
                 })
                 .collect::<Result<_>>()?,
@@ -144,6 +167,10 @@ impl WallCard {
                 )))
             }
         };
+        let wall_table = match t.get("wall") {
+            Some(toml::Value::Table(w)) => text_of(&what, w, "wall.", "measured_wall_table")?,
+            _ => None,
+        };
         Ok(WallCard {
             shown: path.display().to_string(),
             sha256: sha256_hex(&bytes),
@@ -151,6 +178,8 @@ impl WallCard {
             sq_um,
             scan_file,
             rows,
+            wall_table,
+            dir: path.parent().map(Path::to_path_buf).unwrap_or_default(),
         })
     }
 
@@ -178,7 +207,7 @@ impl WallCard {
         }
         let mut warnings = Vec::new();
         let rows_apply = command == "stochastic" && !self.rows.is_empty();
-        let (dev, taken) = if rows_apply {
+        let (dev, taken, table) = if rows_apply {
             let d = case
                 .particles
                 .as_ref()
@@ -222,11 +251,31 @@ impl WallCard {
             (
                 dev,
                 format!("its [[diameter]] row of {} µm", fmt_num(row.diameter_um)),
+                row.table.clone(),
             )
         } else {
             manifest.insert("row".into(), "wall".into());
-            (self.wall, "its [wall]".to_string())
+            (self.wall, "its [wall]".to_string(), self.wall_table.clone())
         };
+        // The wall's own model takes the taken row's table, unless the case names one.
+        if let Some(st) = case.stochastic.as_mut() {
+            if command == "stochastic"
+                && st.model.as_deref() == Some("measured-wall")
+                && st.wall_table.is_none()
+            {
+                let file = table.ok_or_else(|| {
+                    Error::Input(format!(
+                        "{what}: {taken} names no measured-wall table (`measured_wall_table`), which model = \"measured-wall\" needs: run `rebound scan --measured-wall`, or set `stochastic.wall_table`"
+                    ))
+                })?;
+                let path = self.dir.join(&file);
+                manifest.insert(
+                    "measured_wall_table".into(),
+                    path.display().to_string().into(),
+                );
+                st.wall_table = Some(path.display().to_string());
+            }
+        }
         manifest.insert("delta_xi_deg".into(), dev.0.into());
         manifest.insert("delta_zeta_deg".into(), dev.1.into());
         if let Some(sq) = self.sq_um {

@@ -22,7 +22,9 @@ use crate::case::scan::{generated_bytes, generated_scan, ReadScan, ScanSource};
 use crate::cli::ScanArgs;
 use crate::commands::{begin_out, context, warn, Summary};
 use crate::figures;
+use crate::measured_wall::build_tables;
 use crate::output::fmt_num;
+use crate::writers::measured_wall::manifest_entries;
 use crate::writers::scan::{manifest_table, summary_table, wall_card, Source};
 use crate::writers::scan_diameters::{diameters_table, manifest_rows};
 use crate::writers::surface::round_ms;
@@ -117,6 +119,7 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         case_dir.as_deref(),
         args.scan.as_deref(),
         &args.diameter_um,
+        (args.measured_wall, args.measured_wall_histories),
         &mut warnings,
     )?;
     warn(warnings);
@@ -226,10 +229,37 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         .flat_map(|s| labelled(s, &c.levelled))
         .collect();
     let dir = out.path().to_path_buf();
+    // The wall's own model: a table per particle, beside the card that names them.
+    let tables = match setup.measured_wall {
+        true => {
+            let t1 = Instant::now();
+            let name = if file.is_empty() {
+                "the generated wall"
+            } else {
+                &file
+            };
+            let triangulation = crate::case::deterministic::triangulation(&ctx.case)?;
+            let tables = build_tables(
+                &c,
+                name,
+                &setup.diameters_m,
+                triangulation,
+                (setup.measured_wall_histories, ctx.seed),
+                &dir,
+            )?;
+            ctx.manifest.set("measured_wall", manifest_entries(&tables));
+            ctx.manifest.set_run(
+                "measured_wall_s",
+                toml::Value::Float(round_ms(t1.elapsed().as_secs_f64())),
+            );
+            tables
+        }
+        false => Vec::new(),
+    };
     summary_table(&src, &c).write(&dir.join("scan_summary.csv"))?;
     crate::output::write_atomic(
         &dir.join("wall_card.toml"),
-        wall_card(&src, &c, &notes, &seen).as_bytes(),
+        wall_card(&src, &c, &notes, &seen, &tables).as_bytes(),
     )?;
     if !spheres.is_empty() {
         diameters_table(&seen, &c.levelled).write(&dir.join("wall_card_diameters.csv"))?;

@@ -6,10 +6,12 @@
 //! * [`deterministic`], [`stochastic`]: `finish` of a Monte Carlo run (and of `merge`).
 //! * [`surface`]: the tables of `rebound surface`.
 //! * [`scan`]: the summary, wall card and notes of `rebound scan`;
-//!   [`scan_diameters`]: its per-diameter deviations and notes.
+//!   [`scan_diameters`]: its per-diameter deviations and notes; [`measured_wall`]: the
+//!   measured-wall tables the card names.
 
 pub mod deterministic;
 pub mod force_sweep;
+pub mod measured_wall;
 pub mod scan;
 pub mod scan_diameters;
 pub mod stochastic;

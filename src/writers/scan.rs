@@ -2,6 +2,7 @@
 //! notes on how far the wall is from what the models assume, and the `[scan]` table of
 //! `run.toml`.
 
+use super::measured_wall::MeasuredWallEntry;
 use super::scan_diameters::card_tables;
 use crate::output::{fmt_num, fmt_opt, toml_float, toml_str, CsvTable};
 use roughwall::scan::Characterisation;
@@ -111,8 +112,15 @@ pub fn summary_table(src: &Source, c: &Characterisation) -> CsvTable {
 
 /// `wall_card.toml`: `[wall]` ready to paste into a case, the lay, the scan, the notes and
 /// the `[[diameter]]` tables of the spheres of `seen` (none: no table), with comments saying
-/// how a case and the C library take them.
-pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[SeenBy]) -> String {
+/// how a case and the C library take them; with `tables` (`--measured-wall`: the point's
+/// first, then one per sphere) each names its measured-wall table.
+pub fn wall_card(
+    src: &Source,
+    c: &Characterisation,
+    notes: &[String],
+    seen: &[SeenBy],
+    tables: &[MeasuredWallEntry],
+) -> String {
     let what = if src.file.is_empty() {
         "the generated wall, a self-check of the chain (docs/models.md, \"Measured walls\")"
             .to_string()
@@ -120,7 +128,7 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
         format!("the scan {}", toml_str(src.file))
     };
     let f = &c.levelled;
-    let diameters = card_tables(seen, f);
+    let diameters = card_tables(seen, f, tables);
     let mut s = format!(
         "# Wall card of {what}.\n\
          # Written by `rebound scan`.\n\
@@ -138,6 +146,15 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
          # Only [wall] (or a row's two deviations under [wall]) goes into a case file: [lay],\n\
          # [scan] and notes describe the measurement.\n"
     );
+    if !tables.is_empty() {
+        s += "#\n\
+              # The wall's own model: `measured_wall_table` (of [wall] and of each row) is the\n\
+              # rebound law of the reference on this scan for that particle; with [stochastic]\n\
+              # model = \"measured-wall\", `rebound stochastic --wall-card THIS_FILE` takes the\n\
+              # table of its row. For the C library: RW_MODEL_MEASURED_WALL with the file's text\n\
+              # as rw_wall_params.wall_table_text, and rw_hit.lay along direction_scan_xy (its\n\
+              # sign matters: a measured wall need not be its own mirror image).\n";
+    }
     // A scan smaller than a particle: said first.
     let (lx, ly) = ((f.nx - 1) as f64 * f.dx, (f.ny - 1) as f64 * f.dy);
     for d in seen.iter().map(|r| r.seen.diameter_m) {
@@ -189,6 +206,9 @@ pub fn wall_card(src: &Source, c: &Characterisation, notes: &[String], seen: &[S
             toml_float(xi.to_degrees()),
             toml_float(zeta.to_degrees())
         );
+        if let Some(t) = tables.first() {
+            s += &super::measured_wall::table_lines(t);
+        }
         let [sx, sz] = spread(l);
         if (sx || sz) && !isotropic {
             s += &format!(
@@ -320,7 +340,7 @@ mod tests {
             "{notes:?}"
         );
         assert!(!notes.iter().any(|n| n.contains("missing")), "{notes:?}");
-        let card = wall_card(&src, &c, &notes, &[]);
+        let card = wall_card(&src, &c, &notes, &[], &[]);
         let t: toml::Table = card.parse().unwrap_or_else(|e| panic!("{e}\n{card}"));
         assert_eq!(t["scan"]["file"].as_str(), Some("dir/a \"b\".x3p"));
         assert_eq!(t["scan"]["grid"].as_array().unwrap().len(), 2);
@@ -372,6 +392,7 @@ mod tests {
                 format: "generated",
             },
             &c,
+            &[],
             &[],
             &[],
         );

@@ -5,6 +5,7 @@
 //! `roughwall::scan::resolution`): `wall_card_diameters.csv`, the card's
 //! `[[diameter]]` tables, the `[[diameter]]` of `run.toml` and the notes.
 
+use super::measured_wall::{table_lines, MeasuredWallEntry};
 use crate::output::{fmt_num, toml_float, toml_str, CsvTable};
 use roughwall::scan::SeenBy;
 use roughwall::scan::{criteria, reach_um};
@@ -80,7 +81,7 @@ pub fn diameters_table(rows: &[SeenBy], f: &ScanField) -> CsvTable {
 
 /// The card's `[[diameter]]` tables (the spheres; the point is `[wall]`), with the comment
 /// that says how to use them; empty without a sphere.
-pub fn card_tables(rows: &[SeenBy], f: &ScanField) -> String {
+pub fn card_tables(rows: &[SeenBy], f: &ScanField, tables: &[MeasuredWallEntry]) -> String {
     let spheres: Vec<&SeenBy> = rows.iter().filter(|s| s.seen.diameter_m > 0.0).collect();
     if spheres.is_empty() {
         return String::new();
@@ -122,6 +123,12 @@ pub fn card_tables(rows: &[SeenBy], f: &ScanField) -> String {
             toml_float(d.resolution.exact_fraction),
             toml_str(&criteria(d, f).join("; "))
         );
+        if let Some(t) = tables
+            .iter()
+            .find(|t| t.diameter_m == d.seen.diameter_m && t.diameter_m > 0.0)
+        {
+            s += &table_lines(t);
+        }
     }
     s
 }
@@ -187,7 +194,7 @@ mod tests {
         let c = wall(256, 1);
         let f = &c.levelled;
         let rows = seen_by(&c, &[100e-6, 1.0]).unwrap();
-        let card = card_tables(&rows, f);
+        let card = card_tables(&rows, f, &[]);
         let t: toml::Table = card.parse().unwrap_or_else(|e| panic!("{e}\n{card}"));
         let table = t["diameter"].as_array().unwrap();
         assert_eq!(table.len(), 2);
@@ -228,7 +235,7 @@ mod tests {
         assert_eq!(m[0]["diameter_um"].as_float(), Some(0.0));
         assert!(m[2].get("delta_zeta_deg").is_none() && m[2].get("note").is_some());
         // Without spheres there is no [[diameter]].
-        assert_eq!(card_tables(&rows[..1], f), "");
+        assert_eq!(card_tables(&rows[..1], f, &[]), "");
     }
 
     /// Each note's trigger, worded with its numbers: too few correlation areas (a point on a

@@ -14,6 +14,7 @@ mod common;
 mod erosion;
 mod finite_size;
 mod hu2021;
+mod measured_wall_model;
 mod measured_walls;
 mod mirror;
 pub mod paths;
@@ -46,6 +47,7 @@ pub fn write_report(results: &Path) -> Result<()> {
     wall_models::wall_models(results, &mut md)?;
     calibration::calibration(results, &mut md)?;
     measured_walls::measured_walls(results, &mut md)?;
+    measured_wall_model::measured_wall_model(results, &mut md)?;
     pipe_flow::pipe_flow(results, &mut md)?;
     mirror::mirror(results, &mut md)?;
     erosion::erosion(results, &mut md)?;

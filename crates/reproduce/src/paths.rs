@@ -194,6 +194,29 @@ pub const STUDY_WITH_CARD: &str = "card";
 /// met on [`STUDY_ON_SCAN_MIRRORED`]).
 pub const STUDY_WITH_TILED: &str = "tiled";
 
+/// The wall's own model (issue 39, parts 3, 4 and 8): `scripts/measured-wall-model.sh`.
+pub const MEASURED_WALL_MODEL: &str = "measured-wall-model";
+/// Its scans and particles, `scan:D:D…` (µm; 0 the point particle): each scan a shipped case
+/// `configs/scans/<scan>.toml`, each particle a directory `d<D>` under the scan's.
+pub const MODEL_SCANS: [&str; 6] = [
+    "x3p-2:0",
+    "opd-1:0",
+    "matrix-3:0",
+    "plu-1:0:100",
+    "metropro-1:0:100",
+    "sample-land:0:100",
+];
+/// The wall's own model: `rebound scan --measured-wall` of a scan (its card and tables).
+pub const MODEL_CARD: &str = "card";
+/// The wall's own model: `deterministic` on the scan in place (the reference).
+pub const MODEL_REFERENCE: &str = "reference";
+/// The wall's own model: the reference again with another seed.
+pub const MODEL_REFERENCE_2: &str = "reference-2";
+/// The wall's own model: [`MODEL_REFERENCE`] against [`MODEL_REFERENCE_2`], the noise floor.
+pub const MODEL_FLOOR: &str = "floor";
+/// The wall's own model: the stochastic models run against the reference, by directory.
+pub const MODEL_MODELS: [&str; 3] = ["measured-wall", "radenkovic-simonin-2021", "calibrated"];
+
 /// Finite size: the sphere diameters (µm), one run directory each.
 pub const FINITE_SIZE_DIAMETERS_UM: [&str; 4] = ["50", "100", "250", "500"];
 /// Finite size: prefix of the runs of one diameter (`d50`, …).
@@ -213,7 +236,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 64] = [
+pub const SHELL: [(&str, &[&str]); 71] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -278,6 +301,13 @@ pub const SHELL: [(&str, &[&str]); 64] = [
     ("STUDY_GAUSSIAN", &[STUDY_GAUSSIAN]),
     ("STUDY_WITH_CARD", &[STUDY_WITH_CARD]),
     ("STUDY_WITH_TILED", &[STUDY_WITH_TILED]),
+    ("MEASURED_WALL_MODEL", &[MEASURED_WALL_MODEL]),
+    ("MODEL_SCANS", &MODEL_SCANS),
+    ("MODEL_CARD", &[MODEL_CARD]),
+    ("MODEL_REFERENCE", &[MODEL_REFERENCE]),
+    ("MODEL_REFERENCE_2", &[MODEL_REFERENCE_2]),
+    ("MODEL_FLOOR", &[MODEL_FLOOR]),
+    ("MODEL_MODELS", &MODEL_MODELS),
 ];
 
 /// The text of `scripts/paths.sh`: one `P_<NAME>=<value>` line per entry of [`SHELL`].

@@ -19,6 +19,7 @@ fn _roughwall(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(surface::surface, m)?)?;
     m.add_function(wrap_pyfunction!(scan::read_scan, m)?)?;
     m.add_function(wrap_pyfunction!(scan::wall_card, m)?)?;
+    m.add_function(wrap_pyfunction!(scan::measured_wall_table, m)?)?;
     m.add_function(wrap_pyfunction!(runs::stochastic, m)?)?;
     m.add_function(wrap_pyfunction!(runs::deterministic, m)?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;

@@ -64,6 +64,7 @@ pub struct SceneArgs<'py> {
     delta_gamma_deg: Option<f64>,
     psi: Option<f64>,
     escape_table: Option<String>,
+    wall_table: Option<String>,
     /// A sequence of `(alpha_in_deg, beta_in_deg)` pairs: its length is checked before it is
     /// copied.
     conditions: Bound<'py, PyAny>,
@@ -97,6 +98,7 @@ impl SceneArgs<'_> {
             model: self.model,
             delta_gamma_deg: self.delta_gamma_deg,
             escape_table: self.escape_table,
+            wall_table: self.wall_table,
         })
         .map_err(to_py)?;
         let allowed = "1 to 10000 (alpha_in_deg, beta_in_deg) pairs";

@@ -271,28 +271,7 @@ pub fn wall_card<'py>(
                 &format!("diameters from {lo} to {hi} m"),
             ));
         }
-        // The spacings ScanField takes, named as the arguments that give them.
-        let (lo, hi) = SPACING_RANGE_M;
-        for (key, d) in [("dx", dx), ("dy", dy)] {
-            check_range(
-                key,
-                d,
-                lo,
-                hi,
-                &format!("a pixel size from {lo:e} to {hi} m (one outside this is a unit mistake)"),
-            )
-            .map_err(to_py)?;
-        }
         let [ny, nx] = [heights.shape()[0], heights.shape()[1]];
-        let size = format!("{ny} × {nx} points");
-        let points = nx
-            .checked_mul(ny)
-            .filter(|&p| p <= MAX_POINTS)
-            .ok_or_else(|| invalid("scan", &size, &format!("at most {MAX_POINTS} points")))?;
-        // The copy the levelling works on, and a centre surface per sphere: checked before
-        // they are allocated.
-        let copy = bytes_of("scan", &size, points, 8, "a copy of the heights")?;
-        require("scan", &size, copy, "a copy of the heights")?;
         if !diameters_m.is_empty() {
             require(
                 "diameters_m",
@@ -301,14 +280,7 @@ pub fn wall_card<'py>(
                 &format!("the centre surface of a sphere over the {nx} × {ny} scan"),
             )?;
         }
-        let mut h = with_capacity::<f64>("scan", &size, points, "a copy of the heights")?;
-        // Row-major: a C-ordered array in one copy, any other layout point by point.
-        let view = heights.as_array();
-        match view.as_slice() {
-            Some(s) => h.extend_from_slice(s),
-            None => h.extend(view.iter().copied()),
-        }
-        let field = ScanField::new(nx, ny, dx, dy, h).map_err(to_py)?;
+        let field = scan_field(&heights, dx, dy)?;
         let (c, seen) = py.detach(|| {
             guarded(|| {
                 on_threads(threads, || {
@@ -319,5 +291,134 @@ pub fn wall_card<'py>(
             })
         })?;
         card(py, c, &seen)
+    })
+}
+
+/// The heights `(ny, nx)` (m, NaN for a missing point) with spacings `dx`, `dy` (m) as a
+/// scan: the spacings and the size checked, and the copy's memory before it is made.
+fn scan_field(heights: &PyReadonlyArray2<'_, f64>, dx: f64, dy: f64) -> PyResult<ScanField> {
+    // The spacings ScanField takes, named as the arguments that give them.
+    let (lo, hi) = SPACING_RANGE_M;
+    for (key, d) in [("dx", dx), ("dy", dy)] {
+        check_range(
+            key,
+            d,
+            lo,
+            hi,
+            &format!("a pixel size from {lo:e} to {hi} m (one outside this is a unit mistake)"),
+        )
+        .map_err(to_py)?;
+    }
+    let [ny, nx] = [heights.shape()[0], heights.shape()[1]];
+    let size = format!("{ny} × {nx} points");
+    let points = nx
+        .checked_mul(ny)
+        .filter(|&p| p <= MAX_POINTS)
+        .ok_or_else(|| invalid("scan", &size, &format!("at most {MAX_POINTS} points")))?;
+    let copy = bytes_of("scan", &size, points, 8, "a copy of the heights")?;
+    require("scan", &size, copy, "a copy of the heights")?;
+    let mut h = with_capacity::<f64>("scan", &size, points, "a copy of the heights")?;
+    // Row-major: a C-ordered array in one copy, any other layout point by point.
+    let view = heights.as_array();
+    match view.as_slice() {
+        Some(s) => h.extend_from_slice(s),
+        None => h.extend(view.iter().copied()),
+    }
+    ScanField::new(nx, ny, dx, dy, h).map_err(to_py)
+}
+
+/// The measured-wall table (its text) of the heights `(ny, nx)` levelled by a polynomial of
+/// degree `level_degree`: the in-place deterministic reference of the point particle, or of a
+/// sphere of `diameter_m`, over the table's grid with `histories_per_cell` histories per cell
+/// (the law of `rebound scan --measured-wall`'s table, bit for bit, for the same seed; its
+/// `source` line says "a scan").
+#[pyfunction]
+#[pyo3(signature = (heights, dx, dy, level_degree, diameter_m, histories_per_cell, seed, threads))]
+#[allow(clippy::too_many_arguments)]
+pub fn measured_wall_table<'py>(
+    py: Python<'py>,
+    heights: PyReadonlyArray2<'py, f64>,
+    dx: f64,
+    dy: f64,
+    level_degree: u32,
+    diameter_m: Option<f64>,
+    histories_per_cell: u64,
+    seed: u64,
+    threads: usize,
+) -> PyResult<String> {
+    guarded(|| {
+        check_int_range(
+            "level_degree",
+            level_degree.into(),
+            1,
+            MAX_DEGREE as i64,
+            "1, 2 or 3",
+        )
+        .map_err(to_py)?;
+        if let Some(d) = diameter_m {
+            let (lo, hi) = DIAMETER_RANGE_M;
+            if !(lo..=hi).contains(&d) {
+                return Err(invalid(
+                    "diameter_m",
+                    d,
+                    &format!("a diameter from {lo} to {hi} m, or None (the point particle)"),
+                ));
+            }
+        }
+        check_int_range(
+            "histories_per_cell",
+            histories_per_cell.min(i64::MAX as u64) as i64,
+            1024,
+            1_000_000,
+            "1024 to 1000000 histories per cell of the table's grid",
+        )
+        .map_err(to_py)?;
+        let field = scan_field(&heights, dx, dy)?;
+        if diameter_m.is_some() {
+            require(
+                "diameter_m",
+                format!("{:?}", diameter_m),
+                centre_surface_bytes(field.nx, field.ny),
+                &format!(
+                    "the centre surface of a sphere over the {} × {} scan",
+                    field.nx, field.ny
+                ),
+            )?;
+        }
+        py.detach(|| {
+            guarded(|| {
+                on_threads(threads, || {
+                    let c = characterise(field, level_degree).map_err(to_py)?;
+                    let lay = c.lay.ok_or_else(|| {
+                        invalid(
+                            "scan",
+                            "no cell with four valid corners",
+                            "a scan with a lay",
+                        )
+                    })?;
+                    let what = match diameter_m {
+                        Some(d) => {
+                            format!("a scan, {} µm sphere", roughwall::format::fmt_num(d * 1e6))
+                        }
+                        None => "a scan, point particle".to_string(),
+                    };
+                    let opts = roughwall::measured_wall::BuildOptions {
+                        histories_per_cell,
+                        seed,
+                    };
+                    let table = roughwall::measured_wall::scan_table(
+                        &c.levelled,
+                        &lay,
+                        diameter_m,
+                        roughwall::Triangulation::default(),
+                        &what,
+                        &opts,
+                        &|_| {},
+                    )
+                    .map_err(to_py)?;
+                    Ok(table.to_text())
+                })?
+            })
+        })
     })
 }

@@ -158,7 +158,7 @@ impl WallCore {
     /// Builds the wall through `WallModel::new`: the checks, ranges and one-line messages of
     /// a case file and of the C library's `rw_wall_new`.
     #[new]
-    #[pyo3(signature = (delta_xi_deg, delta_zeta_deg, law, preset, e_h, alpha_e_deg, mu_0, mu_h, alpha_mu_deg, psi, seed, model, delta_gamma_deg, escape_table))]
+    #[pyo3(signature = (delta_xi_deg, delta_zeta_deg, law, preset, e_h, alpha_e_deg, mu_0, mu_h, alpha_mu_deg, psi, seed, model, delta_gamma_deg, escape_table, wall_table))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         delta_xi_deg: f64,
@@ -175,6 +175,7 @@ impl WallCore {
         model: Option<String>,
         delta_gamma_deg: Option<f64>,
         escape_table: Option<String>,
+        wall_table: Option<String>,
     ) -> PyResult<Self> {
         guarded(|| {
             // The collision law is the case key `collision.model`: a name it refuses is named
@@ -207,6 +208,7 @@ impl WallCore {
                 model,
                 delta_gamma_deg,
                 escape_table,
+                wall_table,
             };
             let (model, warnings) = WallModel::new(&params).map_err(to_py)?;
             Ok(WallCore { model, warnings })

@@ -29,6 +29,7 @@ class WallParams(C.Structure):
         ("model", C.c_int32),
         ("delta_gamma_deg", C.c_double),
         ("escape_table_csv", C.c_char_p),
+        ("wall_table_text", C.c_char_p),
     ]
 
 
@@ -92,7 +93,7 @@ class CWall:
     """A C wall handle built from the keywords of roughwall.Wall."""
 
     def __init__(self, lib, *, delta_xi_deg=0.0, delta_zeta_deg=0.0, law="elastic", preset=None,
-                 psi=2.0, seed=0, model=0, e_h=None, mu_0=None):
+                 psi=2.0, seed=0, model=0, e_h=None, mu_0=None, wall_table=None):
         self.lib = lib
         p = WallParams()
         lib.rw_wall_params_default(C.byref(p))
@@ -102,6 +103,9 @@ class CWall:
             p.e_h = e_h
         if mu_0 is not None:
             p.mu_0 = mu_0
+        if wall_table is not None:
+            self._table = wall_table.encode()  # kept alive while the handle is built
+            p.wall_table_text = self._table
         self.handle = C.c_void_p()
         msg = C.create_string_buffer(512)
         self.status = lib.rw_wall_new(C.byref(p), C.byref(self.handle), msg, 512)

@@ -180,5 +180,5 @@ def test_every_entry_runs_inside_guarded():
             code = [ln.strip() for ln in body.splitlines() if ln.strip() and not ln.strip().startswith("//")]
             assert code and code[0].startswith("guarded(") and code[-1] == "})", (
                 f"{rs.name}: fn {name} does not run its body inside errors::guarded")
-    assert sorted(names) == ["deterministic", "new", "read_scan", "rebound", "stochastic", "surface",
+    assert sorted(names) == ["deterministic", "measured_wall_table", "new", "read_scan", "rebound", "stochastic", "surface",
                              "wall_card"]

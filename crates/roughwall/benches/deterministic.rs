@@ -154,5 +154,30 @@ fn whole_case(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, histories, whole_case);
+/// Issue 39, part 9: building the wall's own model (`rebound scan --measured-wall`'s table,
+/// 17 711 histories in each of the grid's 696 cells) from a 4096² scan, here a generated
+/// (2.5°, 7.5°) wall taken as a patch with its lay at 30°, on every core: goal ≤ 10 s on 2.
+fn measured_wall_build(c: &mut Criterion) {
+    let f = roughwall::surface::generate(
+        &roughwall::SurfaceSpec {
+            length_m: 4096e-6,
+            nodes: 4096,
+            rms_height_m: 0.37e-6,
+            corr_length_x_m: Some(12e-6),
+            corr_length_z_m: Some(4e-6),
+        },
+        3,
+    );
+    let t = Tracker::in_place(&f, 1000, 30f64.to_radians()).unwrap();
+    let dev = roughwall::surface::measured_deviations(&f);
+    let opts = roughwall::measured_wall::BuildOptions::default();
+    let mut g = c.benchmark_group("measured_wall");
+    g.sample_size(10).measurement_time(Duration::from_secs(100));
+    g.bench_function("build_table_4096_squared", |b| {
+        b.iter(|| roughwall::measured_wall::build_table(&t, dev, "bench", &opts, &|_| {}).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, histories, whole_case, measured_wall_build);
 criterion_main!(benches);

@@ -136,15 +136,47 @@ fn bench_erosion(c: &mut Criterion) {
     g.finish();
 }
 
-/// The cost of each rough-wall variant: one tallied block of rebounds on one core.
+/// The measured-wall model of a generated wall with about the scenes' deviations (Δξ ≈ 2.5°,
+/// Δζ ≈ 7.5°: correlation lengths 12 and 4 µm, Eq. 15), its table of 1024 histories a cell
+/// (the cost of a rebound does not depend on how many histories built the table).
+fn measured_wall_model() -> AnyModel {
+    let field = roughwall::surface::generate(
+        &roughwall::SurfaceSpec {
+            length_m: 256e-6,
+            nodes: 256,
+            rms_height_m: 0.37e-6,
+            corr_length_x_m: Some(12e-6),
+            corr_length_z_m: Some(4e-6),
+        },
+        3,
+    );
+    let t = roughwall::Tracker::new(&field, 1000).unwrap();
+    let dev = roughwall::surface::measured_deviations(&field);
+    let opts = roughwall::measured_wall::BuildOptions {
+        histories_per_cell: 1024,
+        seed: 1,
+    };
+    let table = roughwall::measured_wall::build_table(&t, dev, "bench wall", &opts, &|_| {})
+        .unwrap()
+        .intern()
+        .unwrap();
+    AnyModel::MeasuredWall(roughwall::models::MeasuredWall { table })
+}
+
+/// The cost of each rough-wall variant: one tallied block of rebounds on one core (issue 39,
+/// part 4: the measured-wall model at most 2× the paper's per rebound).
 fn bench_variants(c: &mut Criterion) {
     let mut g = c.benchmark_group("stochastic_variants");
     let n = 65_536;
     g.throughput(Throughput::Elements(n));
     g.sample_size(20);
+    let measured = measured_wall_model();
     for s in scenes().iter().take(2) {
         for name in AnyModel::NAMES {
-            let v = AnyModel::with_defaults(name).expect("a registered model");
+            let v = match *name {
+                "measured-wall" => measured,
+                _ => AnyModel::with_defaults(name).expect("a registered model"),
+            };
             g.bench_function(format!("{}_{}", s.name, name), |b| {
                 b.iter(|| black_box(tallied_block_with(s, n, None, v)))
             });

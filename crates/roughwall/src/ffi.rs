@@ -57,6 +57,9 @@ pub const RW_MODEL_NORMAL_PERTURBATION: i32 = 4;
 /// The paper's virtual walls with an escape law calibrated on the deterministic simulation,
 /// multiple collisions followed (`escape_table_csv`; NULL: the built-in table).
 pub const RW_MODEL_CALIBRATED: i32 = 5;
+/// The rebound law measured on the wall itself (a scan's in-place deterministic reference),
+/// from the table `rebound scan --measured-wall` writes (`wall_table_text`, required).
+pub const RW_MODEL_MEASURED_WALL: i32 = 6;
 
 /// What a wall handle is built from. Start from `rw_wall_params_default` and set fields.
 #[repr(C)]
@@ -108,6 +111,13 @@ pub struct rw_wall_params {
     /// each distinct table for its life, at most 16 besides the built-in one (about 1.4 MB
     /// each): a 17th is `RW_INVALID_PARAMETER`.
     pub escape_table_csv: *const std::os::raw::c_char,
+    /// `RW_MODEL_MEASURED_WALL` only, and required there: the wall's table as the
+    /// NUL-terminated text `rebound scan --measured-wall` writes (`measured_wall_*.txt`,
+    /// named by the wall card's row). The handle keeps its own copy; a process keeps each
+    /// distinct table for its life, at most 16 (about 1.2 MB each). The deviations are then
+    /// the table's (`delta_xi_deg`, `delta_zeta_deg` are not used), and the sign of
+    /// `rw_hit.lay` matters: a measured wall need not be its own mirror image.
+    pub wall_table_text: *const std::os::raw::c_char,
 }
 
 /// One particle–wall hit, global axes, SI units.
@@ -312,6 +322,7 @@ pub unsafe extern "C" fn rw_wall_params_default(params: *mut rw_wall_params) -> 
             model: RW_MODEL_RADENKOVIC_SIMONIN_2021,
             delta_gamma_deg: f64::NAN,
             escape_table_csv: std::ptr::null(),
+            wall_table_text: std::ptr::null(),
         });
         RW_OK
     })
@@ -376,6 +387,17 @@ fn wall_params(p: &rw_wall_params) -> Result<WallParams, String> {
             Some(
                 text.to_str()
                     .map_err(|_| "`stochastic.escape_table`: not UTF-8 text".to_string())?
+                    .to_string(),
+            )
+        },
+        wall_table: if p.wall_table_text.is_null() {
+            None
+        } else {
+            // SAFETY: a non-NULL `wall_table_text` is a NUL-terminated string (header).
+            let text = unsafe { std::ffi::CStr::from_ptr(p.wall_table_text) };
+            Some(
+                text.to_str()
+                    .map_err(|_| "`stochastic.wall_table`: not UTF-8 text".to_string())?
                     .to_string(),
             )
         },
@@ -709,7 +731,11 @@ mod tests {
         for (i, name) in crate::models::AnyModel::NAMES.iter().enumerate() {
             let mut p = params();
             p.model = i as i32;
-            if !crate::models::AnyModel::with_defaults(name)
+            let table =
+                std::ffi::CString::new(crate::measured_wall::small_table().to_text()).unwrap();
+            if i as i32 == RW_MODEL_MEASURED_WALL {
+                p.wall_table_text = table.as_ptr();
+            } else if !crate::models::AnyModel::with_defaults(name)
                 .unwrap()
                 .anisotropic()
             {
@@ -758,6 +784,25 @@ mod tests {
             msg.contains("stochastic.escape_table") && !msg.contains('\n'),
             "{msg}"
         );
+        // The measured-wall model needs its table; a bad one is a one-line refusal naming
+        // the key.
+        for (text, expect) in [
+            (None, "needs `stochastic.wall_table`"),
+            (
+                Some("# roughwall measured-wall table v1\nsource = x\n"),
+                "stochastic.wall_table",
+            ),
+            (Some("alpha,beta\n"), "not a measured-wall table"),
+        ] {
+            let mut p = params();
+            p.model = RW_MODEL_MEASURED_WALL;
+            let t = text.map(|t| std::ffi::CString::new(t).unwrap());
+            p.wall_table_text = t.as_ref().map_or(std::ptr::null(), |t| t.as_ptr());
+            let (s, w, msg) = wall(&p);
+            assert_eq!(s, RW_INVALID_PARAMETER);
+            assert!(w.is_null());
+            assert!(msg.contains(expect) && !msg.contains('\n'), "{msg}");
+        }
         for (model, dg, key) in [
             (9, f64::NAN, "model"),
             (2, -1.0, "delta_gamma_deg"),

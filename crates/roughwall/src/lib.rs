@@ -165,6 +165,7 @@ pub mod ffi;
 pub mod force;
 pub mod format;
 pub mod incidence;
+pub mod measured_wall;
 pub mod memory;
 pub mod models;
 pub mod parameters;

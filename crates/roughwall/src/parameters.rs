@@ -63,7 +63,7 @@ const fn p(
 use ParameterKind::{Choice, Number, Seed, Text};
 
 /// Every parameter of a wall, in the order of `rw_wall_params` (the C ABI's field order).
-pub const WALL_PARAMETERS: [WallParameter; 14] = [
+pub const WALL_PARAMETERS: [WallParameter; 15] = [
     // Radenkovic & Simonin 2021, Eq. (15).
     p(
         "wall.delta_xi_deg",
@@ -165,6 +165,14 @@ pub const WALL_PARAMETERS: [WallParameter; 14] = [
         Text,
         "",
         "an escape table as `rebound calibrate` writes it",
+    ),
+    p(
+        "stochastic.wall_table",
+        "wall_table_text",
+        "wall_table",
+        Text,
+        "",
+        "a measured-wall table as `rebound scan --measured-wall` writes it",
     ),
 ];
 

@@ -27,6 +27,8 @@ pub mod domain {
     pub const CALIBRATION: u64 = 6;
     /// The seeds of a deterministic run's further surface realisations (index: realisation).
     pub const SURFACE_REALISATION: u64 = 7;
+    /// Histories of a measured-wall table (indices: grid cell, particle).
+    pub const MEASURED_WALL: u64 = 8;
 }
 
 /// SplitMix64 finaliser: a bijective 64-bit mixer.

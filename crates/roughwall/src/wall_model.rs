@@ -12,7 +12,7 @@
 
 use crate::collision::{CollisionLaw, CollisionParams};
 use crate::error::{Error, Result};
-use crate::models::{rebound_with, AnyModel, ModelParams};
+use crate::models::{rebound_with, AnyModel, ModelParams, RoughWallModel};
 use crate::parameters::{ParameterKind, WALL_PARAMETERS};
 use crate::rng;
 use crate::stochastic::{checked_psi, Contact, PSI_PAPER};
@@ -45,6 +45,9 @@ pub struct WallParams {
     /// (`None`: the built-in table). The handle keeps its own copy: no file is read at run
     /// time.
     pub escape_table: Option<String>,
+    /// The table of `model = "measured-wall"`, as the text `rebound scan --measured-wall`
+    /// writes. The handle keeps its own copy.
+    pub wall_table: Option<String>,
 }
 
 impl WallParams {
@@ -123,19 +126,30 @@ impl WallModel {
             let text = p.escape_table.as_deref().unwrap_or_default();
             crate::calibrated::EscapeTable::parse(text, "`stochastic.escape_table`")?.intern()
         };
+        let read_wall_table = || {
+            let text = p.wall_table.as_deref().unwrap_or_default();
+            crate::measured_wall::MeasuredWallTable::parse(text, "`stochastic.wall_table`")?
+                .intern()
+        };
         let params = ModelParams {
             delta_gamma_deg: p.delta_gamma_deg,
             escape_table: p
                 .escape_table
                 .as_ref()
                 .map(|_| &read_table as &dyn Fn() -> Result<_>),
+            wall_table: p
+                .wall_table
+                .as_ref()
+                .map(|_| &read_wall_table as &dyn Fn() -> Result<_>),
         };
+        let model = AnyModel::named(p.model.as_deref(), &params)?;
         let built = WallModel {
-            wall,
+            // A model measured on a wall rebounds off that wall, whatever deviations are given.
+            wall: model.wall(&wall),
             law,
             psi,
             seed: p.seed,
-            model: AnyModel::named(p.model.as_deref(), &params)?,
+            model,
         };
         Ok((built, warnings.into_iter().map(|w| w.0).collect()))
     }

@@ -13,6 +13,7 @@ mod deterministic_hard;
 mod deterministic_physics;
 mod force_models;
 mod in_place;
+mod measured_wall;
 mod own_model;
 mod parameters;
 mod stochastic_sampler;

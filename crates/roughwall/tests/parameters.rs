@@ -224,7 +224,9 @@ fn each_range_check_says_what_the_declaration_allows() {
             }
             // Any u64 is a seed; the model's name and the table are checked by the registry
             // and the table's reader (tests/stochastic_variants.rs, tests/calibrated_model.rs).
-            "seed" | "stochastic.model" | "stochastic.escape_table" => continue,
+            "seed" | "stochastic.model" | "stochastic.escape_table" | "stochastic.wall_table" => {
+                continue
+            }
             other => panic!("`{other}` is declared but not checked here"),
         }
         let err = WallModel::new(&p).map(|_| ()).unwrap_err().to_string();

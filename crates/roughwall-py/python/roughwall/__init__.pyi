@@ -49,6 +49,7 @@ class Wall:
         seed: int = 0,
         delta_gamma_deg: Optional[float] = None,
         escape_table: Optional[str] = None,
+        wall_table: Optional[str] = None,
     ) -> None: ...
     @property
     def warnings(self) -> list[str]: ...
@@ -104,6 +105,17 @@ def wall_card(
     level_degree: int = 1,
     threads: Optional[int] = None,
 ) -> dict: ...
+def measured_wall_table(
+    scan: Union[Scan, str, os.PathLike[str], npt.ArrayLike],
+    *,
+    dy: Optional[float] = None,
+    dx: Optional[float] = None,
+    diameter_m: Optional[float] = None,
+    level_degree: int = 1,
+    histories_per_cell: int = 17711,
+    seed: int = 2021,
+    threads: Optional[int] = None,
+) -> str: ...
 def stochastic(
     wall: Wall,
     *,

@@ -66,6 +66,9 @@ class Wall:
         seed: seed of every hit's random stream, 0 … 2**64 - 1.
         delta_gamma_deg: Δγ (degrees) of the isotropic models (None: (Δξ + Δζ)/2).
         escape_table: the text of an escape_table.csv for model="calibrated" (None: built in).
+        wall_table: the text of a measured-wall table (``rebound scan --measured-wall`` writes
+            it beside the wall card) for model="measured-wall", which requires it; the wall's
+            deviations are then the table's, and the sign of ``lay`` matters.
 
     A bad value raises ValueError with the one-line message of the C library and the
     command line, e.g. ``invalid `wall.delta_xi_deg` = 25: allowed 0 to 20 degrees``.
@@ -89,6 +92,7 @@ class Wall:
         seed: int = 0,
         delta_gamma_deg: Optional[float] = None,
         escape_table: Optional[str] = None,
+        wall_table: Optional[str] = None,
     ) -> None:
         num = _args.number
         delta_xi_deg, delta_zeta_deg = num("delta_xi_deg", delta_xi_deg), num("delta_zeta_deg", delta_zeta_deg)
@@ -98,6 +102,7 @@ class Wall:
         delta_gamma_deg = num("delta_gamma_deg", delta_gamma_deg, True)
         law, preset, model = _args.name("law", law), _args.name("preset", preset), _args.name("model", model)
         escape_table = _args.name("escape_table", escape_table)
+        wall_table = _args.name("wall_table", wall_table)
         self._params = dict(
             delta_xi_deg=delta_xi_deg,
             delta_zeta_deg=delta_zeta_deg,
@@ -108,6 +113,7 @@ class Wall:
             delta_gamma_deg=delta_gamma_deg,
             psi=psi,
             escape_table=escape_table,
+            wall_table=wall_table,
         )
         self._core = WallCore(
             delta_xi_deg,
@@ -124,6 +130,7 @@ class Wall:
             model,
             delta_gamma_deg,
             escape_table,
+            wall_table,
         )
         self.seed = int(seed)
         for w in self._core.warnings:

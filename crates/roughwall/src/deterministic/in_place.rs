@@ -84,11 +84,11 @@ const TILE_MULTIPLE: usize = 8;
 /// (`diameter_m = None`) or a sphere of that diameter, whose centre rides on the scan's
 /// centre surface (the paraboloid dilation of [`crate::scan::centre_surface`]).
 ///
-/// Nothing is resampled: the wall is the largest block of the scan's own nodes on which the
-/// surface is known (for a sphere, exact: the edges lose the dilation's reach), cut to a
-/// multiple of 8 nodes along each axis (at most 7 rows and columns) so that the tracker
-/// keeps its tile map. A missing point inside that block is refused: the reference needs
-/// every node it may hit.
+/// Nothing is resampled: the wall is the largest rectangle of the scan's own nodes on which
+/// the surface is known everywhere (for a sphere, exact: the edges lose the dilation's reach;
+/// a scan with missing points inside gives the largest complete rectangle between them), cut
+/// to a multiple of 8 nodes along each axis (at most 7 rows and columns) so that the tracker
+/// keeps its tile map.
 pub fn in_place_wall(
     f: &ScanField,
     lay_angle: f64,
@@ -141,8 +141,8 @@ pub fn in_place_wall(
     drop(surface);
     let missing = block.iter().filter(|h| !h.is_finite()).count();
     if missing > 0 {
-        return Err(Error::Input(format!(
-            "{what} misses {missing} of the {nx} × {ny} points inside its known block: the in-place reference needs every point it may hit (fill the gaps in the instrument's software, or crop the scan to a complete block)"
+        return Err(Error::Internal(format!(
+            "{what}: {missing} missing points inside the complete block {nx} × {ny}"
         )));
     }
     let block = ScanField {
@@ -178,21 +178,39 @@ pub fn in_place_wall(
     })
 }
 
-/// The smallest block `[x0, y0, nx, ny]` holding every known point of `f` (rows and columns
-/// of missing points at its edges cut off; for a centre surface, the band the dilation
-/// cannot know).
+/// The largest block `[x0, y0, nx, ny]` of `f` whose every point is known (for a centre
+/// surface, outside the band the dilation cannot know): the largest rectangle under the
+/// histogram of known runs, row by row (the classic stack method, `O(nx · ny)`). A scan whose
+/// known points form one rectangle (missing rows and columns only at its edges) gives that
+/// rectangle; a scan with holes inside, the largest complete rectangle between them (the first
+/// in row order among equals).
 fn known_block(f: &ScanField) -> [usize; 4] {
-    let row_known = |iy: usize| {
-        f.heights[iy * f.nx..(iy + 1) * f.nx]
-            .iter()
-            .any(|h| h.is_finite())
-    };
-    let col_known = |ix: usize| (0..f.ny).any(|iy| f.heights[iy * f.nx + ix].is_finite());
-    let Some(y0) = (0..f.ny).find(|&iy| row_known(iy)) else {
-        return [0, 0, 0, 0];
-    };
-    let y1 = (0..f.ny).rev().find(|&iy| row_known(iy)).unwrap_or(y0);
-    let x0 = (0..f.nx).find(|&ix| col_known(ix)).unwrap_or(0);
-    let x1 = (0..f.nx).rev().find(|&ix| col_known(ix)).unwrap_or(x0);
-    [x0, y0, x1 - x0 + 1, y1 - y0 + 1]
+    let mut run = vec![0usize; f.nx];
+    let mut best = ([0usize; 4], 0usize);
+    let mut stack: Vec<(usize, usize)> = Vec::with_capacity(f.nx + 1);
+    for iy in 0..f.ny {
+        let row = &f.heights[iy * f.nx..(iy + 1) * f.nx];
+        for (r, h) in run.iter_mut().zip(row) {
+            *r = if h.is_finite() { *r + 1 } else { 0 };
+        }
+        // Largest rectangle under the histogram `run`, bottom edge on row `iy`.
+        stack.clear();
+        // A zero past the end closes every run still open.
+        for (ix, height) in run.iter().copied().chain(std::iter::once(0)).enumerate() {
+            let mut start = ix;
+            while let Some(&(s0, h0)) = stack.last() {
+                if h0 < height {
+                    break;
+                }
+                stack.pop();
+                let area = h0 * (ix - s0);
+                if area > best.1 {
+                    best = ([s0, iy + 1 - h0, ix - s0, h0], area);
+                }
+                start = s0;
+            }
+            stack.push((start, height));
+        }
+    }
+    best.0
 }

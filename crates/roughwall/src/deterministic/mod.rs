@@ -138,10 +138,25 @@ pub(crate) fn history_observed(
     i: u64,
     observe: impl FnMut(&HitInfo),
 ) -> History {
-    let (lx, lz) = tracker.periods();
     let mut r = prefix.stream(i);
     // The same draws, in the same order, on a periodic wall and on a patch.
     let (a, b) = (r.gen::<f64>(), r.gen::<f64>());
+    history_entered(tracker, setup, cond, (a, b), &mut r, observe)
+}
+
+/// The history that enters at the uniform numbers `(a, b)` in `[0, 1)²` (over the period of
+/// a periodic wall, over the inner region of a patch), drawing its speed and spin from `r`.
+#[inline]
+pub(crate) fn history_entered<R: Rng + ?Sized>(
+    tracker: &Tracker<'_>,
+    setup: &ModelSetup,
+    cond: &IncidentCondition,
+    (a, b): (f64, f64),
+    r: &mut R,
+    observe: impl FnMut(&HitInfo),
+) -> History {
+    let (lx, lz) = tracker.periods();
+    let mut r = r;
     let u_h = draw_speed(&setup.speed, &mut r);
     let u = setup.speed.velocity(cond.alpha_in, cond.beta_in, u_h);
     let w = setup.spin.draw(&mut r);

@@ -3,7 +3,7 @@
 //! deterministic run; a particle that does not escape meets the wall again with its rebound
 //! velocity. The physics is [`crate::calibrated`]; this file names it and its table.
 
-use super::params::refuse_delta_gamma;
+use super::params::{refuse_delta_gamma, refuse_wall_table};
 use super::rough_wall_model::{ModelParams, NamedModel, RoughWallModel};
 use crate::calibrated::{CalibratedIncidence, EscapeTable};
 use crate::error::Result;
@@ -64,6 +64,7 @@ impl NamedModel for Calibrated {
 
     fn from_params(params: &ModelParams) -> Result<Self> {
         refuse_delta_gamma(params, Self::NAME)?;
+        refuse_wall_table(params, Self::NAME)?;
         let escape = params.escape_table.map(|read| read()).transpose()?;
         Ok(Calibrated { escape })
     }

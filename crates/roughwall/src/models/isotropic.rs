@@ -82,6 +82,7 @@ impl<D: IsotropicDraw> NamedModel for Isotropic<D> {
     fn from_params(params: &ModelParams) -> Result<Self> {
         let delta_gamma = params::delta_gamma(params)?;
         params::refuse_escape_table(params, D::NAME)?;
+        params::refuse_wall_table(params, D::NAME)?;
         Ok(Isotropic::new(delta_gamma))
     }
 }

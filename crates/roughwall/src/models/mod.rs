@@ -13,6 +13,7 @@
 //! | `gaussian-tilt` | tilt `δ = \|Δγ N(0,1)\|`, azimuth uniform in `[0, π)` towards the particle | no | hits again |
 //! | `normal-perturbation` | rotation by `θ₁` about `n × t`, then by `θ₂` about `n`, both from the shadow-weighted Gaussian | yes | hits again |
 //! | `calibrated` | as `radenkovic-simonin-2021`, in the wall's slopes, corrected by the calibrated table | yes (Eq. 31 in slopes, continued to rising particles) | leaves with the calibrated probability of [`crate::calibrated`], otherwise hits the wall again with the rebound velocity |
+//! | `measured-wall` | the effective element `(γ, γ*)` of the deterministic reference on the wall itself, from its table ([`crate::measured_wall`]) | measured (in the table) | hits again (only with a law that is not elastic) |
 //!
 //! Each model's file cites its source.
 //!
@@ -26,7 +27,7 @@
 //!   [`NamedModel`] (a case file names it; it checks its own parameters), and [`ModelParams`].
 //! * one file per model: `radenkovic_simonin_2021`, `sommerfeld_huber_1999`,
 //!   `gaussian_angle`, `gaussian_tilt`, `normal_perturbation` (with what the four
-//!   isotropic ones share, `isotropic`) and `calibrated`;
+//!   isotropic ones share, `isotropic`), `calibrated` and `measured_wall`;
 //! * `registry`: the list of the models, and [`AnyModel`], the dispatch between them;
 //! * `rebound`: one rebound from any model, the trivial cases ruled out alike;
 //! * `simulate`: many rebounds of one incident condition, parallel and reproducible.
@@ -39,6 +40,7 @@ pub(crate) mod calibrated;
 pub(crate) mod gaussian_angle;
 pub(crate) mod gaussian_tilt;
 pub(crate) mod isotropic;
+pub(crate) mod measured_wall;
 pub(crate) mod normal_perturbation;
 pub(crate) mod params;
 pub(crate) mod radenkovic_simonin_2021;
@@ -52,8 +54,9 @@ pub use calibrated::Calibrated;
 pub use gaussian_angle::{GaussianAngle, GaussianAngleWall};
 pub use gaussian_tilt::{GaussianTilt, GaussianTiltWall};
 pub use isotropic::{Isotropic, IsotropicDraw, IsotropicIncidence};
+pub use measured_wall::MeasuredWall;
 pub use normal_perturbation::{NormalPerturbation, NormalPerturbationWall};
-pub use params::{refuse_delta_gamma, refuse_escape_table};
+pub use params::{refuse_delta_gamma, refuse_escape_table, refuse_wall_table};
 pub use radenkovic_simonin_2021::RadenkovicSimonin2021;
 pub use rebound::{rebound_from_observed, rebound_with};
 pub use registry::{AnyIncidence, AnyModel};
@@ -69,6 +72,18 @@ mod tests {
     #[test]
     fn names_round_trip() {
         for &name in AnyModel::NAMES {
+            // The measured-wall model has no default: its table is the wall's.
+            if name == MeasuredWall::NAME {
+                let e = AnyModel::with_defaults(name).unwrap_err().to_string();
+                assert!(e.contains("needs `stochastic.wall_table`"), "{e}");
+                let table = || Ok(crate::measured_wall::small_table());
+                let params = ModelParams {
+                    wall_table: Some(&table),
+                    ..Default::default()
+                };
+                assert_eq!(AnyModel::named(Some(name), &params).unwrap().name(), name);
+                continue;
+            }
             assert_eq!(AnyModel::with_defaults(name).unwrap().name(), name);
         }
         assert!(AnyModel::with_defaults("konan").is_err());

@@ -27,6 +27,16 @@ pub fn refuse_escape_table(params: &ModelParams, model: &str) -> Result<()> {
     }
 }
 
+/// Refuses `stochastic.wall_table` for every model but `measured-wall`.
+pub fn refuse_wall_table(params: &ModelParams, model: &str) -> Result<()> {
+    match params.wall_table {
+        None => Ok(()),
+        Some(_) => Err(Error::Input(format!(
+            "`stochastic.wall_table` applies to model = \"measured-wall\" only (model = \"{model}\")"
+        ))),
+    }
+}
+
 /// The isotropic models' roughness angle `stochastic.delta_gamma_deg` (rad), checked against
 /// the wall models' range; `None` when not given (the wall's `(Δξ + Δζ)/2` then).
 pub fn delta_gamma(params: &ModelParams) -> Result<Option<f64>> {

@@ -3,7 +3,7 @@
 //! the same incident particle (Eq. 34). The physics is [`crate::stochastic`]; this file
 //! names it.
 
-use super::params::{refuse_delta_gamma, refuse_escape_table};
+use super::params::{refuse_delta_gamma, refuse_escape_table, refuse_wall_table};
 use super::rough_wall_model::{ModelParams, NamedModel, RoughWallModel};
 use crate::error::Result;
 use crate::stochastic::{Contact, Incidence, Rebound};
@@ -50,6 +50,7 @@ impl NamedModel for RadenkovicSimonin2021 {
     fn from_params(params: &ModelParams) -> Result<Self> {
         refuse_delta_gamma(params, Self::NAME)?;
         refuse_escape_table(params, Self::NAME)?;
+        refuse_wall_table(params, Self::NAME)?;
         Ok(RadenkovicSimonin2021)
     }
 }

@@ -7,6 +7,7 @@
 use super::calibrated::Calibrated;
 use super::gaussian_angle::GaussianAngle;
 use super::gaussian_tilt::GaussianTilt;
+use super::measured_wall::MeasuredWall;
 use super::normal_perturbation::NormalPerturbation;
 use super::radenkovic_simonin_2021::RadenkovicSimonin2021;
 use super::rough_wall_model::{ModelParams, NamedModel, RoughWallModel};
@@ -78,6 +79,12 @@ macro_rules! registry {
                 }
             }
 
+            fn wall(&self, given: &Deviations) -> Deviations {
+                match self {
+                    $(AnyModel::$model(m) => m.wall(given),)+
+                }
+            }
+
             fn incidence(&self, alpha: f64, beta: f64, wall: &Deviations) -> AnyIncidence {
                 match self {
                     $(AnyModel::$model(m) => AnyIncidence::$model(*m, m.incidence(alpha, beta, wall)),)+
@@ -110,6 +117,7 @@ registry! {
     GaussianTilt,
     NormalPerturbation,
     Calibrated,
+    MeasuredWall,
 }
 
 impl Default for AnyModel {

@@ -4,6 +4,7 @@
 
 use crate::calibrated::EscapeTable;
 use crate::error::Result;
+use crate::measured_wall::MeasuredWallTable;
 use crate::stochastic::{Contact, Rebound};
 use crate::wall::Deviations;
 use nalgebra::Vector3;
@@ -35,6 +36,12 @@ pub trait RoughWallModel: Copy + std::fmt::Debug + PartialEq + Send + Sync {
     /// isotropic model's own, otherwise the mean of the wall's deviations `(Δξ + Δζ)/2`.
     fn roughness_angle(&self, wall: &Deviations) -> f64 {
         0.5 * (wall.delta_xi + wall.delta_zeta)
+    }
+
+    /// The wall this model rebounds off when a run gives `given`: `given` itself, except for
+    /// a model measured on a wall of its own (`measured-wall`: that wall's deviations).
+    fn wall(&self, given: &Deviations) -> Deviations {
+        *given
     }
 
     /// The incident direction `(α, β)` (rad) on `wall`.
@@ -78,6 +85,9 @@ pub struct ModelParams<'a> {
     /// once the model has accepted the key (so that a key that does not apply is refused
     /// before any file is read).
     pub escape_table: Option<&'a dyn Fn() -> Result<&'static EscapeTable>>,
+    /// `stochastic.wall_table`: how to read the table of `measured-wall`, called only once
+    /// the model has accepted the key.
+    pub wall_table: Option<&'a dyn Fn() -> Result<&'static MeasuredWallTable>>,
 }
 
 impl std::fmt::Debug for ModelParams<'_> {
@@ -85,6 +95,7 @@ impl std::fmt::Debug for ModelParams<'_> {
         f.debug_struct("ModelParams")
             .field("delta_gamma_deg", &self.delta_gamma_deg)
             .field("escape_table", &self.escape_table.map(|_| "given"))
+            .field("wall_table", &self.wall_table.map(|_| "given"))
             .finish()
     }
 }

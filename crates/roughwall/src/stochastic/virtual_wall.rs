@@ -71,6 +71,20 @@ impl SeenWall {
         }
     }
 
+    /// The element of normal-angle fluctuations `(ξ', ζ')` in the wall's frame (Eq. 4), seen
+    /// from the direction `β` (`(sin β, cos β)` given): its exact unit normal (Eq. 10) and
+    /// its inclinations in the incident frame (Eqs. 20–21).
+    #[inline]
+    pub fn of_xi_zeta(xi: f64, zeta: f64, (s, c): (f64, f64)) -> SeenWall {
+        SeenWall {
+            gamma: c * xi - s * zeta,
+            gamma_star: s * xi + c * zeta,
+            xi,
+            zeta,
+            normal: normal_from_xi_zeta(xi, zeta),
+        }
+    }
+
     /// The element of unit normal `normal` seen from direction `β`, with its angles
     /// (Radenkovic & Simonin 2021, Eqs. 20–21).
     #[inline]

@@ -1,0 +1,81 @@
+//! The `measured-wall` model: a stochastic wall model that takes a wall as measured, not as
+//! Gaussian (issue 39, part 4; docs/models.md, "The measured-wall model").
+//!
+//! A particle centre that bounces, perhaps several times, on a rough wall and leaves it
+//! has turned its velocity `U⁻` into `U⁺`. For an ideally elastic bounce there is exactly one
+//! plane that mirrors the one into the other, of normal `n_eff ∝ U⁺/|U⁺| − U⁻/|U⁻|` (the
+//! *effective wall element* of the history, [`effective_normal`]). Its angles carry
+//! everything the bounce did: the facet's slope, the shadow effect, the multiple collisions, and any
+//! asymmetry of the wall between `β⁻` and `−β⁻` or `β⁻ + 180°`.
+//!
+//! So the model is the law of that element given the incident direction, measured on the
+//! deterministic reference on the scan itself (`deterministic::in_place_wall`, for a point
+//! particle or a sphere's centre surface) over a fixed grid of incident directions
+//! ([`grid`]), kept as quantile functions ([`quantiles`]) of its normal-angle fluctuations
+//! `(ξ', ζ')` in the wall's frame (Eq. 4): the marginal law of `ξ'`, and the law of `ζ'`
+//! within each of 16 rank bins of `ξ'` (their dependence). A rebound draws `(ξ', ζ')` for its
+//! incident direction by interpolating the quantile functions of the four surrounding grid
+//! cells at the same probabilities (displacement interpolation: a law that shifts with `α⁻`
+//! is interpolated as a shift, not as a mixture), and applies the collision law in that
+//! element's frame, as the paper's model does with its virtual wall.
+//! With the elastic law the rebound then has the reference's law up to the table's
+//! resolution and sampling noise, at any incident direction, by construction; with another
+//! law it is the one-element approximation every stochastic model makes.
+//!
+//! The files follow the model's life: `grid` (the incident directions and the resolution,
+//! with how they were chosen), `effective_normal`, `quantiles`, `build` (the table from a
+//! deterministic reference), `table` (the law a rebound reads) and `table_file` (the text a
+//! card points to and the C library and Python take).
+
+pub(crate) mod build;
+pub(crate) mod effective_normal;
+pub(crate) mod grid;
+pub(crate) mod quantiles;
+pub(crate) mod table;
+pub(crate) mod table_file;
+
+pub use build::{build_table, scan_table, BuildOptions};
+pub use effective_normal::{effective_gammas, effective_normal};
+pub use grid::CELLS;
+pub use grid::{
+    ALPHA_ROWS_DEG, BETA_COLUMNS, HISTORIES_PER_CELL, LINEAR_BELOW_DEG, RANK_BINS,
+    SERVED_LEFT_BOUND, XI_KNOTS, ZETA_KNOTS,
+};
+pub use quantiles::{CellLaw, QuantileFunction};
+pub use table::{MeasuredWallIncidence, MeasuredWallTable};
+pub use table_file::{MAGIC, MAX_DISTINCT_TABLES};
+
+/// A small table for the crate's unit tests: a generated anisotropic Gaussian wall (Δξ ≈ 2.5°,
+/// Δζ ≈ 7.5°), 1024 histories per cell, built once.
+#[cfg(test)]
+pub(crate) fn small_table() -> &'static MeasuredWallTable {
+    use std::sync::OnceLock;
+    static TABLE: OnceLock<&'static MeasuredWallTable> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let field = crate::surface::generate(
+            &crate::surface::SurfaceSpec {
+                length_m: 128e-6,
+                nodes: 128,
+                rms_height_m: 0.37e-6,
+                corr_length_x_m: Some(12e-6),
+                corr_length_z_m: Some(4e-6),
+            },
+            3,
+        );
+        let tracker = crate::Tracker::new(&field, 1000).unwrap();
+        let dev = crate::surface::measured_deviations(&field);
+        build_table(
+            &tracker,
+            dev,
+            "small test wall",
+            &BuildOptions {
+                histories_per_cell: 1024,
+                seed: 1,
+            },
+            &|_| {},
+        )
+        .unwrap()
+        .intern()
+        .unwrap()
+    })
+}

@@ -1,0 +1,100 @@
+//! The law a measured-wall rebound reads: the table of cells, and the draw of an effective
+//! wall element for any incident direction between them.
+
+use super::grid::{cell, column_weights, row_weights, ALPHA_ROWS_DEG};
+use super::quantiles::{at, knot_coordinate, rank_bin, CellLaw};
+use crate::wall::Deviations;
+use rand::Rng;
+
+/// A measured-wall table: one [`CellLaw`] per grid cell (row-major: `|α⁻|` rows, `β⁻`
+/// columns), built by [`super::build_table`] and read by [`super::super::models`]'s
+/// `measured-wall` model.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeasuredWallTable {
+    /// What the table was built on (scan file, diameter, block), for messages and files.
+    pub source: String,
+    /// The lowest row served: every row from it up has at most
+    /// [`super::SERVED_LEFT_BOUND`] of each cell's histories leaving the scan. Incident
+    /// angles below it take its law.
+    pub first_row: usize,
+    /// The deviations `(Δξ, Δζ)` of the wall the table was built on (rad): what a run with
+    /// the table reports as its wall.
+    pub deviations: Deviations,
+    /// The seed of the histories.
+    pub seed: u64,
+    /// The cells, `cell(row, column)`.
+    pub cells: Vec<CellLaw>,
+}
+
+/// Where a direction `(α⁻, β⁻)` falls in a table: its four cells and their weights, and
+/// `(sin β⁻, cos β⁻)` to turn a drawn element into the wall's frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeasuredWallIncidence {
+    /// The four surrounding cells (repeated where a weight is zero).
+    pub cells: [u32; 4],
+    /// Their bilinear weights (summing to 1).
+    pub weights: [f64; 4],
+    /// `(sin β⁻, cos β⁻)`.
+    pub sin_cos_beta: (f64, f64),
+}
+
+impl MeasuredWallTable {
+    /// The incident angles `|α⁻|` (degrees) the table serves as measured; below, the lowest
+    /// served row's law is taken.
+    pub fn lowest_served_alpha_deg(&self) -> f64 {
+        ALPHA_ROWS_DEG[self.first_row]
+    }
+
+    /// The largest share of histories that left the scan in a served cell.
+    pub fn max_served_left_share(&self) -> f64 {
+        self.cells[cell(self.first_row, 0)..]
+            .iter()
+            .map(CellLaw::left_share)
+            .fold(0.0, f64::max)
+    }
+
+    /// Histories shot per cell.
+    pub fn histories_per_cell(&self) -> u64 {
+        self.cells.first().map_or(0, |c| c.histories)
+    }
+
+    /// Where the incident direction `(α, β)` (rad, `α < 0` towards the wall) falls.
+    pub fn incidence(&self, alpha: f64, beta: f64) -> MeasuredWallIncidence {
+        let abs_alpha = alpha.abs().to_degrees().min(90.0);
+        let (r0, r1, wr) = row_weights(abs_alpha, self.first_row);
+        let (c0, c1, wc) = column_weights(beta.to_degrees());
+        let idx = |r, c| cell(r, c) as u32;
+        MeasuredWallIncidence {
+            cells: [idx(r0, c0), idx(r0, c1), idx(r1, c0), idx(r1, c1)],
+            weights: [
+                (1.0 - wr) * (1.0 - wc),
+                (1.0 - wr) * wc,
+                wr * (1.0 - wc),
+                wr * wc,
+            ],
+            sin_cos_beta: beta.sin_cos(),
+        }
+    }
+
+    /// One effective element `(ξ', ζ')` (rad, the wall's frame) for `inc`: the four cells'
+    /// quantile functions blended at the same two probabilities (displacement
+    /// interpolation), the second read in the rank bin of the first. The wall's frame, not
+    /// the incident one, because a law that only turns with `β⁻` (the elements of a wall seen
+    /// from steep incidence) is then the same in every column, and blending columns is exact.
+    #[inline]
+    pub fn draw<R: Rng + ?Sized>(&self, inc: &MeasuredWallIncidence, rng: &mut R) -> (f64, f64) {
+        let (u1, u2): (f64, f64) = (rng.gen(), rng.gen());
+        let bin = rank_bin(u1);
+        let (t1, t2) = (knot_coordinate(u1), knot_coordinate(u2));
+        let (mut xi, mut zeta) = (0.0, 0.0);
+        for (&c, &w) in inc.cells.iter().zip(&inc.weights) {
+            if w == 0.0 {
+                continue;
+            }
+            let law = &self.cells[c as usize];
+            xi += w * at(&law.xi.knots, t1);
+            zeta += w * at(&law.zeta[bin].knots, t2);
+        }
+        (xi, zeta)
+    }
+}

@@ -1,0 +1,292 @@
+//! The measured-wall table as text: what `rebound scan --measured-wall` writes beside the
+//! wall card, a case names (`[stochastic] wall_table`) and the C library and Python take.
+//!
+//! Format: the magic line [`MAGIC`], then `key = value` lines (`source`, `seed`,
+//! `first_row`, the deviations and the grid, which must be this version's), then the header
+//! [`CELL_HEADER`] and one line per cell: its row and column, `α⁻` and `β⁻`, its counts,
+//! then the [`XI_KNOTS`] knots of `ξ'` and the [`RANK_BINS`] × [`ZETA_KNOTS`] knots of `ζ'`
+//! (as whole multiples of [`KNOT_UNIT_RAD`], 0.1 µrad). Knots are kept on that resolution,
+//! so a table read back is the table written, bit for bit. Everything is checked on reading: a malformed, edited
+//! or truncated table is a one-line error naming the line.
+
+use super::grid::*;
+use super::quantiles::{CellLaw, QuantileFunction, KNOT_UNIT_RAD};
+use super::table::MeasuredWallTable;
+use crate::error::{Error, Result};
+use crate::wall::Deviations;
+use std::sync::Mutex;
+
+/// First line of a table file (names the format and its version).
+pub const MAGIC: &str = "# roughwall measured-wall table v1";
+
+const MAGIC_STEM: &str = "# roughwall measured-wall table v";
+
+/// The header of the cell lines.
+pub const CELL_HEADER: &str =
+    "row,column,alpha_deg,beta_deg,histories,left_patch,lost_other,xi_knots_0.1urad...,zeta_knots_0.1urad...";
+
+/// Distinct tables a process may hold (see [`MeasuredWallTable::intern`]): a host's walls
+/// use one or a few.
+pub const MAX_DISTINCT_TABLES: usize = 16;
+
+/// Values per cell line before the knots.
+const LEADING: usize = 7;
+
+/// Knots per cell line.
+const KNOTS: usize = XI_KNOTS + RANK_BINS * ZETA_KNOTS;
+
+fn list(v: &[f64]) -> String {
+    v.iter()
+        .map(|x| x.to_string())
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+impl MeasuredWallTable {
+    /// The table as text ([`MeasuredWallTable::parse`] reads it back, bit for bit).
+    pub fn to_text(&self) -> String {
+        let mut s = String::with_capacity(CELLS * KNOTS * 12);
+        s.push_str(MAGIC);
+        s.push('\n');
+        // The source is one line: a newline in a file name would break the format.
+        let source = self.source.replace(['\n', '\r'], " ");
+        s.push_str(&format!("source = {source}\n"));
+        s.push_str(&format!("seed = {}\n", self.seed));
+        s.push_str(&format!("first_row = {}\n", self.first_row));
+        s.push_str(&format!("delta_xi_rad = {}\n", self.deviations.delta_xi));
+        s.push_str(&format!(
+            "delta_zeta_rad = {}\n",
+            self.deviations.delta_zeta
+        ));
+        s.push_str(&format!("alpha_rows_deg = {}\n", list(&ALPHA_ROWS_DEG)));
+        s.push_str(&format!("beta_columns = {BETA_COLUMNS}\n"));
+        s.push_str(&format!("xi_knots = {XI_KNOTS}\n"));
+        s.push_str(&format!("rank_bins = {RANK_BINS}\n"));
+        s.push_str(&format!("zeta_knots = {ZETA_KNOTS}\n"));
+        s.push_str(CELL_HEADER);
+        s.push('\n');
+        for (k, c) in self.cells.iter().enumerate() {
+            let (row, column) = (k / BETA_COLUMNS, k % BETA_COLUMNS);
+            s.push_str(&format!(
+                "{row},{column},{},{},{},{},{}",
+                ALPHA_ROWS_DEG[row],
+                beta_column_deg(column),
+                c.histories,
+                c.left_patch,
+                c.lost_other
+            ));
+            for q in std::iter::once(&c.xi).chain(&c.zeta) {
+                for &x in &q.knots {
+                    s.push(',');
+                    s.push_str(&((x / KNOT_UNIT_RAD).round() as i64).to_string());
+                }
+            }
+            s.push('\n');
+        }
+        s
+    }
+
+    /// Reads a table written by [`MeasuredWallTable::to_text`]; `what` names it in errors
+    /// (e.g. "`stochastic.wall_table` `path`").
+    pub fn parse(text: &str, what: &str) -> Result<MeasuredWallTable> {
+        let bad = |line: usize, msg: &str| Error::Input(format!("{what}, line {line}: {msg}"));
+        let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end()));
+        match lines.next() {
+            Some((_, l)) if l == MAGIC => {}
+            Some((_, l)) if l.starts_with(MAGIC_STEM) => {
+                return Err(Error::Input(format!(
+                    "{what}: a measured-wall table of another format (`{l}`); this version reads `{MAGIC}`: build it again with `rebound scan --measured-wall`"
+                )))
+            }
+            _ => {
+                return Err(Error::Input(format!(
+                    "{what}: not a measured-wall table (the first line must be `{MAGIC}`; `rebound scan --measured-wall` writes one)"
+                )))
+            }
+        }
+        let mut value = |key: &str| -> Result<(usize, String)> {
+            match lines.next() {
+                Some((n, l)) => match l.strip_prefix(key).and_then(|r| r.strip_prefix(" = ")) {
+                    Some(v) => Ok((n, v.to_string())),
+                    None => Err(bad(n, &format!("expected `{key} = …`"))),
+                },
+                None => Err(Error::Input(format!(
+                    "{what}: truncated (expected `{key} = …`)"
+                ))),
+            }
+        };
+        let (_, source) = value("source")?;
+        let number = |(n, v): (usize, String), key: &str| -> Result<f64> {
+            v.parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| bad(n, &format!("`{key}` = `{v}` is not a finite number")))
+        };
+        let (n, v) = value("seed")?;
+        let seed: u64 = v
+            .parse()
+            .map_err(|_| bad(n, &format!("`seed` = `{v}` is not an integer")))?;
+        let (n, v) = value("first_row")?;
+        let first_row: usize = v
+            .parse()
+            .ok()
+            .filter(|&r: &usize| r < ALPHA_ROWS_DEG.len())
+            .ok_or_else(|| {
+                bad(
+                    n,
+                    &format!(
+                        "`first_row` = `{v}`: allowed 0 to {}",
+                        ALPHA_ROWS_DEG.len() - 1
+                    ),
+                )
+            })?;
+        let xi = number(value("delta_xi_rad")?, "delta_xi_rad")?;
+        let zeta = number(value("delta_zeta_rad")?, "delta_zeta_rad")?;
+        for (key, want) in [
+            ("alpha_rows_deg", list(&ALPHA_ROWS_DEG)),
+            ("beta_columns", BETA_COLUMNS.to_string()),
+            ("xi_knots", XI_KNOTS.to_string()),
+            ("rank_bins", RANK_BINS.to_string()),
+            ("zeta_knots", ZETA_KNOTS.to_string()),
+        ] {
+            let (n, v) = value(key)?;
+            if v != want {
+                return Err(bad(
+                    n,
+                    &format!("`{key}` = `{v}`: this version's grid is `{want}`: build the table again with `rebound scan --measured-wall`"),
+                ));
+            }
+        }
+        match lines.next() {
+            Some((_, l)) if l == CELL_HEADER => {}
+            Some((n, _)) => return Err(bad(n, &format!("expected the header `{CELL_HEADER}`"))),
+            None => {
+                return Err(Error::Input(format!(
+                    "{what}: truncated (expected the cell header)"
+                )))
+            }
+        }
+        let mut cells = Vec::with_capacity(CELLS);
+        for k in 0..CELLS {
+            let (n, l) = lines.next().ok_or_else(|| {
+                Error::Input(format!(
+                    "{what}: truncated after {k} of {CELLS} cells (the grid is {} rows × {BETA_COLUMNS} columns)",
+                    ALPHA_ROWS_DEG.len()
+                ))
+            })?;
+            cells.push(parse_cell(l, k).map_err(|m| bad(n, &m))?);
+        }
+        if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
+            return Err(bad(n, &format!("more than the {CELLS} cells of the grid")));
+        }
+        let t = MeasuredWallTable {
+            source,
+            first_row,
+            deviations: Deviations {
+                delta_xi: xi,
+                delta_zeta: zeta,
+            },
+            seed,
+            cells,
+        };
+        // The served rows follow from the counts: an edited `first_row` is refused.
+        let served = |row: usize| {
+            (0..BETA_COLUMNS).all(|c| t.cells[cell(row, c)].left_share() <= SERVED_LEFT_BOUND)
+        };
+        if !(first_row..ALPHA_ROWS_DEG.len()).all(served)
+            || (first_row > 0 && served(first_row - 1))
+        {
+            return Err(Error::Input(format!(
+                "{what}: `first_row` = {first_row} does not match the cells' counts of histories that left the scan"
+            )));
+        }
+        Ok(t)
+    }
+
+    /// This table kept for the process's life, shared by every wall that reads it (the
+    /// models are small `Copy` values holding a reference): an equal table already held is
+    /// reused; more than [`MAX_DISTINCT_TABLES`] distinct ones is a one-line error.
+    pub fn intern(self) -> Result<&'static MeasuredWallTable> {
+        static TABLES: Mutex<Vec<&'static MeasuredWallTable>> = Mutex::new(Vec::new());
+        let mut v = TABLES.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(t) = v.iter().find(|t| ***t == self) {
+            return Ok(t);
+        }
+        if v.len() >= MAX_DISTINCT_TABLES {
+            return Err(Error::Input(format!(
+                "`stochastic.wall_table`: more than {MAX_DISTINCT_TABLES} distinct measured-wall tables in one process (each stays in memory for the process's life); build the walls from fewer tables"
+            )));
+        }
+        let t: &'static MeasuredWallTable = Box::leak(Box::new(self));
+        v.push(t);
+        Ok(t)
+    }
+}
+
+/// One cell line, checked against its place `k` in the grid.
+fn parse_cell(line: &str, k: usize) -> std::result::Result<CellLaw, String> {
+    let f: Vec<&str> = line.split(',').collect();
+    if f.len() != LEADING + KNOTS {
+        return Err(format!("{} fields, expected {}", f.len(), LEADING + KNOTS));
+    }
+    let (row, column) = (k / BETA_COLUMNS, k % BETA_COLUMNS);
+    let int = |i: usize, name: &str| -> std::result::Result<u64, String> {
+        f[i].parse::<u64>()
+            .map_err(|_| format!("`{name}` = `{}` is not a count", f[i]))
+    };
+    if int(0, "row")? != row as u64 || int(1, "column")? != column as u64 {
+        return Err(format!(
+            "cell ({}, {}) where the grid has ({row}, {column})",
+            f[0], f[1]
+        ));
+    }
+    let (a, b) = (f[2].parse::<f64>(), f[3].parse::<f64>());
+    if a != Ok(ALPHA_ROWS_DEG[row]) || b != Ok(beta_column_deg(column)) {
+        return Err(format!(
+            "α⁻ = {}, β⁻ = {} where the grid has {}, {}",
+            f[2],
+            f[3],
+            ALPHA_ROWS_DEG[row],
+            beta_column_deg(column)
+        ));
+    }
+    let (histories, left, lost) = (
+        int(4, "histories")?,
+        int(5, "left_patch")?,
+        int(6, "lost_other")?,
+    );
+    if left.saturating_add(lost) > histories {
+        return Err(format!("{left} + {lost} lost histories out of {histories}"));
+    }
+    let mut knots = Vec::with_capacity(KNOTS);
+    for s in &f[LEADING..] {
+        match s.parse::<i64>() {
+            Ok(k) if (k as f64 * KNOT_UNIT_RAD).abs() <= std::f64::consts::FRAC_PI_2 => {
+                knots.push(k as f64 * KNOT_UNIT_RAD)
+            }
+            _ => {
+                return Err(format!(
+                    "knot `{s}` is not a whole number of 0.1 µrad within ±π/2"
+                ))
+            }
+        }
+    }
+    let function = |v: &[f64]| -> std::result::Result<QuantileFunction, String> {
+        if v.windows(2).any(|w| w[1] < w[0]) {
+            return Err("a quantile function that decreases".into());
+        }
+        Ok(QuantileFunction { knots: v.to_vec() })
+    };
+    let xi = function(&knots[..XI_KNOTS])?;
+    let zeta = knots[XI_KNOTS..]
+        .chunks(ZETA_KNOTS)
+        .map(function)
+        .collect::<std::result::Result<Vec<_>, _>>()?;
+    Ok(CellLaw {
+        histories,
+        left_patch: left,
+        lost_other: lost,
+        xi,
+        zeta,
+    })
+}

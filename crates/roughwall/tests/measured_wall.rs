@@ -1,0 +1,227 @@
+//! The measured-wall model (issue 39, part 4): its table against the deterministic reference
+//! it was measured on, at incident directions between the table's grid points; a wall that is
+//! not its own mirror image; the table's text, read back bit for bit and refused when edited.
+
+use crate::common::deterministic::{mean_se, std, UNIT};
+use crate::common::{ks, ks_critical};
+use nalgebra::Vector3;
+use rand::{Rng, SeedableRng};
+use roughwall::angles::incident_angles;
+use roughwall::deterministic::{history, Fate, ModelSetup};
+use roughwall::measured_wall::{build_table, BuildOptions, MeasuredWallTable, MAGIC};
+use roughwall::models::{rebound_with, AnyModel, MeasuredWall};
+use roughwall::stochastic::Contact;
+use roughwall::surface::{generate, measured_deviations, SurfaceSpec};
+use roughwall::{CollisionLaw, Deviations, HeightField, IncidentCondition, Tracker, Triangulation};
+
+fn setup(wall: Deviations) -> ModelSetup {
+    ModelSetup {
+        law: CollisionLaw::Elastic,
+        diameter_m: 0.0,
+        speed: UNIT,
+        wall,
+        psi: 2.0,
+        erosion: None,
+        spin: Default::default(),
+    }
+}
+
+/// `α⁺` (degrees) of `n` deterministic histories at `(α⁻, β⁻)` (degrees).
+fn reference(t: &Tracker, wall: Deviations, a: f64, b: f64, n: u64) -> Vec<f64> {
+    let cond = IncidentCondition::from_degrees(a, b);
+    (0..n)
+        .filter_map(|i| {
+            let h = history(t, &setup(wall), &cond, 0, i, 99);
+            (h.fate == Fate::Escaped).then(|| incident_angles(&h.velocity).0.to_degrees())
+        })
+        .collect()
+}
+
+/// `α⁺` (degrees) of `n` rebounds of `model` at `(α⁻, β⁻)` (degrees).
+fn model_rebounds(model: &AnyModel, wall: Deviations, a: f64, b: f64, n: u64) -> Vec<f64> {
+    let cond = IncidentCondition::from_degrees(a, b);
+    let law = CollisionLaw::Elastic;
+    let contact = Contact {
+        wall: &wall,
+        law: &law,
+        psi: 2.0,
+        diameter_m: 0.0,
+    };
+    (0..n)
+        .map(|i| {
+            let mut r = roughwall::rng::stream(5, &[3, i]);
+            let u = UNIT.velocity(cond.alpha_in, cond.beta_in, 1.0);
+            let out = rebound_with(model, u, Vector3::zeros(), &contact, &mut r);
+            // Ideally elastic: the speed is kept.
+            assert!((out.velocity.norm() - u.norm()).abs() < 1e-12);
+            incident_angles(&out.velocity).0.to_degrees()
+        })
+        .collect()
+}
+
+fn gaussian() -> HeightField {
+    generate(
+        &SurfaceSpec {
+            length_m: 256e-6,
+            nodes: 256,
+            rms_height_m: 0.37e-6,
+            corr_length_x_m: Some(12e-6),
+            corr_length_z_m: Some(4e-6),
+        },
+        3,
+    )
+}
+
+fn table_of(t: &Tracker, wall: Deviations, n: u64) -> &'static MeasuredWallTable {
+    let opts = BuildOptions {
+        histories_per_cell: n,
+        seed: 7,
+    };
+    build_table(t, wall, "test wall", &opts, &|_| {})
+        .unwrap()
+        .intern()
+        .unwrap()
+}
+
+#[test]
+fn between_its_grid_points_the_model_is_the_reference() {
+    let field = gaussian();
+    let t = Tracker::new(&field, 1000).unwrap();
+    let wall = measured_deviations(&field);
+    let model = AnyModel::MeasuredWall(MeasuredWall {
+        table: table_of(&t, wall, 4181),
+    });
+    // Between rows and columns (never a grid point), grazing to steep, across the circle.
+    for (a, b) in [(-6.25, 52.5), (-13.0, 97.5), (-31.0, -37.5), (-3.25, 172.5)] {
+        let det = reference(&t, wall, a, b, 40_000);
+        let mw = model_rebounds(&model, wall, a, b, 40_000);
+        let paper = model_rebounds(&AnyModel::PAPER, wall, a, b, 40_000);
+        let (k, k_paper) = (ks(&det, &mw), ks(&det, &paper));
+        let ((m_det, se), (m_mw, _)) = (mean_se(&det), mean_se(&mw));
+        // The table (4181 histories a cell) adds its own noise to the two samples': within
+        // twice the KS distance two samples of these sizes exceed one time in a thousand, and
+        // mean α⁺ within 0.15°.
+        assert!(
+            k < 2.0 * ks_critical(det.len(), mw.len()),
+            "({a}, {b}): KS {k} (paper {k_paper})"
+        );
+        assert!(
+            (m_mw - m_det).abs() < 0.15 + 4.0 * se,
+            "({a}, {b}): {m_mw} vs {m_det}"
+        );
+    }
+}
+
+/// A ratchet wall: along `x`, ramps rising at 5° for 14 nodes and falling at 31° over 2,
+/// with small random heights across; not its own mirror image under `x → −x`.
+fn ratchet() -> HeightField {
+    let (nx, nz, dx) = (256usize, 64usize, 1e-6);
+    let rise = dx * 5f64.to_radians().tan();
+    let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(1);
+    let heights = (0..nx * nz)
+        .map(|k| {
+            let i = k % nx;
+            let p = i % 16;
+            let ramp = if p < 14 {
+                p as f64
+            } else {
+                14.0 - 7.0 * (p - 13) as f64
+            } * rise;
+            ramp + 0.02e-6 * rng.gen::<f64>()
+        })
+        .collect();
+    HeightField {
+        nx,
+        nz,
+        dx,
+        dz: dx,
+        heights,
+        triangulation: Triangulation::Alternating,
+    }
+}
+
+#[test]
+fn a_wall_that_is_not_its_own_mirror_image_keeps_its_direction_dependence() {
+    const N_TABLE: u64 = 4096;
+    let field = ratchet();
+    let t = Tracker::new(&field, 1000).unwrap();
+    let wall = measured_deviations(&field);
+    let model = AnyModel::MeasuredWall(MeasuredWall {
+        table: table_of(&t, wall, N_TABLE),
+    });
+    let mut means = Vec::new();
+    for b in [0.0, 180.0] {
+        let det = reference(&t, wall, -12.0, b, 20_000);
+        let mw = model_rebounds(&model, wall, -12.0, b, 20_000);
+        let paper = model_rebounds(&AnyModel::PAPER, wall, -12.0, b, 20_000);
+        let ((d, se), m, p) = (mean_se(&det), mean_se(&mw).0, mean_se(&paper).0);
+        // The law is a few facet families, far apart: the table's own noise on the mean is
+        // the spread over √N_TABLE.
+        let tol = 4.0 * (se * se + std(&det).powi(2) / N_TABLE as f64).sqrt();
+        assert!(
+            (m - d).abs() < tol,
+            "β⁻ = {b}: model {m} vs reference {d} (± {tol})"
+        );
+        means.push((d, m, p, tol));
+    }
+    let ((d0, m0, p0, t0), (d1, m1, p1, t1)) = (means[0], means[1]);
+    // Up the ramps and down them differ by degrees; the model carries it, the paper's model
+    // (a function of the deviations alone, mirror symmetric) cannot.
+    assert!((d0 - d1).abs() > 2.0, "{d0} vs {d1}");
+    assert!(
+        ((m0 - m1) - (d0 - d1)).abs() < t0 + t1,
+        "{m0} − {m1} vs {d0} − {d1}"
+    );
+    assert!((p0 - p1).abs() < 0.3, "the paper's model: {p0} vs {p1}");
+}
+
+#[test]
+fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
+    let field = gaussian();
+    let t = Tracker::new(&field, 1000).unwrap();
+    let wall = measured_deviations(&field);
+    let opts = BuildOptions {
+        histories_per_cell: 1024,
+        seed: 9,
+    };
+    let table = build_table(&t, wall, "test wall", &opts, &|_| {}).unwrap();
+    // The same table for one thread and for all.
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap()
+        .install(|| build_table(&t, wall, "test wall", &opts, &|_| {}).unwrap());
+    assert!(one == table);
+    let text = table.to_text();
+    assert!(text.starts_with(MAGIC));
+    let back = MeasuredWallTable::parse(&text, "t").unwrap();
+    assert!(back == table);
+    assert_eq!(back.to_text(), text);
+    let err = |t: &str| {
+        let e = MeasuredWallTable::parse(t, "`stochastic.wall_table` = \"w\"")
+            .unwrap_err()
+            .to_string();
+        assert!(!e.contains('\n'), "{e}");
+        e
+    };
+    let lines: Vec<&str> = text.lines().collect();
+    // A knot that makes a quantile function decrease.
+    let header = lines.iter().position(|l| l.starts_with("row,")).unwrap();
+    let mut cell: Vec<String> = lines[header + 5].split(',').map(String::from).collect();
+    cell[10] = "-9000000".into();
+    let mut edited: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+    edited[header + 5] = cell.join(",");
+    let e = err(&edited.join("\n"));
+    assert!(
+        e.contains(&format!("line {}", header + 6)) && e.contains("decreases"),
+        "{e}"
+    );
+    // Truncated, another version, another grid, an edited `first_row`, not a table at all.
+    assert!(err(&lines[..header + 3].join("\n")).contains("truncated after 2 of"));
+    assert!(err(&text.replacen("table v1", "table v0", 1)).contains("another format"));
+    let grid = text.replacen("beta_columns = 24", "beta_columns = 12", 1);
+    assert!(err(&grid).contains("this version's grid"));
+    let first = text.replacen("first_row = 0", "first_row = 3", 1);
+    assert!(err(&first).contains("does not match"));
+    assert!(err("alpha,beta\n").contains("not a measured-wall table"));
+}

@@ -1,0 +1,71 @@
+//! The measured-wall tables of `rebound scan --measured-wall` as the card and `run.toml` name
+//! them: what was built for each particle ([`MeasuredWallEntry`]), the card's lines and the
+//! `[[measured_wall]]` array.
+
+use crate::output::toml_str;
+
+/// What was built for one particle: the point (`diameter_m = 0`) or a sphere.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeasuredWallEntry {
+    /// Particle diameter (m); 0 for the point particle.
+    pub diameter_m: f64,
+    /// The table's file name in the card's directory; `None` when none could be built.
+    pub file: Option<String>,
+    /// The lowest incident angle `|α⁻|` (degrees) the table serves as measured.
+    pub lowest_alpha_deg: f64,
+    /// The largest share of a served cell's histories that left the scan.
+    pub max_left_share: f64,
+    /// Why there is no table, or what limits it ("" when nothing does).
+    pub note: String,
+    /// Seconds the build took.
+    pub seconds: f64,
+    /// Histories per grid cell.
+    pub histories_per_cell: u64,
+}
+
+/// A card's lines naming a particle's measured-wall table (`measured_wall_table`, with
+/// `measured_wall_note` when something limits it or there is none).
+pub fn table_lines(t: &MeasuredWallEntry) -> String {
+    let mut s = String::new();
+    if let Some(f) = &t.file {
+        s += &format!(
+            "measured_wall_table = {}    # model = \"measured-wall\"\n",
+            toml_str(f)
+        );
+    }
+    if !t.note.is_empty() {
+        s += &format!("measured_wall_note = {}\n", toml_str(&t.note));
+    }
+    s
+}
+
+/// The `[[measured_wall]]` array of `run.toml`: one table per particle, what limits it and
+/// how long it took.
+pub fn manifest_entries(entries: &[MeasuredWallEntry]) -> toml::Value {
+    let rows = entries
+        .iter()
+        .map(|e| {
+            let mut t = toml::Table::new();
+            // Rounded to the picometre, as the card writes diameters.
+            t.insert(
+                "diameter_um".into(),
+                ((e.diameter_m * 1e15).round() / 1e9).into(),
+            );
+            if let Some(f) = &e.file {
+                t.insert("file".into(), f.clone().into());
+                t.insert("lowest_alpha_deg".into(), e.lowest_alpha_deg.into());
+                t.insert("max_left_share".into(), e.max_left_share.into());
+            }
+            if !e.note.is_empty() {
+                t.insert("note".into(), e.note.clone().into());
+            }
+            t.insert("build_s".into(), super::surface::round_ms(e.seconds).into());
+            t.insert(
+                "histories_per_cell".into(),
+                (e.histories_per_cell as i64).into(),
+            );
+            toml::Value::Table(t)
+        })
+        .collect();
+    toml::Value::Array(rows)
+}

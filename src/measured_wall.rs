@@ -11,7 +11,9 @@
 
 use crate::output::fmt_num;
 use crate::progress::Progress;
-use crate::writers::measured_wall::MeasuredWallEntry;
+use crate::writers::measured_wall::{MeasuredWallEntry, VersusPaper};
+use crate::writers::measured_wall::{VERSUS_DIRECTIONS, VERSUS_REBOUNDS};
+use roughwall::measured_wall::MeasuredWallTable;
 use roughwall::measured_wall::{scan_table, BuildOptions, CELLS};
 use roughwall::scan::Characterisation;
 use roughwall::{Result, Triangulation};
@@ -90,6 +92,7 @@ pub fn build_tables(
                     note,
                     seconds: t0.elapsed().as_secs_f64(),
                     histories_per_cell,
+                    versus_paper: Some(versus_paper(&table, seed)?),
                 }
             }
             Err(e @ roughwall::Error::Input(_)) => {
@@ -102,6 +105,7 @@ pub fn build_tables(
                     note: format!("no measured-wall table: {e}"),
                     seconds: t0.elapsed().as_secs_f64(),
                     histories_per_cell,
+                    versus_paper: None,
                 }
             }
             Err(e) => return Err(e),
@@ -110,4 +114,63 @@ pub fn build_tables(
     }
     progress.finish();
     Ok(entries)
+}
+
+/// The paper's model with the deviations of the wall `table` was measured on, against the
+/// measured-wall model of `table`, ideally elastic, over [`VERSUS_DIRECTIONS`]: rebound `i` of
+/// direction `k` draws from `rng::stream(seed, [MEASURED_WALL, u64::MAX − k, i])` for both
+/// models (the table's histories key their cells from 0 up).
+fn versus_paper(table: &MeasuredWallTable, seed: u64) -> Result<VersusPaper> {
+    use roughwall::models::{rebound_off_table, rebound_with, AnyModel};
+    use roughwall::stochastic::Contact;
+    let law = roughwall::CollisionLaw::Elastic;
+    let wall = table.deviations;
+    let contact = Contact {
+        wall: &wall,
+        law: &law,
+        psi: roughwall::stochastic::PSI_PAPER,
+        diameter_m: 0.0,
+    };
+    let mut v = VersusPaper {
+        ks: 0.0,
+        ks_at: (0.0, 0.0),
+        bias_deg: 0.0,
+        bias_at: (0.0, 0.0),
+    };
+    for (k, &(a, b)) in VERSUS_DIRECTIONS.iter().enumerate() {
+        let u = roughwall::angles::velocity_from_angles(1.0, a.to_radians(), b.to_radians());
+        let prefix = roughwall::rng::StreamPrefix::new(
+            seed,
+            &[roughwall::rng::domain::MEASURED_WALL, u64::MAX - k as u64],
+        );
+        let inc = table.incidence(a.to_radians(), b.to_radians());
+        let alphas = |own: bool| -> Vec<f64> {
+            (0..VERSUS_REBOUNDS)
+                .map(|i| {
+                    let mut r = prefix.stream(i);
+                    let zero = nalgebra::Vector3::zeros();
+                    let out = match own {
+                        true => {
+                            rebound_off_table(table, &inc, u, zero, &contact, &mut r, |_, _, _| {})
+                        }
+                        false => rebound_with(&AnyModel::PAPER, u, zero, &contact, &mut r),
+                    };
+                    roughwall::angles::incident_angles(&out.velocity)
+                        .0
+                        .to_degrees()
+                })
+                .collect()
+        };
+        let (mut p, mut w) = (alphas(false), alphas(true));
+        let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len() as f64;
+        let bias = mean(&p) - mean(&w);
+        let ks = roughwall::tally::ks_samples(&mut p, &mut w);
+        if ks > v.ks {
+            (v.ks, v.ks_at) = (ks, (a, b));
+        }
+        if bias.abs() > v.bias_deg.abs() {
+            (v.bias_deg, v.bias_at) = (bias, (a, b));
+        }
+    }
+    Ok(v)
 }

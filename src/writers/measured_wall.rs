@@ -21,6 +21,55 @@ pub struct MeasuredWallEntry {
     pub seconds: f64,
     /// Histories per grid cell.
     pub histories_per_cell: u64,
+    /// What the Gaussian assumption costs on this wall: the paper's model against the table.
+    pub versus_paper: Option<VersusPaper>,
+}
+
+/// The paper's model, given the deviations of the wall a table was measured on, against the
+/// table's own law (the measured-wall model, which stands for the reference on the scan), over
+/// [`VERSUS_DIRECTIONS`]: the largest KS distance of `α⁺` and where, the largest bias of mean
+/// `α⁺` (paper − wall's own, degrees) and where.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VersusPaper {
+    pub ks: f64,
+    pub ks_at: (f64, f64),
+    pub bias_deg: f64,
+    pub bias_at: (f64, f64),
+}
+
+/// The incident directions `(α⁻, β⁻)` (degrees) of [`VersusPaper`].
+pub const VERSUS_DIRECTIONS: [(f64, f64); 12] = [
+    (-5.0, 0.0),
+    (-5.0, 45.0),
+    (-5.0, 90.0),
+    (-5.0, -90.0),
+    (-15.0, 0.0),
+    (-15.0, 45.0),
+    (-15.0, 90.0),
+    (-15.0, -90.0),
+    (-35.0, 0.0),
+    (-35.0, 45.0),
+    (-35.0, 90.0),
+    (-35.0, -90.0),
+];
+
+/// Rebounds of each model per direction of [`VersusPaper`].
+pub const VERSUS_REBOUNDS: u64 = 20_000;
+
+impl VersusPaper {
+    /// The card's line: what the Gaussian models miss this wall by, and what to use instead.
+    pub fn line(&self) -> String {
+        format!(
+            "the paper's model with this wall's deviations differs from the wall's own law (this table) by a KS distance of α⁺ up to {:.3} (at α⁻ = {}°, β⁻ = {}°) and by up to {:+.2}° in mean α⁺ (at {}°, {}°), over α⁻ = −5°, −15°, −35° × β⁻ = 0°, 45°, 90°, −90° ({} rebounds each): the Gaussian models miss this wall by that much; model = \"measured-wall\" takes it as measured",
+            self.ks,
+            crate::output::fmt_num(self.ks_at.0),
+            crate::output::fmt_num(self.ks_at.1),
+            self.bias_deg,
+            crate::output::fmt_num(self.bias_at.0),
+            crate::output::fmt_num(self.bias_at.1),
+            VERSUS_REBOUNDS
+        )
+    }
 }
 
 /// A card's lines naming a particle's measured-wall table (`measured_wall_table`, with
@@ -35,6 +84,9 @@ pub fn table_lines(t: &MeasuredWallEntry) -> String {
     }
     if !t.note.is_empty() {
         s += &format!("measured_wall_note = {}\n", toml_str(&t.note));
+    }
+    if let Some(v) = &t.versus_paper {
+        s += &format!("measured_wall_versus_paper = {}\n", toml_str(&v.line()));
     }
     s
 }
@@ -64,6 +116,10 @@ pub fn manifest_entries(entries: &[MeasuredWallEntry]) -> toml::Value {
                 "histories_per_cell".into(),
                 (e.histories_per_cell as i64).into(),
             );
+            if let Some(v) = &e.versus_paper {
+                t.insert("paper_max_ks_alpha_out".into(), v.ks.into());
+                t.insert("paper_max_abs_bias_deg".into(), v.bias_deg.abs().into());
+            }
             toml::Value::Table(t)
         })
         .collect();

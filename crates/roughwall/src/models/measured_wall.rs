@@ -58,47 +58,63 @@ impl RoughWallModel for MeasuredWall {
         omega_in: Vector3<f64>,
         contact: &Contact,
         rng: &mut R,
-        mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+        observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
     ) -> Rebound {
-        let (mut u, mut w) = (u_in, omega_in);
-        let mut cur = *inc;
-        let mut candidates = 0u32;
-        let mut first = SeenWall::FLAT;
-        for tries in 1..=MAX_TRIES {
-            let (xi, zeta) = table.draw(&cur, rng);
-            let seen = SeenWall::of_xi_zeta(xi, zeta, cur.sin_cos_beta);
-            let un = u.dot(&seen.normal);
-            // Every element of the table mirrors its history's particle off the wall; a drawn
-            // one that does not (its two angles come from different histories of a rank bin,
-            // or from blended cells) is no element of the wall: drawn again.
-            if un >= 0.0 || u.y - 2.0 * un * seen.normal.y <= 0.0 {
-                continue;
-            }
-            candidates += 1;
-            if candidates == 1 {
-                first = seen;
-            }
-            observe(&u, &seen.normal, true);
-            let (u_out, w_out) = contact.law.collide(u, w, seen.normal, contact.diameter_m);
-            if u_out.y > 0.0 {
-                return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
-            }
-            // A law that is not elastic may keep the particle on the wall: it meets the wall
-            // again with its rebound velocity.
-            (u, w) = (u_out, w_out);
-            let (alpha, beta) = incident_angles(&u);
-            cur = table.incidence(alpha.min(-1e-12), beta);
-        }
-        guard_rebound(
-            u,
-            w,
-            contact.law,
-            contact.diameter_m,
-            candidates,
-            first,
-            observe,
-        )
+        rebound_off_table(table, inc, u_in, omega_in, contact, rng, observe)
     }
+}
+
+/// One rebound of the measured-wall model off `table` (borrowed: for a caller that holds a
+/// table it has not interned), for a particle moving towards the wall whose direction falls
+/// at `inc` ([`MeasuredWallTable::incidence`]): the body of
+/// [`RoughWallModel::rebound_drawn`] for [`MeasuredWall`].
+pub fn rebound_off_table<R: Rng + ?Sized>(
+    table: &MeasuredWallTable,
+    inc: &MeasuredWallIncidence,
+    u_in: Vector3<f64>,
+    omega_in: Vector3<f64>,
+    contact: &Contact,
+    rng: &mut R,
+    mut observe: impl FnMut(&Vector3<f64>, &Vector3<f64>, bool),
+) -> Rebound {
+    let (mut u, mut w) = (u_in, omega_in);
+    let mut cur = *inc;
+    let mut candidates = 0u32;
+    let mut first = SeenWall::FLAT;
+    for tries in 1..=MAX_TRIES {
+        let (xi, zeta) = table.draw(&cur, rng);
+        let seen = SeenWall::of_xi_zeta(xi, zeta, cur.sin_cos_beta);
+        let un = u.dot(&seen.normal);
+        // Every element of the table mirrors its history's particle off the wall; a drawn
+        // one that does not (its two angles come from different histories of a rank bin,
+        // or from blended cells) is no element of the wall: drawn again.
+        if un >= 0.0 || u.y - 2.0 * un * seen.normal.y <= 0.0 {
+            continue;
+        }
+        candidates += 1;
+        if candidates == 1 {
+            first = seen;
+        }
+        observe(&u, &seen.normal, true);
+        let (u_out, w_out) = contact.law.collide(u, w, seen.normal, contact.diameter_m);
+        if u_out.y > 0.0 {
+            return Rebound::off(&seen, u_out, w_out, tries, candidates, first);
+        }
+        // A law that is not elastic may keep the particle on the wall: it meets the wall
+        // again with its rebound velocity.
+        (u, w) = (u_out, w_out);
+        let (alpha, beta) = incident_angles(&u);
+        cur = table.incidence(alpha.min(-1e-12), beta);
+    }
+    guard_rebound(
+        u,
+        w,
+        contact.law,
+        contact.diameter_m,
+        candidates,
+        first,
+        observe,
+    )
 }
 
 impl NamedModel for MeasuredWall {

@@ -54,7 +54,7 @@ pub use calibrated::Calibrated;
 pub use gaussian_angle::{GaussianAngle, GaussianAngleWall};
 pub use gaussian_tilt::{GaussianTilt, GaussianTiltWall};
 pub use isotropic::{Isotropic, IsotropicDraw, IsotropicIncidence};
-pub use measured_wall::MeasuredWall;
+pub use measured_wall::{rebound_off_table, MeasuredWall};
 pub use normal_perturbation::{NormalPerturbation, NormalPerturbationWall};
 pub use params::{refuse_delta_gamma, refuse_escape_table, refuse_wall_table};
 pub use radenkovic_simonin_2021::RadenkovicSimonin2021;

@@ -21,7 +21,7 @@ pub use condition::{
     BlockRecord, Counters, RealisationCounts, TallyParts, TallyPartsMut, LOST_REASONS, NM,
 };
 pub use condition::{BlockTally, ConditionTally, ErosionOutcome, ModelKind, Outcome, TallySpec};
-pub use distance::{distances, BinnedPdf};
+pub use distance::{distances, ks_samples, BinnedPdf};
 pub use engine::{run, ConditionStats, Progress, Silent};
 pub use engine::{Plan, Shard, BLOCK_SIZE};
 pub use histogram::Bin;

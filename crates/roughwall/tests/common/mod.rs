@@ -18,24 +18,9 @@ pub fn shipped_case(rel: &str) -> PathBuf {
     p
 }
 
-/// Two-sample Kolmogorov–Smirnov distance.
+/// Two-sample Kolmogorov–Smirnov distance (the library's, on copies).
 pub fn ks(a: &[f64], b: &[f64]) -> f64 {
-    let mut a = a.to_vec();
-    let mut b = b.to_vec();
-    a.sort_by(f64::total_cmp);
-    b.sort_by(f64::total_cmp);
-    let (mut i, mut j, mut d) = (0, 0, 0.0f64);
-    while i < a.len() && j < b.len() {
-        let x = a[i].min(b[j]);
-        while i < a.len() && a[i] <= x {
-            i += 1;
-        }
-        while j < b.len() && b[j] <= x {
-            j += 1;
-        }
-        d = d.max((i as f64 / a.len() as f64 - j as f64 / b.len() as f64).abs());
-    }
-    d
+    roughwall::tally::ks_samples(&mut a.to_vec(), &mut b.to_vec())
 }
 
 /// KS distance two independent samples of these sizes exceed with probability 0.001.

@@ -218,7 +218,17 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         file: &file,
         format: &format,
     };
-    let mut notes = notes(&c);
+    let t_cost = Instant::now();
+    let triangulation = crate::case::deterministic::triangulation(&ctx.case)?;
+    let cost = roughwall::gaussian_cost::of_scan(&c, triangulation)?;
+    ctx.manifest.set_run(
+        "gaussian_cost_s",
+        toml::Value::Float(round_ms(t_cost.elapsed().as_secs_f64())),
+    );
+    if let Some(cost) = &cost {
+        ctx.manifest.set("gaussian_cost", gaussian_cost_table(cost));
+    }
+    let mut notes = notes(&c, cost.as_ref());
     // The point particle's criteria are [wall]'s notes; a sphere's are its row's (and warnings).
     let (point, spheres) = seen
         .split_first()
@@ -238,7 +248,6 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
             } else {
                 &file
             };
-            let triangulation = crate::case::deterministic::triangulation(&ctx.case)?;
             let tables = build_tables(
                 &c,
                 name,
@@ -353,4 +362,33 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
 fn round_to(x: f64, digits: i32) -> f64 {
     let p = 10f64.powi(digits);
     (x * p).round() / p
+}
+
+/// `run.toml`'s `[gaussian_cost]`: the scan check's numbers (docs/models.md, "What a
+/// non-Gaussian wall does to rebounds"), written whether or not a note quotes them.
+fn gaussian_cost_table(cost: &roughwall::gaussian_cost::GaussianCost) -> toml::Value {
+    let pair = |(a, b): (f64, f64)| toml::Value::Array(vec![a.into(), b.into()]);
+    let mut t = toml::Table::new();
+    t.insert("ks".into(), cost.ks.into());
+    t.insert("ks_at_deg".into(), pair(cost.ks_at));
+    t.insert("bias_deg".into(), cost.bias_deg.into());
+    t.insert("bias_at_deg".into(), pair(cost.bias_at));
+    t.insert(
+        "unserved_deg".into(),
+        toml::Value::Array(cost.unserved.iter().map(|&d| pair(d)).collect()),
+    );
+    if let Some((ks, bias)) = cost.control {
+        t.insert("control_ks".into(), ks.into());
+        t.insert("control_bias_deg".into(), bias.into());
+    }
+    t.insert(
+        "ks_noise".into(),
+        roughwall::gaussian_cost::ks_noise().into(),
+    );
+    t.insert(
+        "histories_per_direction".into(),
+        (roughwall::gaussian_cost::HISTORIES as i64).into(),
+    );
+    t.insert("significant".into(), cost.significant().into());
+    toml::Value::Table(t)
 }

@@ -37,21 +37,8 @@ pub struct VersusPaper {
     pub bias_at: (f64, f64),
 }
 
-/// The incident directions `(α⁻, β⁻)` (degrees) of [`VersusPaper`].
-pub const VERSUS_DIRECTIONS: [(f64, f64); 12] = [
-    (-5.0, 0.0),
-    (-5.0, 45.0),
-    (-5.0, 90.0),
-    (-5.0, -90.0),
-    (-15.0, 0.0),
-    (-15.0, 45.0),
-    (-15.0, 90.0),
-    (-15.0, -90.0),
-    (-35.0, 0.0),
-    (-35.0, 45.0),
-    (-35.0, 90.0),
-    (-35.0, -90.0),
-];
+/// The incident directions `(α⁻, β⁻)` (degrees) of [`VersusPaper`]: the scan check's.
+pub use roughwall::gaussian_cost::DIRECTIONS as VERSUS_DIRECTIONS;
 
 /// Rebounds of each model per direction of [`VersusPaper`]: the KS distance of two such
 /// samples is then about `0.87 √(2/n)` ≈ 0.009 by chance, far below the misses it reports

@@ -328,7 +328,7 @@ mod tests {
             file: "dir/a \"b\".x3p",
             format: "x3p",
         };
-        let notes = notes(&c);
+        let notes = notes(&c, None);
         // Steep, far from Gaussian (a sinusoid), small.
         assert!(notes.iter().any(|n| n.contains("beyond 20°")), "{notes:?}");
         assert!(

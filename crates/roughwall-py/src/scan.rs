@@ -214,7 +214,9 @@ fn card<'py>(
     out.set_item("correlation", corr)?;
     // The card's notes: the wall's and the point particle's, as `rebound scan` writes them;
     // a sphere's are in its row.
-    let mut card_notes = notes(&c);
+    let cost = roughwall::gaussian_cost::of_scan(&c, roughwall::Triangulation::default())
+        .map_err(to_py)?;
+    let mut card_notes = notes(&c, cost.as_ref());
     let rows = PyList::empty(py);
     for s in seen {
         rows.append(diameter_row(py, s, &c.levelled)?)?;

@@ -164,6 +164,7 @@ pub mod error;
 pub mod ffi;
 pub mod force;
 pub mod format;
+pub mod gaussian_cost;
 pub mod incidence;
 pub mod measured_wall;
 pub mod memory;

@@ -29,6 +29,9 @@ pub mod domain {
     pub const SURFACE_REALISATION: u64 = 7;
     /// Histories of a measured-wall table (indices: grid cell, particle).
     pub const MEASURED_WALL: u64 = 8;
+    /// The scan check of the Gaussian models against the in-place reference (indices:
+    /// direction, history).
+    pub const GAUSSIAN_COST: u64 = 9;
 }
 
 /// SplitMix64 finaliser: a bijective 64-bit mixer.

@@ -9,6 +9,7 @@ use super::lay::Lay;
 use super::resolution::{SeenBy, MAX_RESOLUTION_CHANGE, MIN_CORRELATION_AREAS, MIN_EXACT_FRACTION};
 use super::{Characterisation, ScanField};
 use crate::format::fmt_num;
+use crate::gaussian_cost::GaussianCost;
 use crate::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 
 /// Below this spread (rad) an angle is constant: its shape (skewness, kurtosis, correlation)
@@ -36,9 +37,13 @@ pub fn spread(l: &Lay) -> [bool; 2] {
 }
 
 /// The notes of the wall card (and the run's warnings): where the wall is outside what the
-/// models assume, or the scan too small or too holed to trust.
-pub fn notes(c: &Characterisation) -> Vec<String> {
+/// models assume, or the scan too small or too holed to trust. `cost` is what the Gaussian
+/// assumption costs on this scan ([`crate::gaussian_cost`]; `None`: not measured, the scan
+/// serving none of its directions): a note on slopes far from Gaussian says it, and where the
+/// slopes look Gaussian but the paper's model still misses the scan, that is a note of its own.
+pub fn notes(c: &Characterisation, cost: Option<&GaussianCost>) -> Vec<String> {
     let mut out = Vec::new();
+    let mut shape_noted = false;
     match &c.lay {
         None => out.push(
             "no cell of the scan has four valid corners: no lay and no deviations ([wall] and [lay] are left out)"
@@ -62,6 +67,7 @@ pub fn notes(c: &Characterisation) -> Vec<String> {
                     ));
                 }
             }
+            let mut shapes = Vec::new();
             for (k, (angle, where_)) in [("ξ'", "along the lay"), ("ζ'", "across the lay")]
                 .into_iter()
                 .enumerate()
@@ -78,11 +84,19 @@ pub fn notes(c: &Characterisation) -> Vec<String> {
                     far.push(format!("kurtosis {ku:.2} (|kurtosis − 3| > {MAX_EXCESS_KURTOSIS})"));
                 }
                 if !far.is_empty() {
-                    out.push(format!(
-                        "slopes far from Gaussian: {angle} ({where_}) has {}; Gaussian slopes have 0 and 3, and the models assume them",
-                        far.join(" and ")
-                    ));
+                    shapes.push(format!("{angle} ({where_}) has {}", far.join(" and ")));
                 }
+            }
+            if !shapes.is_empty() {
+                let effect = match cost {
+                    Some(cost) => cost.phrase(),
+                    None => "what this does to rebounds is not measured: the scan is too small for the in-place reference's directions".to_string(),
+                };
+                out.push(format!(
+                    "slopes far from Gaussian: {}; Gaussian slopes have 0 and 3, and the models assume them: {effect}",
+                    shapes.join("; ")
+                ));
+                shape_noted = true;
             }
             if let Some(u) = super::lay_uncertainty::lay_uncertainty(&c.levelled, l.angle) {
                 if !u.significant() && spread(l).iter().any(|&s| s) {
@@ -98,6 +112,12 @@ pub fn notes(c: &Characterisation) -> Vec<String> {
                 }
             }
         }
+    }
+    if let Some(cost) = cost.filter(|c| !shape_noted && c.significant()) {
+        out.push(format!(
+            "the Gaussian models miss this wall by more than the check's noise, although its slopes' skewness and kurtosis look Gaussian: {}",
+            cost.phrase()
+        ));
     }
     let missing = missing_fraction(c);
     if missing > MAX_MISSING_FRACTION {

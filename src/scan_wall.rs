@@ -24,6 +24,14 @@ fn is_height_file(path: &Path) -> bool {
         .is_ok_and(|_| magic == MAGIC)
 }
 
+/// Whether `path` is a measured scan that the run walks in place (not a height file of
+/// `rebound surface --heights`, and `[deterministic] scan_wall` not `"mirrored"`): its
+/// tallies then take the scan's sub-patches as clusters
+/// ([`roughwall::deterministic::SUB_PATCHES`]).
+pub fn walks_in_place(path: &Path, opt: &DeterministicOptions) -> bool {
+    path.is_file() && !is_height_file(path) && opt.scan_reference == ScanReference::InPlace
+}
+
 /// A measured scan made the run's wall.
 pub struct ScanWall {
     /// The wall the tracker walks (a patch in place, or the periodic mirrored wall).

@@ -566,6 +566,17 @@ fn a_measured_scan_is_a_wall_to_bounce_on() {
     assert!((met / card - 1.0).abs() < 0.02, "{met} vs {card}");
     let summary = Csv::read(&out.join("summary.csv"));
     assert_eq!(summary.records().count(), 1);
+    // A scan is one realisation: the error of mean α⁺ takes its 16 sub-patches as clusters,
+    // and the spread between them (along its lay x3p-2 spans fewer than 4 c_L) exceeds what
+    // the histories alone show.
+    let per_history_ratio = |out: &Path| {
+        let t = Csv::read(&out.join("summary.csv"));
+        let r = t.row(0);
+        let (se, sd) = (r.num("se_mean_alpha_out_deg"), r.num("std_alpha_out_deg"));
+        se / (sd / r.num("particles").sqrt())
+    };
+    let ratio = per_history_ratio(&out);
+    assert!(ratio > 1.5, "in place: se / (std/√n) = {ratio}");
     // The earlier reference, on request (its case beside, not over, the first).
     let mirrored_dir = dir.join("mirrored");
     std::fs::create_dir(&mirrored_dir).unwrap();
@@ -589,6 +600,12 @@ fn a_measured_scan_is_a_wall_to_bounce_on() {
     );
     let scan = scan_table(&out_m);
     assert_eq!(scan["reference"].as_str(), Some("mirrored"));
+    // A periodic wall of one surface: the histories' own error.
+    let ratio = per_history_ratio(&out_m);
+    assert!(
+        (ratio - 1.0).abs() < 0.01,
+        "mirrored: se / (std/√n) = {ratio}"
+    );
     let fraction = scan["rectangle_area_fraction"].as_float().unwrap();
     assert!(fraction > 0.5 && fraction <= 1.0, "{scan:?}");
     // A scan with missing points inside: its largest complete rectangle (sur-2 has 117).

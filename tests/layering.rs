@@ -156,8 +156,9 @@ const LIBRARY_LAYERS: [&[&str]; 7] = [
     &["deterministic", "stochastic"],
     // The calibrated model and the measured-wall tables, counted on deterministic runs.
     &["calibrated", "measured_wall"],
-    // Every rough-wall model and the dispatch between them.
-    &["models"],
+    // Every rough-wall model and the dispatch between them; the scan check that sets the
+    // paper's model against a scan's in-place reference.
+    &["models", "gaussian_cost"],
     // A CFD code's wall.
     &["wall_model"],
     // The C library.

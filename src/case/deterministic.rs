@@ -267,12 +267,19 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
         wall: dev,
         psi: scene.psi,
     };
+    // A scan in place is one realisation: its sub-patches are the clusters of its errors.
+    let clusters = match surface_file {
+        Some(path) if crate::scan_wall::walks_in_place(path, &options) => {
+            roughwall::deterministic::SUB_PATCHES
+        }
+        _ => options.surfaces,
+    };
     let specs = scene
         .conditions
         .iter()
         .map(|c| {
             tally_spec(&dev, *c, scene.bin_width_deg, setup.erosion.as_ref())
-                .with_realisations(options.surfaces)
+                .with_realisations(clusters)
         })
         .collect();
     Ok(Prepared {

@@ -228,7 +228,7 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
     if let Some(cost) = &cost {
         ctx.manifest.set("gaussian_cost", gaussian_cost_table(cost));
     }
-    let mut notes = notes(&c, cost.as_ref());
+    let mut notes = notes(&c, cost.as_ref().map(|c| c.effect()).as_ref());
     // The point particle's criteria are [wall]'s notes; a sphere's are its row's (and warnings).
     let (point, spheres) = seen
         .split_first()

@@ -131,7 +131,7 @@ pub fn target_warnings(
             // Over several surfaces the error has a floor that particles cannot lower.
             let surfaces = match t.spec.realisations {
                 n if n > 1 => format!(
-                    "; over {n} surfaces the error includes their spread, which only more `[deterministic] surfaces` lowers"
+                    "; over {n} surfaces (or a scan's {n} sub-patches) the error includes their spread, which only more `[deterministic] surfaces` (or a larger scan) lowers"
                 ),
                 _ => String::new(),
             };

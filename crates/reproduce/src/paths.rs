@@ -188,6 +188,16 @@ pub const STUDY_ON_SCAN: &str = "on-scan";
 pub const STUDY_ON_SCAN_MIRRORED: &str = "on-scan-mirrored";
 /// Measured walls: `deterministic` on Gaussian (Garcia–Stoll) walls of given deviations.
 pub const STUDY_GAUSSIAN: &str = "gaussian";
+/// Measured walls: the noise floor of a "miss" (issue 39, part 3): one Gaussian wall with
+/// the scan's size, pixel and card deviations ([`STUDY_CONTROL_ONE`]) against an ensemble of
+/// [`STUDY_CONTROL_SURFACES`] such walls ([`STUDY_CONTROL_ENSEMBLE`]), and their comparison.
+pub const STUDY_CONTROL: &str = "control";
+/// Measured walls: the control's one wall.
+pub const STUDY_CONTROL_ONE: &str = "one";
+/// Measured walls: the control's ensemble.
+pub const STUDY_CONTROL_ENSEMBLE: &str = "ensemble";
+/// Measured walls: the walls of the control's ensemble (full mode).
+pub const STUDY_CONTROL_SURFACES: &str = "64";
 /// Measured walls: the runs with the wall card's deviations.
 pub const STUDY_WITH_CARD: &str = "card";
 /// Measured walls: the runs with the deviations of the mirror-tiled wall (what the particles
@@ -236,7 +246,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 71] = [
+pub const SHELL: [(&str, &[&str]); 75] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -299,6 +309,10 @@ pub const SHELL: [(&str, &[&str]); 71] = [
     ("STUDY_ON_SCAN", &[STUDY_ON_SCAN]),
     ("STUDY_ON_SCAN_MIRRORED", &[STUDY_ON_SCAN_MIRRORED]),
     ("STUDY_GAUSSIAN", &[STUDY_GAUSSIAN]),
+    ("STUDY_CONTROL", &[STUDY_CONTROL]),
+    ("STUDY_CONTROL_ONE", &[STUDY_CONTROL_ONE]),
+    ("STUDY_CONTROL_ENSEMBLE", &[STUDY_CONTROL_ENSEMBLE]),
+    ("STUDY_CONTROL_SURFACES", &[STUDY_CONTROL_SURFACES]),
     ("STUDY_WITH_CARD", &[STUDY_WITH_CARD]),
     ("STUDY_WITH_TILED", &[STUDY_WITH_TILED]),
     ("MEASURED_WALL_MODEL", &[MEASURED_WALL_MODEL]),

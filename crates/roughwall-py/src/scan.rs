@@ -216,7 +216,7 @@ fn card<'py>(
     // a sphere's are in its row.
     let cost = roughwall::gaussian_cost::of_scan(&c, roughwall::Triangulation::default())
         .map_err(to_py)?;
-    let mut card_notes = notes(&c, cost.as_ref());
+    let mut card_notes = notes(&c, cost.as_ref().map(|c| c.effect()).as_ref());
     let rows = PyList::empty(py);
     for s in seen {
         rows.append(diameter_row(py, s, &c.levelled)?)?;

@@ -90,6 +90,14 @@ impl GaussianCost {
         self.ks > self.control.map_or(0.0, |c| c.0) + ks_noise()
     }
 
+    /// What the scan's notes quote ([`crate::scan::notes`]).
+    pub fn effect(&self) -> crate::scan::ShapeEffect {
+        crate::scan::ShapeEffect {
+            phrase: self.phrase(),
+            significant: self.significant(),
+        }
+    }
+
     /// What the paper's model misses this wall by, in words, for a card's note.
     pub fn phrase(&self) -> String {
         let unserved = match self.unserved.len() {

@@ -140,8 +140,35 @@ pub(crate) fn history_observed(
 ) -> History {
     let mut r = prefix.stream(i);
     // The same draws, in the same order, on a periodic wall and on a patch.
-    let (a, b) = (r.gen::<f64>(), r.gen::<f64>());
+    let (mut a, mut b) = (r.gen::<f64>(), r.gen::<f64>());
+    if tracker.patch().is_some() {
+        (a, b) = in_sub_patch(i, (a, b));
+    }
     history_entered(tracker, setup, cond, (a, b), &mut r, observe)
+}
+
+/// Sub-patches of a measured patch's entry region, per side: a scan is one realisation, and
+/// the spread between its parts is what its reference's standard error must include (issue
+/// 39, part 3), as that between surfaces does for `surfaces = N`. The lay's uncertainty is
+/// measured on as many ([`crate::scan::PATCHES_PER_SIDE`]).
+pub const SUB_PATCHES_PER_SIDE: u64 = crate::scan::PATCHES_PER_SIDE as u64;
+
+/// The clusters of an in-place run: its sub-patches ([`SUB_PATCHES_PER_SIDE`]²), taken as the
+/// tally's realisations ([`crate::tally::realisation_of`]: history `i` in sub-patch `i mod 16`).
+pub const SUB_PATCHES: u32 = (SUB_PATCHES_PER_SIDE * SUB_PATCHES_PER_SIDE) as u32;
+
+/// History `i`'s uniform entry numbers `(a, b)` moved into its sub-patch `i mod 16` of the
+/// entry region (row-major along `a`): uniform over that sub-patch, and the 16 together
+/// uniform over the region.
+#[inline]
+fn in_sub_patch(i: u64, (a, b): (f64, f64)) -> (f64, f64) {
+    let k = i % SUB_PATCHES as u64;
+    let side = SUB_PATCHES_PER_SIDE as f64;
+    let (kx, kz) = (
+        (k % SUB_PATCHES_PER_SIDE) as f64,
+        (k / SUB_PATCHES_PER_SIDE) as f64,
+    );
+    ((kx + a) / side, (kz + b) / side)
 }
 
 /// The history that enters at the uniform numbers `(a, b)` in `[0, 1)²` (over the period of
@@ -499,5 +526,35 @@ impl ConditionRun {
                 .to_vec(),
             r.pdf(Quantity::PSingleModel).unwrap_or_default().to_vec(),
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_history_enters_its_own_sub_patch_and_together_they_cover_the_region() {
+        let side = SUB_PATCHES_PER_SIDE as f64;
+        let mut counts = [0u32; SUB_PATCHES as usize];
+        for i in 0..SUB_PATCHES as u64 * 64 {
+            // Corners and middle of the unit square: each lands inside sub-patch `i mod 16`.
+            for (a, b) in [(0.0, 0.0), (0.5, 0.5), (0.999_999, 0.999_999)] {
+                let (x, z) = in_sub_patch(i, (a, b));
+                let k = (i % SUB_PATCHES as u64) as usize;
+                let (kx, kz) = ((x * side).floor() as usize, (z * side).floor() as usize);
+                assert_eq!(kz * SUB_PATCHES_PER_SIDE as usize + kx, k, "{i} {a} {b}");
+                assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&z));
+            }
+            counts[(i % SUB_PATCHES as u64) as usize] += 1;
+        }
+        // The tally's clusters are the sub-patches: history `i` is in realisation `i mod 16`.
+        for i in 0..100u64 {
+            assert_eq!(
+                crate::tally::condition::realisation_of(i, SUB_PATCHES) as u64,
+                i % SUB_PATCHES as u64
+            );
+        }
+        assert!(counts.iter().all(|&c| c == 64));
     }
 }

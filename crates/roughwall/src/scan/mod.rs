@@ -43,7 +43,7 @@ pub use correlation_map::{correlation_map, map_bytes, CorrelationMap};
 pub use lay::{angle_histograms, lay_angle, lay_at, Lay};
 pub use lay_uncertainty::{lay_uncertainty, LayUncertainty, ANISOTROPY_T, PATCHES_PER_SIDE};
 pub use levelling::{level, MAX_DEGREE};
-pub use notes::{criteria, labelled, missing_fraction, notes, reach_um, spread};
+pub use notes::{criteria, labelled, missing_fraction, notes, reach_um, spread, ShapeEffect};
 pub use parameters::{area_parameters, AreaParameters};
 pub use periodic::{mirrored_wall, MirroredWall};
 pub use resolution::{decimated, seen_by, Resolution, SeenBy, MAX_RESOLUTION_CHANGE};

@@ -9,7 +9,6 @@ use super::lay::Lay;
 use super::resolution::{SeenBy, MAX_RESOLUTION_CHANGE, MIN_CORRELATION_AREAS, MIN_EXACT_FRACTION};
 use super::{Characterisation, ScanField};
 use crate::format::fmt_num;
-use crate::gaussian_cost::GaussianCost;
 use crate::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 
 /// Below this spread (rad) an angle is constant: its shape (skewness, kurtosis, correlation)
@@ -36,12 +35,22 @@ pub fn spread(l: &Lay) -> [bool; 2] {
     [l.delta_xi > NO_SPREAD_RAD, l.delta_zeta > NO_SPREAD_RAD]
 }
 
+/// What the Gaussian assumption costs on a scan, as its notes quote it (measured by
+/// `crate::gaussian_cost`, which sits above the scan's modules).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShapeEffect {
+    /// In words: the paper's model against the scan and against a Gaussian control.
+    pub phrase: String,
+    /// Whether the scan is missed beyond the control and the check's noise.
+    pub significant: bool,
+}
+
 /// The notes of the wall card (and the run's warnings): where the wall is outside what the
 /// models assume, or the scan too small or too holed to trust. `cost` is what the Gaussian
-/// assumption costs on this scan ([`crate::gaussian_cost`]; `None`: not measured, the scan
-/// serving none of its directions): a note on slopes far from Gaussian says it, and where the
-/// slopes look Gaussian but the paper's model still misses the scan, that is a note of its own.
-pub fn notes(c: &Characterisation, cost: Option<&GaussianCost>) -> Vec<String> {
+/// assumption costs on this scan (`None`: not measured, the scan serving none of the check's
+/// directions): a note on slopes far from Gaussian says it, and where the slopes look Gaussian
+/// but the paper's model still misses the scan, that is a note of its own.
+pub fn notes(c: &Characterisation, cost: Option<&ShapeEffect>) -> Vec<String> {
     let mut out = Vec::new();
     let mut shape_noted = false;
     match &c.lay {
@@ -89,7 +98,7 @@ pub fn notes(c: &Characterisation, cost: Option<&GaussianCost>) -> Vec<String> {
             }
             if !shapes.is_empty() {
                 let effect = match cost {
-                    Some(cost) => cost.phrase(),
+                    Some(cost) => cost.phrase.clone(),
                     None => "what this does to rebounds is not measured: the scan is too small for the in-place reference's directions".to_string(),
                 };
                 out.push(format!(
@@ -113,10 +122,10 @@ pub fn notes(c: &Characterisation, cost: Option<&GaussianCost>) -> Vec<String> {
             }
         }
     }
-    if let Some(cost) = cost.filter(|c| !shape_noted && c.significant()) {
+    if let Some(cost) = cost.filter(|c| !shape_noted && c.significant) {
         out.push(format!(
             "the Gaussian models miss this wall by more than the check's noise, although its slopes' skewness and kurtosis look Gaussian: {}",
-            cost.phrase()
+            cost.phrase
         ));
     }
     let missing = missing_fraction(c);

@@ -5,7 +5,8 @@
 # `deterministic` bounces on the scan itself in place (the reference) twice, with two seeds (the
 # noise floor: what two independent references differ by); and the measured-wall model, the
 # paper's model and the calibrated model, the last two with the card's deviations for that
-# particle, run at incident directions between the table's grid points
+# particle, and `deterministic` on 16 Gaussian walls with those deviations, run at incident
+# directions between the table's grid points
 # (configs/scans/own-model.toml). Every run is compared with the first reference. Writes
 # $REBOUND_RESULTS/measured-wall-model/; `rebound report` turns it into a REPORT.md section.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -15,6 +16,7 @@ mkdir -p "$M/cases"
 N=$(particles 200000 2000)
 # The tables' histories per incident direction: the default, or the least in quick mode.
 HISTORIES=$([ "$QUICK" = 1 ] && echo 1024 || echo 17711)
+GAUSS_SURFACES=$(particles 16 2)
 
 # card_value CARD D KEY: KEY of the card's [wall] (D = 0) or of its [[diameter]] row of D µm.
 card_value() {
@@ -79,6 +81,14 @@ for entry in $P_MODEL_SCANS; do
     run deterministic --case "$cd_" --surface "configs/scans/$file" --particles "$N" --seed 2022 \
       --out "$p/$P_MODEL_REFERENCE_2/$P_DETERMINISTIC"
     run compare --a "$ref" --b "$p/$P_MODEL_REFERENCE_2/$P_DETERMINISTIC" --out "$p/$P_MODEL_FLOOR/$P_COMPARE"
+    # Gaussian walls with this particle's card deviations (a point particle on them: the
+    # deviations are those the particle sees), against the reference.
+    cg="$M/cases/$s-d$d-$P_MODEL_GAUSSIAN.toml"
+    { sed "s/^name = .*/name = \"$s-d$d-$P_MODEL_GAUSSIAN\"/" "$DIRECTIONS"
+      printf '\n[wall]\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n\n[deterministic]\nsurfaces = %s\n' \
+        "$xi" "$ze" "$GAUSS_SURFACES"; } > "$cg"
+    run deterministic --case "$cg" --particles "$N" --out "$p/$P_MODEL_GAUSSIAN/$P_DETERMINISTIC"
+    run compare --a "$ref" --b "$p/$P_MODEL_GAUSSIAN/$P_DETERMINISTIC" --out "$p/$P_MODEL_GAUSSIAN/$P_COMPARE"
     for v in $P_MODEL_MODELS; do
       st="model = \"$v\"\n"
       if [ "$v" = measured-wall ]; then

@@ -8,29 +8,11 @@ use crate::case::deterministic::DeterministicOptions;
 use roughwall::deterministic::{in_place_wall, surface_from_field, BuiltSurface, ScanReference};
 use roughwall::deterministic::{LEFT_PATCH_BOUND, MARGIN_FLIGHTS};
 use roughwall::scan::{characterise, mirrored_wall};
-use roughwall::surface::MAGIC;
+use roughwall::surface::is_height_file;
 use roughwall::ScanField;
 use roughwall::Warning;
 use roughwall::{Error, Result};
-use std::io::Read;
 use std::path::Path;
-
-/// Whether `path` starts like a height file of `rebound surface --heights` (it is then read
-/// as one, with that reader's messages).
-fn is_height_file(path: &Path) -> bool {
-    let mut magic = [0u8; 4];
-    std::fs::File::open(path)
-        .and_then(|mut f| f.read_exact(&mut magic))
-        .is_ok_and(|_| magic == MAGIC)
-}
-
-/// Whether `path` is a measured scan that the run walks in place (not a height file of
-/// `rebound surface --heights`, and `[deterministic] scan_wall` not `"mirrored"`): its
-/// tallies then take the scan's sub-patches as clusters
-/// ([`roughwall::deterministic::SUB_PATCHES`]).
-pub fn walks_in_place(path: &Path, opt: &DeterministicOptions) -> bool {
-    path.is_file() && !is_height_file(path) && opt.scan_reference == ScanReference::InPlace
-}
 
 /// A measured scan made the run's wall.
 pub struct ScanWall {

@@ -269,9 +269,7 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
     };
     // A scan in place is one realisation: its sub-patches are the clusters of its errors.
     let clusters = match surface_file {
-        Some(path) if crate::scan_wall::walks_in_place(path, &options) => {
-            roughwall::deterministic::SUB_PATCHES
-        }
+        Some(path) if walks_in_place(path, &options) => roughwall::deterministic::SUB_PATCHES,
         _ => options.surfaces,
     };
     let specs = scene
@@ -291,6 +289,16 @@ pub fn prepare(case: &Case, o: &TallyOverrides, surface_file: Option<&Path>) -> 
         notes,
         warnings,
     })
+}
+
+/// Whether `path` is a measured scan that the run walks in place (not a height file of
+/// `rebound surface --heights`, and `[deterministic] scan_wall` not `"mirrored"`): its
+/// tallies then take the scan's sub-patches as clusters
+/// ([`roughwall::deterministic::SUB_PATCHES`]).
+fn walks_in_place(path: &std::path::Path, opt: &DeterministicOptions) -> bool {
+    path.is_file()
+        && !roughwall::surface::is_height_file(path)
+        && opt.scan_reference == roughwall::deterministic::ScanReference::InPlace
 }
 
 #[cfg(test)]

@@ -209,12 +209,12 @@ pub const MEASURED_WALL_MODEL: &str = "measured-wall-model";
 /// Its scans and particles, `scan:D:D…` (µm; 0 the point particle): each scan a shipped case
 /// `configs/scans/<scan>.toml`, each particle a directory `d<D>` under the scan's.
 pub const MODEL_SCANS: [&str; 6] = [
-    "x3p-2:0",
-    "opd-1:0",
+    "x3p-2:0:50",
+    "opd-1:0:50:500",
     "matrix-3:0",
-    "plu-1:0:100",
-    "metropro-1:0:100",
-    "sample-land:0:100",
+    "plu-1:0:50:100:500",
+    "metropro-1:0:50:100:500",
+    "sample-land:0:50:100",
 ];
 /// The wall's own model: `rebound scan --measured-wall` of a scan (its card and tables).
 pub const MODEL_CARD: &str = "card";
@@ -226,6 +226,9 @@ pub const MODEL_REFERENCE_2: &str = "reference-2";
 pub const MODEL_FLOOR: &str = "floor";
 /// The wall's own model: the stochastic models run against the reference, by directory.
 pub const MODEL_MODELS: [&str; 3] = ["measured-wall", "radenkovic-simonin-2021", "calibrated"];
+/// The wall's own model: `deterministic` on Gaussian walls with the particle's card deviations
+/// (16 surfaces, a point particle), against the reference.
+pub const MODEL_GAUSSIAN: &str = "gaussian";
 
 /// Finite size: the sphere diameters (µm), one run directory each.
 pub const FINITE_SIZE_DIAMETERS_UM: [&str; 4] = ["50", "100", "250", "500"];
@@ -246,7 +249,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 75] = [
+pub const SHELL: [(&str, &[&str]); 76] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -322,6 +325,7 @@ pub const SHELL: [(&str, &[&str]); 75] = [
     ("MODEL_REFERENCE_2", &[MODEL_REFERENCE_2]),
     ("MODEL_FLOOR", &[MODEL_FLOOR]),
     ("MODEL_MODELS", &MODEL_MODELS),
+    ("MODEL_GAUSSIAN", &[MODEL_GAUSSIAN]),
 ];
 
 /// The text of `scripts/paths.sh`: one `P_<NAME>=<value>` line per entry of [`SHELL`].

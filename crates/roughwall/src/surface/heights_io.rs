@@ -26,6 +26,15 @@ use std::path::Path;
 pub const MAGIC: [u8; 4] = *b"RBHF";
 /// Current format version.
 pub const VERSION: u32 = 1;
+
+/// Whether `path` starts like a height file of `rebound surface --heights` (its [`MAGIC`]):
+/// what tells such a file from a measured scan.
+pub fn is_height_file(path: &Path) -> bool {
+    let mut magic = [0u8; 4];
+    std::fs::File::open(path)
+        .and_then(|mut f| f.read_exact(&mut magic))
+        .is_ok_and(|_| magic == MAGIC)
+}
 /// Header length in bytes.
 pub const HEADER_LEN: usize = 40;
 

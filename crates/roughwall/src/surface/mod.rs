@@ -13,7 +13,7 @@ pub use dilation::{
 pub use generate::generate;
 pub use generate::generation_bytes;
 pub use height_field::{HeightField, Triangulation};
-pub use heights_io::{read_heights, write_heights, MAGIC};
+pub use heights_io::{is_height_file, read_heights, write_heights, MAGIC};
 pub use normal_angles::expected_deviations;
 pub use spec::SurfaceSpec;
 pub use stats::{

@@ -393,9 +393,9 @@ mod tests {
 
     #[test]
     fn a_scan_too_small_for_grazing_incidence_is_not_compared_there() {
-        // 32 × 32 µm of 15° grooves 2.1 µm deep: a −5° flight crosses their height range in
-        // 24 µm, and its rebound leaves the scan.
-        let c = grooves(32, 15.0);
+        // 96 × 96 µm of 15° grooves 2.1 µm deep: at −5° the entry margins (3 Δh cot α⁻ a
+        // side, as much again downstream: about 220 µm) do not fit on it; at −35° (27 µm) they do.
+        let c = grooves(96, 15.0);
         let cost = of_scan(&c, Triangulation::default()).unwrap().unwrap();
         assert!(cost.unserved.iter().any(|d| d.0 == -5.0), "{cost:?}");
         assert!(cost.unserved.iter().all(|d| d.0 != -35.0), "{cost:?}");

@@ -144,16 +144,8 @@ pub fn gaussian_cost(
     let window = central_window(levelled, MAX_CHECK_NODES);
     let levelled = window.as_ref();
     let wall = in_place_wall(levelled, lay.angle, None, triangulation)?;
-    let tracker = Tracker::in_place(
-        &wall.field,
-        crate::deterministic::DEFAULT_MAX_COLLISIONS,
-        lay.angle,
-    )?;
-    let own = wall.deviations.as_ref().unwrap_or(lay);
-    let deviations = Deviations {
-        delta_xi: own.delta_xi,
-        delta_zeta: own.delta_zeta,
-    };
+    let tracker = wall.tracker()?;
+    let deviations = wall.met_deviations(lay);
     let per_direction: Vec<Option<(f64, f64)>> = (0..DIRECTIONS.len())
         .into_par_iter()
         .map(|k| compare(&tracker, &deviations, k))

@@ -76,6 +76,23 @@ pub struct InPlaceWall {
     pub deviations: Option<crate::scan::Lay>,
 }
 
+impl InPlaceWall {
+    /// The tracker that walks this wall in place, its incident directions turned by the lay.
+    pub fn tracker(&self) -> Result<super::Tracker<'_>> {
+        super::Tracker::in_place(&self.field, super::DEFAULT_MAX_COLLISIONS, self.lay_angle)
+    }
+
+    /// The deviations the particles meet: this wall's own, or `lay`'s (the whole scan's)
+    /// where it has none.
+    pub fn met_deviations(&self, lay: &crate::scan::Lay) -> crate::wall::Deviations {
+        let own = self.deviations.as_ref().unwrap_or(lay);
+        crate::wall::Deviations {
+            delta_xi: own.delta_xi,
+            delta_zeta: own.delta_zeta,
+        }
+    }
+}
+
 /// Side of the coarse tile map of the tracker, in cells: a crop to a multiple of it keeps
 /// the map (`deterministic::trace`).
 const TILE_MULTIPLE: usize = 8;

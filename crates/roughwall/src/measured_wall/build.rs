@@ -134,17 +134,13 @@ pub fn scan_table(
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<MeasuredWallTable> {
     let wall = crate::deterministic::in_place_wall(levelled, lay.angle, diameter_m, triangulation)?;
-    let tracker = Tracker::in_place(
-        &wall.field,
-        crate::deterministic::DEFAULT_MAX_COLLISIONS,
-        lay.angle,
-    )?;
-    let own = wall.deviations.as_ref().unwrap_or(lay);
-    let deviations = Deviations {
-        delta_xi: own.delta_xi,
-        delta_zeta: own.delta_zeta,
-    };
-    build_table(&tracker, deviations, source, opts, progress)
+    build_table(
+        &wall.tracker()?,
+        wall.met_deviations(lay),
+        source,
+        opts,
+        progress,
+    )
 }
 
 /// One cell's law: its histories in order (a cell is one task, so the thread count does not

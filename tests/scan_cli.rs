@@ -903,3 +903,102 @@ fn the_card_names_the_walls_own_model_and_stochastic_takes_it() {
     ])
     .refused("measured_wall_table");
 }
+
+/// The wall's own model against its goal on small real scans (issue 39, "Done when"), the
+/// study's comparison (scripts/measured-wall-model.sh) at one seed: `scan --measured-wall`
+/// with the default histories a cell; the in-place reference on the scan itself; the model
+/// from `stochastic --wall-card`, at incident directions between the table's grid points
+/// (configs/scans/own-model.toml); each with 2 × 10⁵ particles. Goal: KS of α⁺ ≤ 0.01 and
+/// |bias of mean α⁺| ≤ 0.05°. The paper's model, given the same card, misses the first scan
+/// by more than ten times the goal's KS: the comparison tells them apart.
+#[test]
+fn on_small_real_scans_the_walls_own_model_meets_its_goal() {
+    let dir = tempfile::tempdir().unwrap();
+    let directions = read_shipped_case("scans/own-model.toml");
+    assert!(directions.contains("[particles]\ncount = 200000\n"));
+    // (scan, the particle's diameter in µm; 0 the point particle)
+    for (scan, diameter) in [("metropro-1.dat", 0.0), ("opd-1.opd", 50.0)] {
+        let tag = format!("{scan}-{diameter}");
+        let out = dir.path().join(format!("card-{tag}"));
+        let mut args = vec!["scan", "--scan"];
+        let file = real_scan(scan);
+        args.push(file.to_str().unwrap());
+        let d = format!("{diameter}");
+        if diameter > 0.0 {
+            args.extend(["--diameter-um", &d]);
+        }
+        args.extend(["--measured-wall", "--out", out.to_str().unwrap()]);
+        rebound(&args).ok();
+        let card_file = out.join("wall_card.toml");
+        let particles = if diameter > 0.0 {
+            format!("[particles]\ncount = 200000\ndiameter_um = {diameter}\n")
+        } else {
+            "[particles]\ncount = 200000\n".to_string()
+        };
+        let base = directions.replace("[particles]\ncount = 200000\n", &particles);
+        let contact = if diameter > 0.0 {
+            "contact = \"sphere\"\n"
+        } else {
+            ""
+        };
+        let reference_case = write_case(
+            dir.path(),
+            &format!("ref-{tag}.toml"),
+            &format!("{base}\n[deterministic]\nscan_level_degree = 1\n{contact}"),
+        );
+        let reference = dir.path().join(format!("ref-{tag}"));
+        rebound(&[
+            "deterministic",
+            "--case",
+            reference_case.to_str().unwrap(),
+            "--surface",
+            file.to_str().unwrap(),
+            "--wall-card",
+            card_file.to_str().unwrap(),
+            "--out",
+            reference.to_str().unwrap(),
+        ])
+        .ok();
+        for model in ["measured-wall", "radenkovic-simonin-2021"] {
+            if model != "measured-wall" && diameter > 0.0 {
+                continue;
+            }
+            let case = write_case(
+                dir.path(),
+                &format!("{model}-{tag}.toml"),
+                &format!("{base}\n[stochastic]\nmodel = \"{model}\"\n"),
+            );
+            let run = run_case(
+                "stochastic",
+                &case,
+                &dir.path().join(format!("{model}-{tag}")),
+                &["--wall-card", card_file.to_str().unwrap()],
+            );
+            let cmp = dir.path().join(format!("cmp-{model}-{tag}"));
+            rebound(&[
+                "compare",
+                "--a",
+                reference.to_str().unwrap(),
+                "--b",
+                run.to_str().unwrap(),
+                "--out",
+                cmp.to_str().unwrap(),
+            ])
+            .ok();
+            let c = Csv::read(&cmp.join("comparison.csv"));
+            let rows: Vec<_> = c
+                .records()
+                .filter(|r| r["quantity"] == *"alpha_out")
+                .map(|r| (r.num("ks"), r.num("mean_b") - r.num("mean_a")))
+                .collect();
+            assert_eq!(rows.len(), 9, "{scan}: {model}");
+            let ks = rows.iter().map(|r| r.0).fold(0.0, f64::max);
+            let bias = rows.iter().map(|r| r.1.abs()).fold(0.0, f64::max);
+            if model == "measured-wall" {
+                assert!(ks <= 0.01 && bias <= 0.05, "{tag}: KS {ks}, bias {bias}°");
+            } else {
+                assert!(ks > 0.1, "{tag}: the paper's model: KS {ks}");
+            }
+        }
+    }
+}

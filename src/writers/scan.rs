@@ -7,7 +7,7 @@ use super::scan_diameters::card_tables;
 use crate::output::{fmt_num, fmt_opt, toml_float, toml_str, CsvTable};
 use roughwall::scan::Characterisation;
 use roughwall::scan::SeenBy;
-use roughwall::scan::{lay_uncertainty, missing_fraction, spread};
+use roughwall::scan::{missing_fraction, spread};
 
 /// The columns of `scan_summary.csv`.
 pub const SUMMARY_HEADER: [&str; 27] = [
@@ -182,7 +182,7 @@ pub fn wall_card(
     if let Some(l) = &c.lay {
         // A wall whose anisotropy the scan does not show beyond its noise is isotropic: no
         // lay, and both deviations the rms of the two.
-        let u = lay_uncertainty(f, l.angle);
+        let u = c.lay_uncertainty;
         let isotropic = u.is_some_and(|u| !u.significant());
         let (xi, zeta) = if isotropic {
             let rms = (0.5 * (l.delta_xi.powi(2) + l.delta_zeta.powi(2))).sqrt();

@@ -168,7 +168,7 @@ fn card<'py>(
         Some(l) => {
             // As `rebound scan`'s card: a wall whose anisotropy is not significant over the
             // sub-patches is isotropic, both deviations the rms of the two.
-            let u = roughwall::scan::lay_uncertainty(&c.levelled, l.angle);
+            let u = c.lay_uncertainty;
             let isotropic = u.is_some_and(|u| !u.significant());
             let rms = (0.5 * (l.delta_xi.powi(2) + l.delta_zeta.powi(2))).sqrt();
             let wall = PyDict::new(py);

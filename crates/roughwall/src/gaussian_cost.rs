@@ -311,9 +311,10 @@ fn compare(tracker: &Tracker<'_>, deviations: &Deviations, k: usize) -> Option<(
     Some((crate::tally::ks_samples(&mut model, &mut reference), bias))
 }
 
-/// [`gaussian_cost`] of a characterised scan, for its card's notes: `None` without a lay, or
-/// when the scan cannot carry the in-place reference (no complete 3 × 3 block, none of the
-/// directions served); a resource error stays an error.
+/// [`gaussian_cost`] of a characterised scan, for its card's notes: `None` without a lay,
+/// when a deviation is beyond what the models take ([`crate::wall::MAX_DEVIATION_DEG`]: there
+/// is no model to check), or when the scan cannot carry the in-place reference (no complete
+/// 3 × 3 block, none of the directions served); a resource error stays an error.
 pub fn of_scan(
     c: &crate::scan::Characterisation,
     triangulation: Triangulation,
@@ -321,6 +322,9 @@ pub fn of_scan(
     let Some(lay) = &c.lay else {
         return Ok(None);
     };
+    if lay.delta_xi.max(lay.delta_zeta).to_degrees() > crate::wall::MAX_DEVIATION_DEG {
+        return Ok(None);
+    }
     match gaussian_cost(&c.levelled, lay, triangulation) {
         Ok(cost) => Ok(cost),
         Err(crate::Error::Input(_)) => Ok(None),
@@ -393,6 +397,21 @@ mod tests {
         assert!(cost.unserved.iter().all(|d| d.0 != -35.0), "{cost:?}");
         assert!(cost.ks_at.0 != -5.0 || !cost.unserved.contains(&cost.ks_at));
         assert!(cost.phrase().contains("not served"));
+    }
+
+    #[test]
+    fn a_wall_beyond_the_models_range_is_not_checked() {
+        // 25° grooves: Δζ ≈ 25°, beyond the 20° every model refuses: no model to check.
+        let c = grooves(128, 25.0);
+        assert!(c.lay.unwrap().delta_zeta.to_degrees() > crate::wall::MAX_DEVIATION_DEG);
+        assert_eq!(of_scan(&c, Triangulation::default()).unwrap(), None);
+        let notes = crate::scan::notes(&c, None);
+        assert!(
+            notes
+                .iter()
+                .any(|n| n.contains("not measured: the models refuse deviations beyond 20°")),
+            "{notes:?}"
+        );
     }
 
     #[test]

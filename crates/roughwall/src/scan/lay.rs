@@ -277,14 +277,14 @@ pub fn lay_angle(f: &ScanField) -> Option<f64> {
 }
 
 /// The count and mean of the triangle normals' `(a, b)`.
-struct MeanNormal {
+pub(super) struct MeanNormal {
     n: f64,
     a: f64,
     b: f64,
 }
 
 /// [`lay_angle`] and the mean normal, from one pass over the triangles.
-fn angle_and_mean(f: &ScanField) -> Option<(f64, MeanNormal)> {
+pub(super) fn angle_and_mean(f: &ScanField) -> Option<(f64, MeanNormal)> {
     // The covariance of (a, b).
     let [n, sa, sb, saa, sbb, sab] = row_sums(
         f,
@@ -383,6 +383,61 @@ impl RowKernel for Moments {
         }
         acc
     }
+}
+
+/// The sums of [`deviations_at`] over the triangles: of `ξ' − ξ'₀`, its square, `ζ' − ζ'₀`
+/// and its square (the first, second, fifth and sixth of [`Moments`], bit for bit).
+#[derive(Clone)]
+struct Spread {
+    c: f64,
+    s: f64,
+    shift: [f64; 2],
+}
+
+impl RowKernel for Spread {
+    type Out = [f64; 4];
+    #[inline(always)]
+    fn row(&mut self, f: &ScanField, iy: usize, buf: &mut RowBuf) -> [f64; 4] {
+        let (c, s) = (self.c, self.s);
+        buf.fill(f, iy);
+        buf.neg_asin(0, c, s, self.shift[0]);
+        buf.neg_asin(1, -s, c, self.shift[1]);
+        let [xi, zeta, ..] = &buf.v;
+        let mut acc = [0.0; 4];
+        for i in 0..buf.cells() {
+            for t in 0..2 {
+                let (xi, zeta) = (xi[t][i], zeta[t][i]);
+                acc[0] += xi;
+                acc[1] += xi * xi;
+                acc[2] += zeta;
+                acc[3] += zeta * zeta;
+            }
+        }
+        acc
+    }
+}
+
+/// `(Δξ, Δζ)` along and across `angle`, about the mean normal `mean` (at least two
+/// triangles): [`moments_at`]'s deviations, bit for bit, for half its arcsines (no shape, no
+/// scan axes), for the sub-patches of [`super::lay_uncertainty`].
+pub(super) fn deviations_at(f: &ScanField, angle: f64, mean: MeanNormal) -> (f64, f64) {
+    let MeanNormal { n, a: ma, b: mb } = mean;
+    let (c, s) = (angle.cos(), angle.sin());
+    let xi0 = -(ma * c + mb * s).clamp(-1.0, 1.0).asin();
+    let zeta0 = -(-ma * s + mb * c).clamp(-1.0, 1.0).asin();
+    let m = row_sums(
+        f,
+        Spread {
+            c,
+            s,
+            shift: [xi0, zeta0],
+        },
+    );
+    let var = |s1: f64, s2: f64| {
+        let mu = s1 / n;
+        (s2 / n - mu * mu).max(0.0)
+    };
+    (var(m[0], m[1]).sqrt(), var(m[2], m[3]).sqrt())
 }
 
 /// The deviations along and across `angle`, about the mean normal `mean` (at least two
@@ -636,6 +691,26 @@ mod tests {
         // ξ' = −asin(n·x) = asin(0.015/√1.000225) ≈ 0.015 rad: bin 11 of 20 over ±0.1.
         assert_eq!(px.counts[11], 56);
         assert_eq!(pz.counts[10], 56);
+    }
+
+    /// The sub-patches' lighter pass gives the full pass's deviations bit for bit, holes and
+    /// all, at the scan's own lay and at another angle.
+    #[test]
+    fn deviations_at_are_the_moments_deviations_bit_for_bit() {
+        let g = crate::scan::tests::sec3_wall(128, 4);
+        let mut h = g.heights.clone();
+        h[300] = f64::NAN;
+        let scan = ScanField::new(g.nx, g.nz, g.dx, g.dz, h).unwrap();
+        for angle in [lay_angle(&scan).unwrap(), 0.7] {
+            let (_, mean) = angle_and_mean(&scan).unwrap();
+            let (_, again) = angle_and_mean(&scan).unwrap();
+            let full = moments_at(&scan, angle, mean);
+            let (xi, zeta) = deviations_at(&scan, angle, again);
+            assert_eq!(
+                (xi.to_bits(), zeta.to_bits()),
+                (full.delta_xi.to_bits(), full.delta_zeta.to_bits())
+            );
+        }
     }
 
     /// A tilted plane has one normal: no spread, and missing corners drop their cells.

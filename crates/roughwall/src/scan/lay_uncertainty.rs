@@ -12,7 +12,7 @@
 //! of `surfaces = N` take the realisations). A wall whose anisotropy is not significant is
 //! isotropic within what the scan shows, and gets no lay.
 
-use super::lay::{lay_angle, lay_at};
+use super::lay::{angle_and_mean, deviations_at};
 use super::ScanField;
 
 /// Sub-patches along each side of the scan.
@@ -81,11 +81,12 @@ pub fn lay_uncertainty(f: &ScanField, lay_angle_rad: f64) -> Option<LayUncertain
                 dy: f.dy,
                 heights,
             };
-            if let Some(a) = lay_angle(&sub) {
+            // One pass gives the sub-patch's own lay and the mean normal its deviations
+            // along the scan's lay are taken about.
+            if let Some((a, mean)) = angle_and_mean(&sub) {
                 angles.push(a);
-            }
-            if let Some(l) = lay_at(&sub, lay_angle_rad) {
-                differences.push(l.delta_zeta - l.delta_xi);
+                let (delta_xi, delta_zeta) = deviations_at(&sub, lay_angle_rad, mean);
+                differences.push(delta_zeta - delta_xi);
             }
         }
     }

@@ -194,6 +194,9 @@ pub struct Characterisation {
     pub parameters: parameters::AreaParameters,
     /// Lay and deviations; `None` without a cell of four valid corners.
     pub lay: Option<lay::Lay>,
+    /// How well the scan fixes that lay, from 4 × 4 sub-patches; `None` without a lay or
+    /// when the scan is too small to cut.
+    pub lay_uncertainty: Option<lay_uncertainty::LayUncertainty>,
     /// Autocorrelation along and across the lay (along the scan's `x` without a lay).
     pub correlation: correlation::Correlation,
 }
@@ -222,12 +225,14 @@ pub fn characterise(f: ScanField, degree: u32) -> Result<Characterisation> {
     levelling::level_in_place(&mut levelled, degree)?;
     let parameters = parameters::area_parameters(&levelled);
     let lay = lay::lay(&levelled);
+    let lay_uncertainty = lay.and_then(|l| lay_uncertainty::lay_uncertainty(&levelled, l.angle));
     let correlation = correlation::correlation(&levelled, lay.map_or(0.0, |l| l.angle));
     Ok(Characterisation {
         levelled,
         degree,
         parameters,
         lay,
+        lay_uncertainty,
         correlation,
     })
 }

@@ -97,8 +97,10 @@ pub fn notes(c: &Characterisation, cost: Option<&ShapeEffect>) -> Vec<String> {
                 }
             }
             if !shapes.is_empty() {
+                let beyond = l.delta_xi.max(l.delta_zeta).to_degrees() > MAX_DEVIATION_DEG;
                 let effect = match cost {
                     Some(cost) => cost.phrase.clone(),
+                    None if beyond => format!("what this does to rebounds is not measured: the models refuse deviations beyond {MAX_DEVIATION_DEG}°"),
                     None => "what this does to rebounds is not measured: the scan is too small for the in-place reference's directions".to_string(),
                 };
                 out.push(format!(
@@ -107,7 +109,7 @@ pub fn notes(c: &Characterisation, cost: Option<&ShapeEffect>) -> Vec<String> {
                 ));
                 shape_noted = true;
             }
-            if let Some(u) = super::lay_uncertainty::lay_uncertainty(&c.levelled, l.angle) {
+            if let Some(u) = c.lay_uncertainty {
                 if !u.significant() && spread(l).iter().any(|&s| s) {
                     out.push(format!(
                         "isotropic within what the scan shows: Δζ − Δξ = {}° ± {}° over {} sub-patches ({} standard errors, fewer than {}), and the sub-patches put the lay {}° apart: no lay is given, and [wall] has the rms of the two deviations for both",

@@ -467,6 +467,20 @@ void rw_wall_free(rw_wall *wall);
 int32_t rw_rebound(const rw_wall *wall, const rw_hit *hit, rw_result *result);
 
 /*
+ Impact angle (rad, 0 to π/2) of `hit`'s incident velocity (relative to the wall) on the
+ wall element that produced `result`: the facet the particle struck, whose angle erosion
+ laws (Finnie, Oka, DNV) take, rather than the mean wall's. It follows from
+ `result->gamma`, `result->gamma_star` and the incident direction in the wall's frame of
+ `hit->normal` and `hit->lay` (Radenkovic & Simonin 2021, Eqs. 10, 20–23). On a smooth
+ wall it is the angle to the wall. 0 when `result->status` is not `RW_OK` or a pointer is
+ NULL. Allocates nothing; never NaN.
+
+ # Safety
+ `hit` and `result` are NULL or valid.
+ */
+double rw_element_impact_angle(const rw_hit *hit, const rw_result *result);
+
+/*
  The rebounds of `batch->n` hits (each exactly as `rw_rebound` gives it, whatever the
  thread count), per-hit statuses in `batch->out_status`: bad hits get their status
  (`RW_INVALID_INPUT`, …) and finite outputs, the others are rebounded. `threads` ≤ 1

@@ -5,8 +5,12 @@
 # gravity and code_saturne's Langevin dispersion, on the frozen converged flow; every wall hit
 # goes to roughwall (examples/code_saturne/pipe/, docs/pipe-flow.md). The walls, on the same
 # flow and the same particles:
-#   smooth; isotropic (5.95, 5.95) deg; (3.8, 7.5) deg with the lay along the axis (a drawn
-#   tube) and around the circumference,
+#   smooth (the limit Delta gamma = 0); technically smooth, isotropic Delta gamma = 0.5, 1 and
+#   2 deg; the Sec. 4 rough wall, (3.8, 7.5) deg as a 500 um sphere sees it, with the lay
+#   along the axis (a drawn tube) and around the circumference, and isotropic with the rms
+#   of the two; each bead size with the rough wall's deviations its own sphere sees (the
+#   library's dilation of configs/cases/pipe-wall.toml, a Gaussian wall whose 500 um row is the
+#   Sec. 4 wall);
 # each rough wall with the paper's model and `calibrated`, the isotropic one also with
 # Sommerfeld-Huber 1999; the Sec. 4 glass-steel collision law everywhere.
 # Full mode: 4000 particles per run, 0.5 s (about 170 D) before a 0.4 s sampling window, plus
@@ -31,8 +35,17 @@ JOBS=${PIPE_JOBS:-2}
 # The study (docs/pipe-flow.md).
 D=0.05 L=0.2 UB=20 RHO=2500
 DIAMETERS_UM="100 200"
-WALLS="smooth:0:0:0 iso:1:5.95:5.95 axial:2:3.8:7.5 circ:3:3.8:7.5"
-models_of() { case $1 in smooth) echo paper ;; iso) echo "paper calibrated sh1999" ;; *) echo "paper calibrated" ;; esac; }
+models_of() { case $1 in smooth | ts*) echo paper ;; iso) echo "paper calibrated sh1999" ;; *) echo "paper calibrated" ;; esac; }
+# walls_for D_UM: the study's walls (name:code:delta_xi:delta_zeta) for beads of D_UM, the
+# rough ones with the deviations that bead's sphere sees on the rough wall
+# ($WORK/wall/effective_roughness.csv); the isotropic wall has the rms of the two.
+walls_for() {
+  local xi ze iso
+  read -r xi ze < <(awk -F, -v d="$1" 'NR > 1 && $1 + 0 == d + 0 { print $4, $5 }' "$WORK/wall/effective_roughness.csv")
+  [ -n "$ze" ] || { echo "pipe-flow: no deviations for $1 um in $WORK/wall/effective_roughness.csv" >&2; exit 1; }
+  iso=$(awk -v a="$xi" -v b="$ze" 'BEGIN { printf "%.4f", sqrt((a * a + b * b) / 2) }')
+  echo "smooth:0:0:0 ts0.5:1:0.5:0.5 ts1:1:1:1 ts2:1:2:2 iso:1:$iso:$iso axial:2:$xi:$ze circ:3:$xi:$ze"
+}
 DT_FLUID=0.001 NT_FLUID=$(particles 600 400)
 DT=0.0005
 NPART=$(particles 4000 400)
@@ -46,6 +59,10 @@ if [ -z "${ROUGHWALL_LIB:-}" ]; then (cd "$ROOT" && cargo build --release --quie
 study_init
 # shellcheck disable=SC2086 # MESH is a list of arguments
 "$PIPE_EX/setup_pipe.sh" "$WORK/coarse" $MESH > /dev/null
+# What each bead size sees of the rough wall: the spheres' centre surfaces on it.
+run surface --case cases/pipe-wall.toml --out "$WORK/wall" --quiet
+echo "  the rough wall as each sphere sees it (D um, delta_xi, delta_zeta deg):"
+awk -F, 'NR > 1 { printf "    %s: %.3f, %.3f\n", $1, $4, $5 }' "$WORK/wall/effective_roughness.csv"
 stage_end
 
 stage_start "pipe flow: fluid and injection"
@@ -61,14 +78,26 @@ stage_end
 
 stage_start "pipe flow: particles"
 for d in $DIAMETERS_UM; do
+  WALLS=$(walls_for "$d")
   for w in $WALLS; do
     wall=${w%%:*}
     for m in $(models_of "$wall"); do
       particles_run "${d}um-$wall-$m" main "$WORK/coarse" "$d" "$wall" "$m"
     done
   done
+  # Sensitivity switches (docs/pipe-flow.md, "Sensitivity"), each on the two lays: without
+  # code_saturne's Langevin dispersion; with the 500 um bead's deviations (the Sec. 4 wall)
+  # instead of this size's own.
+  for wall in axial circ; do
+    particles_run "${d}um-$wall-paper-no-dispersion" no-dispersion "$WORK/coarse" "$d" "$wall" paper dispersion 0
+  done
+  WALLS="axial:2:3.8:7.5 circ:3:3.8:7.5"
+  for wall in axial circ; do
+    particles_run "${d}um-$wall-paper-sec4-deviations" sec4-deviations "$WORK/coarse" "$d" "$wall" paper
+  done
 done
 if [ "$QUICK" != 1 ]; then
+  WALLS=$(walls_for 200)
   particles_run 200um-iso-paper-fine mesh "$WORK/fine" 200 iso paper
   # the smooth wall's settled bed moves with the flow of the first cells: check it too
   particles_run 200um-smooth-paper-fine mesh "$WORK/fine" 200 smooth paper

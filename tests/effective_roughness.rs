@@ -98,3 +98,37 @@ fn diameters_beyond_the_side_or_out_of_range_are_refused() {
     let out = run_case("surface", &case, &tmp.path().join("none"), &[]);
     assert!(!out.join("effective_roughness.csv").exists());
 }
+
+/// The pipe-flow study's rough wall (`configs/cases/pipe-wall.toml`, issue 40, part 3): its
+/// 500 µm spheres see the Sec. 4 wall, (3.8°, 7.5°), to 0.5 %, and smaller beads see more
+/// across the lay, not along it, by the amounts docs/pipe-flow.md quotes (to 0.5 %).
+#[test]
+fn the_pipe_walls_500_um_row_is_the_sec4_wall() {
+    let tmp = Dir::new();
+    let out = run_case(
+        "surface",
+        &shipped_case("cases/pipe-wall.toml"),
+        &tmp.path().join("out"),
+        &[],
+    );
+    let c = Csv::read(&out.join("effective_roughness.csv"));
+    let seen = |d: f64| {
+        let r = c
+            .rows
+            .iter()
+            .find(|r| (c.num(r, "diameter_um") - d).abs() < 1e-9)
+            .unwrap();
+        (c.num(r, "delta_xi_eff_deg"), c.num(r, "delta_zeta_eff_deg"))
+    };
+    for (d, xi, zeta) in [
+        (500.0, 3.8, 7.5),
+        (200.0, 3.815, 8.352),
+        (100.0, 3.815, 8.387),
+    ] {
+        let (x, z) = seen(d);
+        assert!(
+            (x / xi - 1.0).abs() < 0.005 && (z / zeta - 1.0).abs() < 0.005,
+            "D = {d} µm: ({x}, {z}) vs ({xi}, {zeta})"
+        );
+    }
+}

@@ -1223,6 +1223,8 @@ fn scan_empty_allowed(col: &str, row: &dyn Fn(&str) -> String) -> bool {
 /// - `pdfs.csv`: `se` of the model curves `gamma_model` and `p_single_model` only;
 /// - `force_sweep.csv`: `contact_time_s` for `hu2021` and for U_N = 0 only;
 /// - `scan_summary.csv`: what is undefined for the scan ([`scan_empty_allowed`]);
+/// - `effective_roughness.csv`: `d_over_cl_*` and `delta_*_ratio` along an axis without
+///   roughness;
 /// - `wall_card_diameters.csv`: the deviations of a sphere with nothing exact, the error with
 ///   no correlation area, a note where there is none, the resolution check of a row without
 ///   deviations or too small a scan;
@@ -1249,6 +1251,13 @@ fn empty_allowed(cmd: Cmd, file: &str, col: &str, row: &dyn Fn(&str) -> String) 
                 && (row("model") == "hu2021" || row("u_n_m_s").parse::<f64>() == Ok(0.0))
         }
         "scan_summary.csv" => scan_empty_allowed(col, row),
+        // An axis without roughness (2-D surfaces): c_L = ∞ and Δ = 0 along it, so D/c_L and
+        // Δ_eff/Δ are not defined there.
+        "effective_roughness.csv" => match col {
+            "d_over_cl_x" | "delta_xi_ratio" => near_zero(&row("delta_xi_eff_deg"), 0.0),
+            "d_over_cl_z" | "delta_zeta_ratio" => near_zero(&row("delta_zeta_eff_deg"), 0.0),
+            _ => false,
+        },
         // No exact triangle of a sphere's centre surface: no deviations, no error; no note
         // where the scan serves the diameter.
         "wall_card_diameters.csv" => match col {

@@ -11,7 +11,8 @@ wall 1\ndelta_xi_deg 5\ndelta_zeta_deg 5\nmodel 0\nlaw 1\npreset 1\nseed 1\nn_pa
 d_p 0.0001\nrho_p 2500\ndispersion 1\nt_sample 0.01\nn_bins 2\nlog_hits 1\n";
 
 /// A run of 40 particles, each sampled 10 times, all in the lower slab, at u_x = `ux`
-/// (u_r = 0), 1 m travelled and `hits` hits at the bottom with α⁻ = 10°, α⁺ = 10° + `dalpha`.
+/// (u_r = 0), 1 m travelled and `hits` hits at the bottom with α⁻ = 10°, α⁺ = 10° + `dalpha`,
+/// on a facet struck at 10° + `dalpha`/2.
 fn write_run(dir: &Path, ux: f64, hits: usize, dalpha: f64) {
     std::fs::create_dir_all(dir).unwrap();
     std::fs::write(dir.join("pipe.params"), PARAMS).unwrap();
@@ -27,17 +28,18 @@ fn write_run(dir: &Path, ux: f64, hits: usize, dalpha: f64) {
         ));
     }
     std::fs::write(dir.join("particles.csv"), p).unwrap();
-    let mut h = String::from("particle_id,collision_index,step,y,z,alpha_in_deg,lay_angle_deg,speed_in,speed_out,alpha_out_deg,deflection_deg,status,candidate_walls\n");
+    let mut h = String::from("particle_id,collision_index,step,y,z,alpha_in_deg,lay_angle_deg,speed_in,speed_out,alpha_out_deg,deflection_deg,status,candidate_walls,alpha_element_deg\n");
     for id in 0..40 {
         for k in 0..hits {
             h.push_str(&format!(
-                "{id},{k},50,-0.025,0,10,3,20,18,{},1,0,1\n",
-                10.0 + dalpha
+                "{id},{k},50,-0.025,0,10,3,20,18,{},1,0,1,{}\n",
+                10.0 + dalpha,
+                10.0 + dalpha / 2.0
             ));
         }
     }
     // a hit the library found not approaching the wall (status 1) is logged, not counted
-    h.push_str("0,99,50,-0.025,0,10,3,20,20,10,0,1,1\n");
+    h.push_str("0,99,50,-0.025,0,10,3,20,20,10,0,1,1,0\n");
     std::fs::write(dir.join("hits_rank0000.csv"), h).unwrap();
 }
 
@@ -105,13 +107,54 @@ fn pipe_stats_gives_each_statistic_and_its_error() {
     assert_eq!(num(iso, "mean_height_over_r"), -0.5);
     assert_eq!(num(iso, "mean_alpha_in_deg"), 10.0);
     assert!((num(iso, "mean_alpha_change_deg") - 2.0).abs() < 1e-6);
-    // Finnie, p = 1 GPa, ψ = K = 2: 20²/(4e9) (sin 20° − 3 sin² 10°) m³/kg per hit; 3 hits
-    // per metre; over the wall 2πR per metre of pipe; in µm per tonne (×1e9)
-    let a = 10f64.to_radians();
-    let v = 400.0 / 4e9 * ((2.0 * a).sin() - 3.0 * a.sin().powi(2));
-    let expect = 3.0 * v / (2.0 * std::f64::consts::PI * 0.025) * 1e9;
-    let got = num(iso, "erosion_um_per_t");
-    assert!((got - expect).abs() < 1e-6 * expect, "{got} vs {expect}");
+    assert_eq!(num(iso, "mean_alpha_element_deg"), 11.0);
+    // Finnie, p = 1 GPa, ψ = K = 2: 20²/(4e9) (sin 2α − 3 sin² α) m³/kg per hit; 3 hits
+    // per metre; over the wall 2πR per metre of pipe; in µm per tonne (×1e9); on the mean
+    // wall α = 10°, on the facet struck 11°
+    let per_t = |v: f64| 3.0 * v / (2.0 * std::f64::consts::PI * 0.025) * 1e9;
+    let finnie = |deg: f64| {
+        let a = f64::to_radians(deg);
+        400.0 / 4e9 * ((2.0 * a).sin() - 3.0 * a.sin().powi(2))
+    };
+    for (column, expect) in [
+        ("erosion_finnie_mean_wall_um_per_t", per_t(finnie(10.0))),
+        ("erosion_finnie_um_per_t", per_t(finnie(11.0))),
+    ] {
+        let got = num(iso, column);
+        assert!(
+            (got - expect).abs() < 1e-6 * expect,
+            "{column}: {got} vs {expect}"
+        );
+    }
+    // Oka (Hv 1.8 GPa, SiO₂ constants) and DNV (carbon steel), from their library laws at
+    // the same angles: 100 µm beads at 20 m/s.
+    use roughwall::erosion::{AngleDependency, Dnv, ErosionModel, OkaInput};
+    let oka = ErosionModel::Oka(
+        OkaInput {
+            hardness_gpa: 1.8,
+            ..Default::default()
+        }
+        .resolve(),
+    );
+    let dnv = ErosionModel::Dnv(Dnv {
+        k: 2e-9,
+        n: 2.6,
+        target_density_kg_m3: 7800.0,
+        angle_dependency: AngleDependency::Ductile,
+    });
+    for (law, name) in [(oka, "oka"), (dnv, "dnv")] {
+        for (column, deg) in [
+            (format!("erosion_{name}_um_per_t"), 11.0),
+            (format!("erosion_{name}_mean_wall_um_per_t"), 10.0),
+        ] {
+            let expect = per_t(law.volume_per_mass(20.0, f64::to_radians(deg), 1e-4));
+            let got = num(iso, &column);
+            assert!(
+                (got - expect).abs() < 1e-6 * expect,
+                "{column}: {got} vs {expect}"
+            );
+        }
+    }
     // concentration: all samples in the lower half, whose share of the area is 1/2
     let prof = rows(&out.join("profiles.csv"));
     let slab = |at: &str| {
@@ -190,4 +233,49 @@ fn pipe_stats_refuses_what_is_not_a_study() {
     std::fs::remove_file(s.join("runs/a/hits_rank0000.csv")).unwrap();
     pipe_stats(&s, &out).refused("missing or truncated");
     assert!(!out.exists(), "a refused run wrote --out");
+}
+
+/// `sensitivity.csv`: a physics switch run on both lays changes the lay ratio
+/// (circumferential over axial) by what the runs give, paired: collisions 4/2 in the study,
+/// 3/2 with the switch; a study without switches writes the header only.
+#[test]
+fn pipe_stats_gives_each_switchs_change_of_the_lay_ratio() {
+    let d = Dir::new();
+    let s = d.path().join("study");
+    std::fs::create_dir_all(&s).unwrap();
+    std::fs::write(
+        s.join("study.tsv"),
+        "name\tkind\tdiameter_um\twall\tmodel\tdir\n\
+         100um-axial-paper\tmain\t100\taxial\tpaper\truns/a\n\
+         100um-circ-paper\tmain\t100\tcirc\tpaper\truns/b\n\
+         100um-axial-paper-no-lift\tno-lift\t100\taxial\tpaper\truns/c\n\
+         100um-circ-paper-no-lift\tno-lift\t100\tcirc\tpaper\truns/d\n",
+    )
+    .unwrap();
+    write_run(&s.join("runs/a"), 18.0, 2, 1.0);
+    write_run(&s.join("runs/b"), 17.0, 4, 2.0);
+    write_run(&s.join("runs/c"), 18.0, 2, 1.0);
+    write_run(&s.join("runs/d"), 17.0, 3, 2.0);
+    let out = d.path().join("out");
+    pipe_stats(&s, &out).ok();
+    let table = rows(&out.join("sensitivity.csv"));
+    let r = table
+        .iter()
+        .find(|r| r["switch"] == "no-lift" && r["quantity"] == "collisions_per_m")
+        .unwrap();
+    assert_eq!(num(r, "ratio_study"), 2.0);
+    assert_eq!(num(r, "ratio_switch"), 1.5);
+    assert_eq!(num(r, "change"), -0.5);
+    assert_eq!(num(r, "change_se"), 0.0);
+    // The erosion ratios too, one row per law.
+    for law in ["finnie", "oka", "dnv"] {
+        let q = format!("erosion_{law}_um_per_t");
+        assert!(table.iter().any(|r| r["quantity"] == q), "{q}");
+    }
+    // No switch: the header only.
+    let plain = d.path().join("plain");
+    study(&plain);
+    let out2 = d.path().join("out2");
+    pipe_stats(&plain, &out2).ok();
+    assert!(rows(&out2.join("sensitivity.csv")).is_empty());
 }

@@ -294,3 +294,18 @@ fn a_foreign_or_truncated_heights_file_is_rejected() {
     assert_eq!(e.exit_code(), 2);
     assert!(e.to_string().contains("x.rbhf"));
 }
+
+/// A sphere on a flat surface sees no roughness, and its ratios to the surface's deviations
+/// are 0/0: `[stats] diameter_um` on a surface of rms height 0 is refused, naming the key,
+/// with nothing written.
+#[test]
+fn effective_roughness_of_a_flat_surface_is_refused() {
+    let tmp = Dir::new();
+    let case = write_case(
+        tmp.path(),
+        "flat.toml",
+        "name = \"flat\"\n[surface]\nlength_um = 256.0\nnodes = 256\nrms_height_um = 0.0\n\
+         delta_xi_deg = 3.0\ndelta_zeta_deg = 3.0\n[stats]\ndiameter_um = [50.0]\n",
+    );
+    refuse_case("surface", &case, tmp.path(), "stats.diameter_um");
+}

@@ -46,7 +46,8 @@ module roughwall
      integer(c_int32_t) :: status
   end type rw_result
 
-  public :: rw_wall_params_default, rw_wall_new, rw_wall_free, rw_rebound, rw_version_string
+  public :: rw_wall_params_default, rw_wall_new, rw_wall_free, rw_rebound, rw_element_impact_angle, &
+       rw_version_string
 
   interface
      integer(c_int32_t) function rw_wall_params_default(params) bind(c, name="rw_wall_params_default")
@@ -73,6 +74,13 @@ module roughwall
        type(rw_hit), intent(in) :: hit
        type(rw_result), intent(out) :: result
      end function rw_rebound
+
+     ! Impact angle (rad) on the wall element that produced the rebound (for erosion laws).
+     real(c_double) function rw_element_impact_angle(hit, result) bind(c, name="rw_element_impact_angle")
+       import :: c_double, rw_hit, rw_result
+       type(rw_hit), intent(in) :: hit
+       type(rw_result), intent(in) :: result
+     end function rw_element_impact_angle
 
      type(c_ptr) function rw_version() bind(c, name="rw_version")
        import :: c_ptr

@@ -5,7 +5,7 @@ use crate::cli::PipeStatsArgs;
 use crate::commands::{begin_out, counted, Summary};
 use crate::output::{out_dir, write_atomic};
 use crate::pipe_flow::{read, sums, tables};
-use roughwall::erosion::Finnie;
+use roughwall::erosion::{AngleDependency, Dnv, ErosionModel, Finnie, OkaInput};
 use roughwall::{Error, Result};
 
 /// Finnie's law for the erosion tallies: a steel wall (flow stress 1 GPa) with OpenFOAM's
@@ -16,16 +16,44 @@ pub const FINNIE: Finnie = Finnie {
     k: 2.0,
 };
 
+/// DNV RP-O501's carbon steel (K = 2·10⁻⁹ (m/s)^−2.6, n = 2.6, 7800 kg/m³, ductile), as
+/// pysand's `material_dict['carbon_steel']` and `[erosion] model = "dnv"`'s defaults.
+pub const DNV: Dnv = Dnv {
+    k: 2e-9,
+    n: 2.6,
+    target_density_kg_m3: 7800.0,
+    angle_dependency: AngleDependency::Ductile,
+};
+
+/// Oka's Vickers hardness of the wall (GPa): annealed stainless steel (about 180 HV).
+pub const OKA_HARDNESS_GPA: f64 = 1.8;
+
+/// The erosion laws of the tallies, in the order of `pipe_flow::sums::LAWS`: Finnie, Oka
+/// (Oka & Yoshida 2005, SiO₂ constants for the glass beads, [`OKA_HARDNESS_GPA`]), DNV.
+pub fn erosion_laws() -> [ErosionModel; 3] {
+    let oka = OkaInput {
+        hardness_gpa: OKA_HARDNESS_GPA,
+        ..Default::default()
+    }
+    .resolve();
+    [
+        ErosionModel::Finnie(FINNIE),
+        ErosionModel::Oka(oka),
+        ErosionModel::Dnv(DNV),
+    ]
+}
+
 /// Runs the subcommand.
 pub fn run(args: &PipeStatsArgs) -> Result<Summary> {
     out_dir::check_out(&args.out, "--out")?;
     out_dir::check_distinct(&args.out, "--out", &[("--study", args.study.as_path())])?;
     let runs = read::study(&args.study)?;
+    let laws = erosion_laws();
     let analysed: Vec<tables::Analysed> = runs
         .iter()
         .map(|run| tables::Analysed {
             run,
-            sums: sums::sums(run, &FINNIE),
+            sums: sums::sums(run, &laws),
         })
         .collect();
     let hits: usize = runs.iter().map(|r| r.hits.len()).sum();
@@ -36,6 +64,7 @@ pub fn run(args: &PipeStatsArgs) -> Result<Summary> {
     tables::profiles(&analysed).write(&dir.join("profiles.csv"))?;
     tables::distributions(&analysed).write(&dir.join("distributions.csv"))?;
     tables::comparisons(&analysed).write(&dir.join("comparisons.csv"))?;
+    tables::sensitivity(&analysed).write(&dir.join("sensitivity.csv"))?;
     let figures = crate::figures::pipe_flow::write(dir, &analysed)?;
     let mut run = toml::Table::new();
     run.insert("command".into(), "pipe-stats".into());
@@ -48,6 +77,19 @@ pub fn run(args: &PipeStatsArgs) -> Result<Summary> {
         format!(
             "flow stress {} Pa, psi {}, K {}",
             FINNIE.flow_stress_pa, FINNIE.psi, FINNIE.k
+        )
+        .into(),
+    );
+    run.insert(
+        "oka".into(),
+        format!("hardness {OKA_HARDNESS_GPA} GPa, SiO2 particle constants (Oka & Yoshida 2005)")
+            .into(),
+    );
+    run.insert(
+        "dnv".into(),
+        format!(
+            "K {} (m/s)^-n, n {}, target density {} kg/m3, ductile",
+            DNV.k, DNV.n, DNV.target_density_kg_m3
         )
         .into(),
     );

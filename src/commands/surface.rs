@@ -16,11 +16,12 @@ use crate::writers::surface::{
     angles_table, effective_table, grid_table, model_row, round_ms, summary_table, HIST_BINS,
     OUTPUT_FILES,
 };
+use roughwall::format::fmt_num;
 use roughwall::surface::effective_roughness;
 use roughwall::surface::generate;
 use roughwall::surface::write_heights;
 use roughwall::surface::{surface_stats, HistogramSpec};
-use roughwall::Result;
+use roughwall::{Error, Result};
 use std::time::Instant;
 
 /// Runs the subcommand: validate everything first (nothing is written on bad input),
@@ -62,6 +63,23 @@ pub fn run(args: &SurfaceArgs) -> Result<Summary> {
     };
     let stats = surface_stats(&field, &betas, Some(hist));
     let t_stats = t0.elapsed().as_secs_f64() - t_gen;
+    // What a sphere sees of a flat surface is no roughness at all: its ratios to the surface's
+    // own deviations, and to √(h/D), are 0/0. A surface comes out flat when its rms height is
+    // 0, or when its correlation lengths are so much longer than the surface that only the
+    // mean is left.
+    let rough = stats.rms_height_m > 0.0;
+    if !diameters.is_empty() && !rough {
+        return Err(Error::invalid(
+            "stats.diameter_um",
+            format!(
+                "{} µm on a flat surface (generated rms height {} µm)",
+                fmt_num(diameters[0] * 1e6),
+                fmt_num(stats.rms_height_m * 1e6)
+            ),
+            "a surface with roughness: [surface] rms_height_um > 0 and correlation lengths \
+             shorter than length_um",
+        ));
+    }
 
     let dir = out.path().to_path_buf();
     summary_table(&spec, &target, &stats).write(&dir.join("surface_summary.csv"))?;

@@ -10,15 +10,16 @@ use roughwall::Result;
 use std::path::Path;
 
 /// The walls in drawing order, with their colours and labels.
-const WALLS: [(&str, usize, &str); 4] = [
+const WALLS: [(&str, usize, &str); 5] = [
     ("smooth", 0, "smooth"),
+    ("ts1", 5, "technically smooth, Δγ = 1°"),
     ("iso", 1, "isotropic"),
     ("axial", 2, "lay along the axis"),
     ("circ", 3, "lay around the circumference"),
 ];
 
-/// The study's main runs of diameter `d` and model `model` (the smooth wall whatever the
-/// model), in [`WALLS`] order, with colour and label; with `model` "paper" also the
+/// The study's main runs of diameter `d` and model `model` (the smooth and technically smooth
+/// walls whatever the model), in [`WALLS`] order, with colour and label; with `model` "paper" also the
 /// isotropic wall under Sommerfeld–Huber 1999.
 fn runs_of<'a>(
     runs: &'a [Analysed<'a>],
@@ -27,7 +28,11 @@ fn runs_of<'a>(
 ) -> Vec<(&'a Analysed<'a>, usize, String)> {
     let mut out = Vec::new();
     for (wall, colour, label) in WALLS {
-        let m = if wall == "smooth" { "paper" } else { model };
+        let m = if is_smooth_limit(wall) {
+            "paper"
+        } else {
+            model
+        };
         if let Some(a) = runs.iter().find(|a| {
             let i = &a.run.info;
             i.kind == "main" && i.diameter_um == d && i.wall == wall && i.model == m
@@ -44,6 +49,12 @@ fn runs_of<'a>(
         }
     }
     out
+}
+
+/// The smooth wall and the technically smooth ones (`ts<Δγ>`): run with the paper's model
+/// only.
+fn is_smooth_limit(wall: &str) -> bool {
+    wall == "smooth" || wall.starts_with("ts")
 }
 
 fn model_title(model: &str) -> &'static str {
@@ -173,7 +184,7 @@ pub fn write(dir: &Path, runs: &[Analysed]) -> Result<Vec<String>> {
                 ..Default::default()
             },
             Plot {
-                title: format!("{d} µm, Finnie erosion around the wall"),
+                title: format!("{d} µm, Finnie erosion around the wall (at the facet struck)"),
                 x_label: "angle from the bottom (deg)".into(),
                 y_label: "µm per tonne conveyed".into(),
                 ..Default::default()
@@ -183,7 +194,7 @@ pub fn write(dir: &Path, runs: &[Analysed]) -> Result<Vec<String>> {
             let sets = [
                 angle_pdf(&a.sums, false),
                 angle_pdf(&a.sums, true),
-                erosion_profile(&a.sums, 0.5 * a.run.params.pipe_diameter_m),
+                erosion_profile(&a.sums, 0.5 * a.run.params.pipe_diameter_m, 0),
             ];
             for (plot, bins) in hit_plots.iter_mut().zip(sets) {
                 let (pts, err) = dist(bins);

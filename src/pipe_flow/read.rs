@@ -74,6 +74,9 @@ pub struct Hit {
     pub speed_out: f64,
     pub alpha_out_deg: f64,
     pub deflection_deg: f64,
+    /// The impact angle on the wall element the library drew (`rw_element_impact_angle`):
+    /// the facet struck, which the erosion laws take.
+    pub alpha_element_deg: f64,
 }
 
 /// One run, read.
@@ -247,6 +250,7 @@ pub fn hits(dir: &Path) -> Result<Vec<Hit>> {
                 speed_out: num(r, "speed_out", &path)?,
                 alpha_out_deg: num(r, "alpha_out_deg", &path)?,
                 deflection_deg: num(r, "deflection_deg", &path)?,
+                alpha_element_deg: num(r, "alpha_element_deg", &path)?,
             });
         }
     }

@@ -9,14 +9,15 @@
 //! area, taken on the mesh's polygonal wall ([`super::section`]; 1 everywhere for a uniform
 //! suspension).
 //! The wall-normal velocity is the radial component `u_r = (u_y y + u_z z)/r`, positive
-//! towards the wall. Erosion is Finnie's volume per particle mass summed over the hits
-//! and divided by the wall area and by the mass of particles conveyed through a
-//! cross-section (`Σ_p m_p x_p / L` for particles that travelled `x_p`): the loss of wall
-//! thickness per mass conveyed, in µm per tonne.
+//! towards the wall. Erosion is a law's volume per particle mass (Finnie, Oka, DNV) summed
+//! over the hits, at the impact angle on the wall element struck (the facet the library
+//! drew) or on the mean wall, and divided by the wall area and by the mass of particles
+//! conveyed through a cross-section (`Σ_p m_p x_p / L` for particles that travelled `x_p`):
+//! the loss of wall thickness per mass conveyed, in µm per tonne.
 
 use super::jackknife::{estimate, Estimate};
 use super::section::CrossSection;
-use super::sums::{Layout, RunSums, ALPHA_BINS, LAY_BINS, THETA_BINS};
+use super::sums::{Layout, RunSums, ALPHA_BINS, LAWS, LAY_BINS, THETA_BINS};
 
 /// The centre of bin `b` of `nb` across a diameter, over R.
 pub fn bin_centre_over_r(b: usize, nb: usize) -> f64 {
@@ -65,7 +66,7 @@ fn fluctuation_rms(
 const M_PER_KG_TO_UM_PER_T: f64 = 1e9;
 
 /// The study's whole-run quantities (`summary.csv`, `comparisons.csv`), in column order.
-pub const QUANTITIES: [Quantity; 10] = [
+pub const QUANTITIES: [Quantity; 16] = [
     Quantity {
         name: "collisions_per_m",
         f: |_, s, _| s[Layout::HITS] / s[Layout::DIST],
@@ -95,6 +96,10 @@ pub const QUANTITIES: [Quantity; 10] = [
         f: |l, s, _| s[l.sum_alpha_in()] / s[l.logged_hits()],
     },
     Quantity {
+        name: "mean_alpha_element_deg",
+        f: |l, s, _| s[l.sum_alpha_element()] / s[l.logged_hits()],
+    },
+    Quantity {
         name: "mean_alpha_change_deg",
         f: |l, s, _| s[l.sum_alpha_change()] / s[l.logged_hits()],
     },
@@ -103,20 +108,44 @@ pub const QUANTITIES: [Quantity; 10] = [
         f: |l, s, _| s[l.sum_deflection()] / s[l.logged_hits()],
     },
     Quantity {
-        name: "erosion_um_per_t",
-        f: erosion_um_per_t,
+        name: "erosion_finnie_um_per_t",
+        f: |l, s, r| erosion_um_per_t(l, s, r, 0, true),
+    },
+    Quantity {
+        name: "erosion_oka_um_per_t",
+        f: |l, s, r| erosion_um_per_t(l, s, r, 1, true),
+    },
+    Quantity {
+        name: "erosion_dnv_um_per_t",
+        f: |l, s, r| erosion_um_per_t(l, s, r, 2, true),
+    },
+    Quantity {
+        name: "erosion_finnie_mean_wall_um_per_t",
+        f: |l, s, r| erosion_um_per_t(l, s, r, 0, false),
+    },
+    Quantity {
+        name: "erosion_oka_mean_wall_um_per_t",
+        f: |l, s, r| erosion_um_per_t(l, s, r, 1, false),
+    },
+    Quantity {
+        name: "erosion_dnv_mean_wall_um_per_t",
+        f: |l, s, r| erosion_um_per_t(l, s, r, 2, false),
     },
 ];
 
-/// Erosion averaged over the whole wall (µm per tonne conveyed), pipe radius `r` (m).
-pub fn erosion_um_per_t(l: &Layout, s: &[f64], r: f64) -> f64 {
-    s[l.sum_erosion()] / (2.0 * std::f64::consts::PI * r * s[Layout::DIST]) * M_PER_KG_TO_UM_PER_T
+/// Law `law`'s erosion (index into [`LAWS`]) averaged over the whole wall (µm per tonne
+/// conveyed), at the impact angle on the element struck (`element`) or on the mean wall;
+/// pipe radius `r` (m).
+pub fn erosion_um_per_t(l: &Layout, s: &[f64], r: f64, law: usize, element: bool) -> f64 {
+    s[l.sum_erosion(law, element)] / (2.0 * std::f64::consts::PI * r * s[Layout::DIST])
+        * M_PER_KG_TO_UM_PER_T
 }
 
-/// Erosion in circumferential bin `k` (folded: both sides), µm per tonne conveyed.
-pub fn erosion_theta_um_per_t(l: &Layout, s: &[f64], r: f64, k: usize) -> f64 {
+/// Law `law`'s erosion (on the element struck) in circumferential bin `k` (folded: both
+/// sides), µm per tonne conveyed.
+pub fn erosion_theta_um_per_t(l: &Layout, s: &[f64], r: f64, law: usize, k: usize) -> f64 {
     let dtheta = std::f64::consts::PI / THETA_BINS as f64;
-    s[l.erosion_theta(k)] / (2.0 * r * dtheta * s[Layout::DIST]) * M_PER_KG_TO_UM_PER_T
+    s[l.erosion_theta(law, k)] / (2.0 * r * dtheta * s[Layout::DIST]) * M_PER_KG_TO_UM_PER_T
 }
 
 /// One profile point.
@@ -239,15 +268,17 @@ pub fn angle_pdf(run: &RunSums, lay: bool) -> Vec<DistBin> {
         .collect()
 }
 
-/// Erosion around the circumference (folded), pipe radius `r`.
-pub fn erosion_profile(run: &RunSums, r: f64) -> Vec<DistBin> {
+/// Law `law`'s erosion (on the element struck) around the circumference (folded), pipe
+/// radius `r`.
+pub fn erosion_profile(run: &RunSums, r: f64, law: usize) -> Vec<DistBin> {
+    debug_assert!(law < LAWS.len());
     let l = run.layout;
     let width = 180.0 / THETA_BINS as f64;
     (0..THETA_BINS)
         .map(|k| DistBin {
             lo: k as f64 * width,
             hi: (k + 1) as f64 * width,
-            value: estimate(&[run], |s| erosion_theta_um_per_t(&l, s[0], r, k)),
+            value: estimate(&[run], |s| erosion_theta_um_per_t(&l, s[0], r, law, k)),
         })
         .collect()
 }

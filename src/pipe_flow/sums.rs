@@ -4,7 +4,7 @@
 //! standard error. Wall hits go to their particle's batch.
 
 use super::read::Run;
-use roughwall::erosion::Finnie;
+use roughwall::erosion::ErosionModel;
 
 /// Batches of particles.
 pub const BATCHES: usize = 20;
@@ -12,6 +12,9 @@ pub const BATCHES: usize = 20;
 pub const ALPHA_BINS: usize = 90;
 /// Lay-angle histogram: 5° bins over [0°, 90°].
 pub const LAY_BINS: usize = 18;
+/// The erosion laws tallied side by side, in this order (`erosion_<law>_…` columns).
+pub const LAWS: [&str; 3] = ["finnie", "oka", "dnv"];
+
 /// Erosion around the circumference: 15° bins of the angle from the bottom, folded over the
 /// vertical plane of symmetry, [0°, 180°] (0° the bottom, 180° the top).
 pub const THETA_BINS: usize = 12;
@@ -72,21 +75,30 @@ impl Layout {
     pub fn sum_deflection(&self) -> usize {
         self.h0() + 3
     }
-    /// Σ of Finnie's volume per particle mass (m³/kg) over hits.
-    pub fn sum_erosion(&self) -> usize {
+    /// Σ of the impact angle on the element struck (degrees) over hits.
+    pub fn sum_alpha_element(&self) -> usize {
         self.h0() + 4
     }
+    /// Σ of law `law`'s volume per particle mass (m³/kg) over hits, at the impact angle on
+    /// the element struck (`element`) or on the mean wall.
+    pub fn sum_erosion(&self, law: usize, element: bool) -> usize {
+        self.h0() + 5 + 2 * law + usize::from(!element)
+    }
+    fn h1(&self) -> usize {
+        self.h0() + 5 + 2 * LAWS.len()
+    }
     pub fn alpha_hist(&self, k: usize) -> usize {
-        self.h0() + 5 + k
+        self.h1() + k
     }
     pub fn lay_hist(&self, k: usize) -> usize {
-        self.h0() + 5 + ALPHA_BINS + k
+        self.h1() + ALPHA_BINS + k
     }
-    pub fn erosion_theta(&self, k: usize) -> usize {
-        self.h0() + 5 + ALPHA_BINS + LAY_BINS + k
+    /// Law `law`'s erosion (on the element struck) in circumferential bin `k`.
+    pub fn erosion_theta(&self, law: usize, k: usize) -> usize {
+        self.h1() + ALPHA_BINS + LAY_BINS + law * THETA_BINS + k
     }
     pub fn len(&self) -> usize {
-        self.h0() + 5 + ALPHA_BINS + LAY_BINS + THETA_BINS
+        self.h1() + ALPHA_BINS + LAY_BINS + LAWS.len() * THETA_BINS
     }
 }
 
@@ -112,8 +124,8 @@ pub fn theta_from_bottom_deg(y: f64, z: f64) -> f64 {
     z.atan2(-y).abs().to_degrees()
 }
 
-/// The sums of `run`, with Finnie's law `finnie` for the erosion.
-pub fn sums(run: &Run, finnie: &Finnie) -> RunSums {
+/// The sums of `run`, with the erosion laws `laws` (in the order of [`LAWS`]).
+pub fn sums(run: &Run, laws: &[ErosionModel; 3]) -> RunSums {
     let layout = Layout {
         nb: run.params.n_bins,
     };
@@ -135,18 +147,24 @@ pub fn sums(run: &Run, finnie: &Finnie) -> RunSums {
             s[layout.sz(b)] += p.sz[b];
         }
     }
+    let d = run.params.particle_diameter_m;
     for h in &run.hits {
         let s = &mut batches[h.particle_id % BATCHES];
-        let erosion = finnie.volume_per_mass(h.speed_in, h.alpha_in_deg.to_radians());
         s[layout.logged_hits()] += 1.0;
         s[layout.sum_alpha_in()] += h.alpha_in_deg;
         s[layout.sum_alpha_change()] += h.alpha_out_deg - h.alpha_in_deg;
         s[layout.sum_deflection()] += h.deflection_deg;
-        s[layout.sum_erosion()] += erosion;
+        s[layout.sum_alpha_element()] += h.alpha_element_deg;
         s[layout.alpha_hist(bin(h.alpha_in_deg, 0.0, 90.0, ALPHA_BINS))] += 1.0;
         s[layout.lay_hist(bin(h.lay_angle_deg, 0.0, 90.0, LAY_BINS))] += 1.0;
-        let theta = theta_from_bottom_deg(h.y, h.z);
-        s[layout.erosion_theta(bin(theta, 0.0, 180.0, THETA_BINS))] += erosion;
+        let theta = bin(theta_from_bottom_deg(h.y, h.z), 0.0, 180.0, THETA_BINS);
+        for (k, law) in laws.iter().enumerate() {
+            let on_element = law.volume_per_mass(h.speed_in, h.alpha_element_deg.to_radians(), d);
+            s[layout.sum_erosion(k, true)] += on_element;
+            s[layout.sum_erosion(k, false)] +=
+                law.volume_per_mass(h.speed_in, h.alpha_in_deg.to_radians(), d);
+            s[layout.erosion_theta(k, theta)] += on_element;
+        }
     }
     RunSums { layout, batches }
 }

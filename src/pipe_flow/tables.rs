@@ -6,7 +6,7 @@ use super::jackknife::{estimate, Estimate};
 use super::read::Run;
 use super::section::CrossSection;
 use super::stats::{angle_pdf, erosion_profile, profile, Profile, QUANTITIES};
-use super::sums::RunSums;
+use super::sums::{RunSums, LAWS};
 use crate::output::csv::CsvTable;
 use roughwall::format::fmt_num;
 
@@ -42,6 +42,21 @@ pub fn quantities(runs: &[&Analysed]) -> Vec<(&'static str, Estimate)> {
                 _ => estimate(&sums, |s| f(&l, s[0], r[0]) - f(&l, s[1], r[1])),
             };
             (q.name, e)
+        })
+        .collect()
+}
+
+/// Every whole-run quantity's ratio `a/b` (paired: the same batches of particles), in
+/// [`QUANTITIES`] order.
+fn ratios(a: &Analysed, b: &Analysed) -> Vec<Estimate> {
+    let l = a.sums.layout;
+    let (ra, rb) = (a.radius(), b.radius());
+    let sums = [&a.sums, &b.sums];
+    QUANTITIES
+        .iter()
+        .map(|q| {
+            let f = q.f;
+            estimate(&sums, |s| f(&l, s[0], ra) / f(&l, s[1], rb))
         })
         .collect()
 }
@@ -161,15 +176,20 @@ pub fn distributions(runs: &[Analysed]) -> CsvTable {
         "se",
     ]);
     for a in runs {
-        let sets = [
-            ("impact_angle_pdf", angle_pdf(&a.sums, false)),
-            ("lay_angle_pdf", angle_pdf(&a.sums, true)),
-            ("erosion_um_per_t", erosion_profile(&a.sums, a.radius())),
+        let mut sets = vec![
+            ("impact_angle_pdf".to_string(), angle_pdf(&a.sums, false)),
+            ("lay_angle_pdf".to_string(), angle_pdf(&a.sums, true)),
         ];
+        for (k, law) in LAWS.iter().enumerate() {
+            sets.push((
+                format!("erosion_{law}_um_per_t"),
+                erosion_profile(&a.sums, a.radius(), k),
+            ));
+        }
         for (q, bins) in sets {
             for b in bins {
                 let mut row = id_cells(a);
-                row.push(q.into());
+                row.push(q.clone());
                 row.push(fmt_num(b.lo));
                 row.push(fmt_num(b.hi));
                 row.extend(est_cells(Some(b.value)));
@@ -209,13 +229,29 @@ pub fn pairs(runs: &[Analysed]) -> Vec<(usize, usize)> {
         }
         let m = i.model.as_str();
         let smooth = find("main", d, "smooth", "paper");
+        // The technically smooth walls (`ts<Δγ>`, paper's model) of this diameter.
+        let technically_smooth: Vec<usize> = runs
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| {
+                let j = &b.run.info;
+                j.kind == "main" && j.diameter_um == d && j.wall.starts_with("ts")
+            })
+            .map(|(k, _)| k)
+            .collect();
         match i.wall.as_str() {
             "axial" | "circ" => {
                 push(find("main", d, &i.wall, m), find("main", d, "iso", m));
                 push(find("main", d, &i.wall, m), smooth);
             }
             "iso" => push(find("main", d, "iso", m), smooth),
+            w if w.starts_with("ts") => push(find("main", d, w, m), smooth),
             _ => {}
+        }
+        if m == "paper" && matches!(i.wall.as_str(), "iso" | "axial" | "circ") {
+            for &t in &technically_smooth {
+                push(find("main", d, &i.wall, m), Some(t));
+            }
         }
         if i.wall == "circ" {
             push(find("main", d, "circ", m), find("main", d, "axial", m));
@@ -227,8 +263,9 @@ pub fn pairs(runs: &[Analysed]) -> Vec<(usize, usize)> {
     out
 }
 
-/// `comparisons.csv`: for each pair, every whole-run quantity of both runs and their
-/// difference with its paired jackknife standard error and z.
+/// `comparisons.csv`: for each pair, every whole-run quantity of both runs, their
+/// difference with its paired jackknife standard error and z, and their ratio a/b with its
+/// paired jackknife standard error.
 pub fn comparisons(runs: &[Analysed]) -> CsvTable {
     let mut t = CsvTable::new(&[
         "diameter_um",
@@ -242,13 +279,18 @@ pub fn comparisons(runs: &[Analysed]) -> CsvTable {
         "difference",
         "se",
         "z",
+        "ratio",
+        "ratio_se",
     ]);
     for (ia, ib) in pairs(runs) {
         let (a, b) = (&runs[ia], &runs[ib]);
         let qa = quantities(&[a]);
         let qb = quantities(&[b]);
         let qd = quantities(&[a, b]);
-        for ((name, ea), ((_, eb), (_, ed))) in qa.iter().zip(qb.iter().zip(qd.iter())) {
+        let qr = ratios(a, b);
+        for (((name, ea), ((_, eb), (_, ed))), er) in
+            qa.iter().zip(qb.iter().zip(qd.iter())).zip(qr.iter())
+        {
             t.push(vec![
                 fmt_num(a.run.info.diameter_um),
                 a.run.info.name.clone(),
@@ -261,6 +303,89 @@ pub fn comparisons(runs: &[Analysed]) -> CsvTable {
                 fmt_num(ed.value),
                 fmt_num(ed.se),
                 fmt_num(ed.z()),
+                fmt_num(er.value),
+                fmt_num(er.se),
+            ]);
+        }
+    }
+    t
+}
+
+/// The kinds of run that are not sensitivity switches: the study itself and its checks.
+const NOT_SWITCHES: [&str; 3] = ["main", "mesh", "development"];
+
+/// The quantities whose lay ratio (circumferential over axial) `sensitivity.csv` follows.
+pub const SENSITIVE: [&str; 5] = [
+    "collisions_per_m",
+    "rms_ur_m_s",
+    "erosion_finnie_um_per_t",
+    "erosion_oka_um_per_t",
+    "erosion_dnv_um_per_t",
+];
+
+/// `sensitivity.csv`: for each physics switch (a run `kind` other than `main`, `mesh` and
+/// `development`, run for both the axial and the circumferential lay), each quantity of
+/// [`SENSITIVE`]: the lay ratio circumferential/axial in the study and with the switch, and
+/// the switch's change of it, with paired jackknife standard errors (the four runs share
+/// their particles, batch by batch).
+pub fn sensitivity(runs: &[Analysed]) -> CsvTable {
+    let mut t = CsvTable::new(&[
+        "diameter_um",
+        "switch",
+        "model",
+        "quantity",
+        "ratio_study",
+        "ratio_study_se",
+        "ratio_switch",
+        "ratio_switch_se",
+        "change",
+        "change_se",
+        "z",
+    ]);
+    let find = |kind: &str, d: f64, wall: &str, model: &str| {
+        runs.iter().find(|a| {
+            let i = &a.run.info;
+            i.kind == kind && i.diameter_um == d && i.wall == wall && i.model == model
+        })
+    };
+    let mut done: Vec<(String, u64, String)> = Vec::new();
+    for a in runs {
+        let i = &a.run.info;
+        let key = (i.kind.clone(), i.diameter_um.to_bits(), i.model.clone());
+        if NOT_SWITCHES.contains(&i.kind.as_str()) || done.contains(&key) {
+            continue;
+        }
+        done.push(key);
+        let (d, m) = (i.diameter_um, i.model.as_str());
+        let (Some(sc), Some(sa), Some(mc), Some(ma)) = (
+            find(&i.kind, d, "circ", m),
+            find(&i.kind, d, "axial", m),
+            find("main", d, "circ", m),
+            find("main", d, "axial", m),
+        ) else {
+            continue;
+        };
+        let l = sc.sums.layout;
+        let r = 0.5 * sc.run.params.pipe_diameter_m;
+        let sums = [&mc.sums, &ma.sums, &sc.sums, &sa.sums];
+        for q in QUANTITIES.iter().filter(|q| SENSITIVE.contains(&q.name)) {
+            let f = q.f;
+            let ratio = |s: &[&[f64]], k: usize| f(&l, s[k], r) / f(&l, s[k + 1], r);
+            let study = estimate(&sums, |s| ratio(s, 0));
+            let switched = estimate(&sums, |s| ratio(s, 2));
+            let change = estimate(&sums, |s| ratio(s, 2) - ratio(s, 0));
+            t.push(vec![
+                fmt_num(d),
+                i.kind.clone(),
+                m.to_string(),
+                q.name.to_string(),
+                fmt_num(study.value),
+                fmt_num(study.se),
+                fmt_num(switched.value),
+                fmt_num(switched.se),
+                fmt_num(change.value),
+                fmt_num(change.se),
+                fmt_num(change.z()),
             ]);
         }
     }

@@ -101,6 +101,39 @@ fn pipe_flow_physics_and_rank_independence() {
         assert!((a - b).abs() <= 1e-12 * a, "{key:?}: |u| {a} -> {b}");
         let (ai, ao) = (num(h, "alpha_in_deg"), num(h, "alpha_out_deg"));
         assert!((ai - ao).abs() < 1e-6, "{key:?}: alpha {ai} -> {ao}");
+        // On a smooth wall the element struck is the wall.
+        let ae = num(h, "alpha_element_deg");
+        assert!((ae - ai).abs() < 1e-9, "{key:?}: element {ae} vs {ai}");
+    }
+    // On the rough elastic walls the element struck mirrors the velocity, so its impact
+    // angle is half the turn of the velocity: sin α_e = |u⁺ − u⁻|/(2|u|), from the logged
+    // α⁻, α⁺ and the deflection δ out of the incident plane.
+    for w in ["iso", "axial", "circ"] {
+        let rough = hits(&runs.join(format!("150um-{w}-paper")));
+        let mut tilted = 0;
+        for (key, h) in &rough {
+            if num(h, "status") != 0.0 {
+                continue;
+            }
+            let r = |k: &str| num(h, k).to_radians();
+            let (ai, ao, dl) = (r("alpha_in_deg"), r("alpha_out_deg"), r("deflection_deg"));
+            let turn = ((ao.cos() * dl.cos() - ai.cos()).powi(2)
+                + (ao.sin() + ai.sin()).powi(2)
+                + (ao.cos() * dl.sin()).powi(2))
+            .sqrt();
+            let expect = (0.5 * turn).asin().to_degrees();
+            let ae = num(h, "alpha_element_deg");
+            assert!(
+                (ae - expect).abs() < 1e-5,
+                "{w} {key:?}: element {ae} vs {expect}"
+            );
+            tilted += usize::from((ae - num(h, "alpha_in_deg")).abs() > 0.01);
+        }
+        assert!(
+            2 * tilted > rough.len(),
+            "{w}: {tilted} of {} hits on a tilted element",
+            rough.len()
+        );
     }
 
     let summary: HashMap<String, HashMap<String, String>> = rows(&work.join("stats/summary.csv"))
@@ -228,7 +261,33 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
     );
     let dir = results.join("pipe-flow-quick");
     let summary = rows(&dir.join("summary.csv"));
-    assert_eq!(summary.len(), 16, "2 diameters x 8 walls and models");
+    assert_eq!(
+        summary.len(),
+        30,
+        "2 diameters x (11 walls and models + 2 switches on 2 lays)"
+    );
+    // Each bead size rebounds off the rough wall as its own sphere sees it
+    // (configs/cases/pipe-wall.toml): more across the lay than the 500 µm bead's 7.5°.
+    for (d, zeta) in [(100.0, 8.387), (200.0, 8.352)] {
+        let axial = summary
+            .iter()
+            .find(|r| r["run"] == format!("{d}um-axial-paper"))
+            .unwrap();
+        assert!(
+            (num(axial, "delta_zeta_deg") - zeta).abs() < 0.01,
+            "{axial:?}"
+        );
+        // The technically smooth walls are there, with their Δγ.
+        for (w, dg) in [("ts0.5", 0.5), ("ts1", 1.0), ("ts2", 2.0)] {
+            let t = summary
+                .iter()
+                .find(|r| r["run"] == format!("{d}um-{w}-paper"))
+                .unwrap();
+            assert_eq!(num(t, "delta_xi_deg"), dg);
+        }
+        // Erosion at the facet: rough walls strike steeper facets than the mean wall.
+        assert!(num(axial, "mean_alpha_element_deg") > num(axial, "mean_alpha_in_deg"));
+    }
     for r in &summary {
         assert!(num(r, "hits") > 0.0, "{}: no hit", r["run"]);
         for (k, v) in r {
@@ -258,4 +317,21 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
     );
     let md = std::fs::read_to_string(results.join("REPORT.md")).unwrap();
     assert!(md.contains("Quick mode only") && md.contains("lay around the circumference"));
+    assert!(md.contains("Kussin & Sommerfeld (2002)") && md.contains("at the facet"));
+    // The sensitivity table: both switches, both sizes, with a change and its error.
+    let sens = rows(&dir.join("sensitivity.csv"));
+    for d in ["100", "200"] {
+        for switch in ["no-dispersion", "sec4-deviations"] {
+            let r = sens
+                .iter()
+                .find(|r| {
+                    r["diameter_um"] == d
+                        && r["switch"] == switch
+                        && r["quantity"] == "collisions_per_m"
+                })
+                .unwrap_or_else(|| panic!("{d} µm, {switch}: no row"));
+            assert!(num(r, "change_se") > 0.0, "{r:?}");
+        }
+    }
+    assert!(md.contains("**Sensitivity**"));
 }

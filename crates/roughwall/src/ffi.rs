@@ -505,6 +505,34 @@ pub unsafe extern "C" fn rw_rebound(
     })
 }
 
+/// Impact angle (rad, 0 to π/2) of `hit`'s incident velocity (relative to the wall) on the
+/// wall element that produced `result`: the facet the particle struck, whose angle erosion
+/// laws (Finnie, Oka, DNV) take, rather than the mean wall's. It follows from
+/// `result->gamma`, `result->gamma_star` and the incident direction in the wall's frame of
+/// `hit->normal` and `hit->lay` (Radenkovic & Simonin 2021, Eqs. 10, 20–23). On a smooth
+/// wall it is the angle to the wall. 0 when `result->status` is not `RW_OK` or a pointer is
+/// NULL. Allocates nothing; never NaN.
+///
+/// # Safety
+/// `hit` and `result` are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn rw_element_impact_angle(
+    hit: *const rw_hit,
+    result: *const rw_result,
+) -> f64 {
+    if hit.is_null() || result.is_null() {
+        return 0.0;
+    }
+    let (h, r) = (hit_of(&*hit), *result);
+    if r.status != RW_OK {
+        return 0.0;
+    }
+    catch_unwind(AssertUnwindSafe(|| {
+        crate::wall_model::element_impact_angle(&h, r.gamma, r.gamma_star)
+    }))
+    .unwrap_or(0.0)
+}
+
 /// Raw pointers of a batch, shareable between the threads of one call: each thread touches
 /// only its own indices.
 #[derive(Clone, Copy)]
@@ -721,6 +749,64 @@ mod tests {
             assert_eq!(r.velocity.map(f64::to_bits), o.velocity.map(f64::to_bits));
             assert_eq!((r.gamma, r.candidate_walls), (o.gamma, o.candidate_walls));
         }
+        unsafe { rw_wall_free(w) };
+    }
+
+    /// On an ideally elastic wall the rebound is the mirror image of the incident velocity in
+    /// the element struck, so that element's impact angle is half the turn of the velocity:
+    /// `sin α = |u⁺ − u⁻| / (2|u|)`, whatever the host's normal orientation and the lay.
+    /// A smooth wall gives the angle to the wall; no rebound or a NULL pointer gives 0.
+    #[test]
+    fn the_element_impact_angle_is_half_the_turn_of_an_elastic_rebound() {
+        let mut p = params();
+        p.law = RW_LAW_ELASTIC;
+        p.preset = RW_PRESET_NONE;
+        let (s, w, _) = wall(&p);
+        assert_eq!(s, RW_OK);
+        let mut tilted = 0;
+        for i in 0..500 {
+            let mut h = hit(i);
+            h.lay = [(i as f64).cos(), 0.3, (i as f64).sin()];
+            if i % 2 == 1 {
+                h.normal = [0.0, 2.0, 0.0];
+            }
+            let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
+            assert_eq!(unsafe { rw_rebound(w, &h, r.as_mut_ptr()) }, RW_OK);
+            let r = unsafe { r.assume_init() };
+            let a = unsafe { rw_element_impact_angle(&h, &r) };
+            let (u_in, u_out) = (
+                nalgebra::Vector3::from(h.velocity),
+                nalgebra::Vector3::from(r.velocity),
+            );
+            let expect = ((u_out - u_in).norm() / (2.0 * u_in.norm())).asin();
+            assert!((a - expect).abs() < 1e-9, "{i}: {a} vs {expect}");
+            let mean_wall = (1.5 / u_in.norm()).asin();
+            tilted += usize::from((a - mean_wall).abs() > 1e-3);
+        }
+        // The rough wall's elements are not the mean wall.
+        assert!(tilted > 400, "{tilted}");
+        unsafe { rw_wall_free(w) };
+        // A smooth wall: the angle to the wall.
+        let (s, w, _) = wall(&{
+            let mut p = p;
+            p.delta_xi_deg = 0.0;
+            p.delta_zeta_deg = 0.0;
+            p
+        });
+        assert_eq!(s, RW_OK);
+        let h = hit(1);
+        let mut r = std::mem::MaybeUninit::<rw_result>::uninit();
+        assert_eq!(unsafe { rw_rebound(w, &h, r.as_mut_ptr()) }, RW_OK);
+        let mut r = unsafe { r.assume_init() };
+        let u = nalgebra::Vector3::from(h.velocity);
+        let a = unsafe { rw_element_impact_angle(&h, &r) };
+        assert!((a - (1.5 / u.norm()).asin()).abs() < 1e-15);
+        assert_eq!(
+            unsafe { rw_element_impact_angle(std::ptr::null(), &r) },
+            0.0
+        );
+        r.status = RW_NOT_APPROACHING;
+        assert_eq!(unsafe { rw_element_impact_angle(&h, &r) }, 0.0);
         unsafe { rw_wall_free(w) };
     }
 

@@ -321,6 +321,20 @@ pub struct HitOutcome {
 }
 
 impl HitOutcome {
+    /// The impact angle (rad, in `[0, π/2]`) of `hit`'s velocity relative to the wall on the
+    /// wall element that produced this rebound: the facet the particle struck, whose angle
+    /// the erosion laws take, rather than the mean wall's. From [`HitOutcome::gamma`],
+    /// [`HitOutcome::gamma_star`] and the incident direction in the wall's frame
+    /// ([`crate::erosion::ImpactAngle::on_element`]; Radenkovic & Simonin 2021, Eqs. 10,
+    /// 20–23); on a smooth wall (`γ = γ* = 0`) the angle to the wall. 0 unless a rebound
+    /// was computed.
+    pub fn element_impact_angle(&self, hit: &Hit) -> f64 {
+        if self.status != HitStatus::Rebound {
+            return 0.0;
+        }
+        element_impact_angle(hit, self.gamma, self.gamma_star)
+    }
+
     /// A particle not rebounded: it leaves as it came, a non-finite component as 0, so that
     /// no NaN or infinity reaches the host.
     fn unchanged(hit: &Hit, status: HitStatus) -> HitOutcome {
@@ -334,6 +348,21 @@ impl HitOutcome {
             candidate_walls: 0,
         }
     }
+}
+
+/// [`HitOutcome::element_impact_angle`] of the element `(γ, γ*)` (rad); 0 for a hit whose
+/// frame or velocity cannot be used (the statuses other than a rebound).
+pub fn element_impact_angle(hit: &Hit, gamma: f64, gamma_star: f64) -> f64 {
+    let Some(frame) = Frame::new(hit) else {
+        return 0.0;
+    };
+    let u_host = Vector3::from(hit.velocity) - Vector3::from(hit.wall_velocity);
+    let u = frame.to_local(&scale_pow2(u_host, -taming_exponent(&u_host)));
+    let speed = u.norm();
+    if !(speed.is_finite() && gamma.is_finite() && gamma_star.is_finite()) {
+        return 0.0;
+    }
+    crate::erosion::ImpactAngle::on_element(&u, speed, gamma, gamma_star).alpha
 }
 
 /// Components within `[2^-SAFE_EXPONENT, 2^SAFE_EXPONENT]` have squares and sums of three

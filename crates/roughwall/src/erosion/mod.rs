@@ -142,30 +142,78 @@ impl ImpactAngle {
     }
 }
 
+impl ImpactAngle {
+    /// The impact angle on the virtual wall element a rough-wall model drew: velocity `u`
+    /// (of magnitude `speed`) in the wall's frame (mean wall `y = 0`, `x` along the lay)
+    /// arriving on the element of inclinations `γ` in the incident plane and `γ*` normal to
+    /// it (Radenkovic & Simonin 2021, Eqs. 20–21: what `rw_result.gamma` and `gamma_star`
+    /// report), whose unit normal follows from them by Eqs. (23) and (10) at the incident
+    /// direction `β⁻` (docs/physics.md §2): the normal the model collided with. With `γ* = 0`
+    /// it is `α⁻ + γ` to first order.
+    pub fn on_element(
+        u: &nalgebra::Vector3<f64>,
+        speed: f64,
+        gamma: f64,
+        gamma_star: f64,
+    ) -> ImpactAngle {
+        let (_, beta) = crate::angles::incident_angles(u);
+        let n = crate::angles::normal_from_gamma(gamma, gamma_star, beta);
+        ImpactAngle::of_velocity(u, speed, &n)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use nalgebra::Vector3;
 
-    fn at(u: Vector3<f64>) -> ImpactAngle {
-        ImpactAngle::of_velocity(&u, u.norm(), &Vector3::new(0.0, 1.0, 0.0))
+    #[test]
+    fn the_elements_angle_is_alpha_plus_gamma_in_plane() {
+        let at = |alpha: f64, beta: f64, g: f64, gs: f64| {
+            let u = crate::angles::velocity_from_angles(3.0, -alpha, beta);
+            ImpactAngle::on_element(&u, 3.0, g, gs).alpha
+        };
+        assert!((at(0.1, 0.0, 0.05, 0.0) - 0.15).abs() < 1e-14);
+        // Along the lay or across it, the same element in the incident frame.
+        assert!((at(0.1, 1.2, 0.05, 0.0) - 0.15).abs() < 1e-3);
+        // Tilted away by more than α: the particle does not reach the element's face.
+        assert_eq!(at(0.1, 0.0, -0.2, 0.0), 0.0);
+        // γ* tilts the element about the incident direction: the angle drops, evenly in ±γ*.
+        let (p, m) = (at(0.3, 0.0, 0.0, 0.2), at(0.3, 0.0, 0.0, -0.2));
+        assert!(p < 0.3 && (p - m).abs() < 1e-15);
     }
 
+    /// The angle from `(γ, γ*)` and the incident direction (what the C library reports) is
+    /// the angle on the accepted element's own normal, for the paper's model on an
+    /// anisotropic wall, from any direction.
     #[test]
-    fn impact_angle_is_to_the_local_plane() {
-        let a = at(Vector3::new(1.0, -1.0, 0.0));
-        assert!((a.alpha - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
-        assert!((a.sin - a.alpha.sin()).abs() < 1e-15 && (a.cos - a.alpha.cos()).abs() < 1e-15);
-        // Normal incidence: exactly 90°, cos α exactly 0.
-        let n = at(Vector3::new(0.0, -3.0, 0.0));
-        assert_eq!(
-            (n.alpha, n.sin, n.cos),
-            (std::f64::consts::FRAC_PI_2, 1.0, 0.0)
-        );
-        // No speed, or leaving the element: no impact.
-        assert_eq!(at(Vector3::zeros()).alpha, 0.0);
-        assert_eq!(at(Vector3::new(1.0, 1.0, 0.0)).alpha, 0.0);
-        assert_eq!(at(Vector3::new(f64::NAN, -1.0, 0.0)).alpha, 0.0);
+    fn the_elements_angle_from_gammas_is_the_angle_on_its_normal() {
+        use crate::models::{rebound_with, AnyModel};
+        use crate::stochastic::Contact;
+        let wall = crate::Deviations {
+            delta_xi: 3.8f64.to_radians(),
+            delta_zeta: 7.5f64.to_radians(),
+        };
+        let law = crate::CollisionLaw::Elastic;
+        let contact = Contact {
+            wall: &wall,
+            law: &law,
+            psi: 2.0,
+            diameter_m: 0.0,
+        };
+        for i in 0..2000u64 {
+            let mut r = crate::rng::stream(11, &[i]);
+            let alpha = (1.0 + (i % 60) as f64).to_radians();
+            let beta = ((i * 37) % 360) as f64 * std::f64::consts::PI / 180.0 - 3.0;
+            let u = crate::angles::velocity_from_angles(7.0, -alpha, beta);
+            let reb = rebound_with(&AnyModel::PAPER, u, Vector3::zeros(), &contact, &mut r);
+            let on_normal = ImpactAngle::of_velocity(&u, 7.0, &reb.normal);
+            let from_gammas = ImpactAngle::on_element(&u, 7.0, reb.gamma, reb.gamma_star);
+            assert!(
+                (on_normal.alpha - from_gammas.alpha).abs() < 1e-12,
+                "{i}: {on_normal:?} {from_gammas:?}"
+            );
+        }
     }
 
     fn models() -> [ErosionModel; 4] {

@@ -8,7 +8,8 @@
  * The key of the hit's random stream is (particle id, collision index), the id the
  * particle carries between ranks and through restarts (../case_src/cswm_ids.h).
  * In the sampling window every rebound (status RW_OK) is counted (pipe_tally.c) and, with
- * log_hits, every hit is written to hits_rank<r>.csv: impact point, impact angle, angle to
+ * log_hits, every hit is written to hits_rank<r>.csv: impact point, impact angle (to the
+ * mean wall, and to the wall element the library drew: rw_element_impact_angle), angle to
  * the lay, speeds before and after, status. The rest of the step after a hit follows the
  * rebound velocity.
  * PINNED TO code_saturne 6.0.x (../case_src/cswm_wall_hit.h).                           */
@@ -86,7 +87,7 @@ _deg(double rad)
 static void
 _log_hit(unsigned long long pid, unsigned long long cidx, const cs_real_t xi[3],
          const cs_real_t n[3], const double lay[3], const double u_in[3],
-         const double u_out[3], int status, unsigned candidates)
+         const double u_out[3], int status, unsigned candidates, double alpha_element)
 {
   if (_hits_f == NULL) {
     char name[64];
@@ -95,7 +96,8 @@ _log_hit(unsigned long long pid, unsigned long long cidx, const cs_real_t xi[3],
     if (_hits_f == NULL)
       bft_error(__FILE__, __LINE__, 0, "cannot open %s", name);
     fprintf(_hits_f, "particle_id,collision_index,step,y,z,alpha_in_deg,lay_angle_deg,"
-                     "speed_in,speed_out,alpha_out_deg,deflection_deg,status,candidate_walls\n");
+                     "speed_in,speed_out,alpha_out_deg,deflection_deg,status,candidate_walls,"
+                     "alpha_element_deg\n");
   }
   double s_in = cs_math_3_norm(u_in), s_out = cs_math_3_norm(u_out);
   double un_in = fabs(cs_math_3_dot_product(u_in, n));
@@ -117,11 +119,11 @@ _log_hit(unsigned long long pid, unsigned long long cidx, const cs_real_t xi[3],
     uo[k] = u_out[k] - don * n[k];
   double cd = cs_math_3_dot_product(ut, uo)
               / (cs_math_3_norm(ut) * cs_math_3_norm(uo) + 1e-300);
-  fprintf(_hits_f, "%llu,%llu,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%u\n",
+  fprintf(_hits_f, "%llu,%llu,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%u,%.17g\n",
           pid, cidx, cs_glob_time_step->nt_cur, xi[1], xi[2],
           _deg(asin(fmin(1., un_in / s_in))), _deg(acos(fmin(1., c))), s_in, s_out,
           _deg(asin(fmin(1., un_out / s_out))), _deg(acos(fmax(-1., fmin(1., cd)))), status,
-          candidates);
+          candidates, _deg(alpha_element));
 }
 
 void
@@ -188,7 +190,7 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
       pipe_tally_hit(pid);
     if (pipe_params()->log_hits)
       _log_hit(pid, cidx, c_intersect, face_norm, lay, hit.velocity, res.velocity, status,
-               res.candidate_walls);
+               res.candidate_walls, rw_element_impact_angle(&hit, &res));
   }
 }
 

@@ -71,23 +71,27 @@ struct Outputs<'a> {
     gamma: &'a mut [f64],
     gamma_star: &'a mut [f64],
     candidate_walls: &'a mut [u32],
+    alpha_element: &'a mut [f64],
 }
 
 impl Outputs<'_> {
-    fn put(&mut self, k: usize, o: &HitOutcome) {
+    fn put(&mut self, k: usize, hit: &Hit, o: &HitOutcome) {
         self.velocity[3 * k..3 * k + 3].copy_from_slice(&o.velocity);
         self.spin[3 * k..3 * k + 3].copy_from_slice(&o.spin);
         self.status[k] = o.status as i32;
         self.gamma[k] = o.gamma;
         self.gamma_star[k] = o.gamma_star;
         self.candidate_walls[k] = o.candidate_walls;
+        // The C library's `rw_element_impact_angle` of the same hit and result.
+        self.alpha_element[k] = o.element_impact_angle(hit);
     }
 }
 
 /// The rebounds of hits `first..first + out.status.len()`.
 fn run(model: &WallModel, inputs: &Inputs, first: usize, mut out: Outputs) {
     for k in 0..out.status.len() {
-        out.put(k, &model.rebound(&inputs.hit(first + k)));
+        let hit = inputs.hit(first + k);
+        out.put(k, &hit, &model.rebound(&hit));
     }
 }
 
@@ -114,6 +118,7 @@ fn run_all(
         gamma,
         gamma_star,
         candidate_walls,
+        alpha_element,
     } = out;
     std::thread::scope(|s| {
         let shares = velocity
@@ -122,9 +127,12 @@ fn run_all(
             .zip(status.chunks_mut(chunk))
             .zip(gamma.chunks_mut(chunk))
             .zip(gamma_star.chunks_mut(chunk))
-            .zip(candidate_walls.chunks_mut(chunk));
-        for (k, (((((velocity, spin), status), gamma), gamma_star), candidate_walls)) in
-            shares.enumerate()
+            .zip(candidate_walls.chunks_mut(chunk))
+            .zip(alpha_element.chunks_mut(chunk));
+        for (
+            k,
+            ((((((velocity, spin), status), gamma), gamma_star), candidate_walls), alpha_element),
+        ) in shares.enumerate()
         {
             let share = Outputs {
                 velocity,
@@ -133,6 +141,7 @@ fn run_all(
                 gamma,
                 gamma_star,
                 candidate_walls,
+                alpha_element,
             };
             std::thread::Builder::new()
                 .spawn_scoped(s, move || run(model, inputs, k * chunk, share))?;
@@ -236,7 +245,7 @@ impl WallCore {
 
     /// The rebounds of `n` hits. Vector inputs are C-contiguous `(1, 3)` or `(n, 3)` float64
     /// arrays, the others `(1,)` or `(n,)`; returns (velocity, spin, status, gamma,
-    /// gamma_star, candidate_walls) as new arrays. The GIL is released while the hits run.
+    /// gamma_star, candidate_walls, alpha_element) as new arrays. The GIL is released while the hits run.
     /// `n_from` names the argument whose rows set `n` in messages (default `n`): outputs the
     /// process cannot hold are a `MemoryError` naming it, before anything is allocated.
     #[pyo3(signature = (n, velocity, normal, lay, spin, wall_velocity, diameter, particle_id, collision_index, threads, n_from=None))]
@@ -257,13 +266,13 @@ impl WallCore {
         n_from: Option<String>,
     ) -> PyResult<Bound<'py, PyTuple>> {
         guarded(|| {
-            // Outputs: 3 + 3 float64, 2 float64, an int32 and a uint32 per hit.
+            // Outputs: 3 + 3 float64, 3 float64, an int32 and a uint32 per hit.
             let (key, value) = match n_from.as_deref() {
                 None | Some("n") => ("n".to_string(), n.to_string()),
                 Some(name) => (name.to_string(), format!("{n} hits")),
             };
             let per_hit =
-                (6 * size_of::<f64>() + 2 * size_of::<f64>() + 2 * size_of::<u32>()) as u64;
+                (6 * size_of::<f64>() + 3 * size_of::<f64>() + 2 * size_of::<u32>()) as u64;
             let what = format!("returning the rebounds of {n} hits");
             let bytes = bytes_of(&key, &value, n, per_hit, &what)?;
             let n3 = n.checked_mul(3).ok_or_else(|| {
@@ -320,7 +329,7 @@ impl WallCore {
             } else {
                 threads
             };
-            let (velocity_out, spin_out, status, gamma, gamma_star, candidate_walls) =
+            let (velocity_out, spin_out, status, gamma, gamma_star, candidate_walls, alpha_element) =
                 py.detach(|| {
                     guarded(|| {
                         require(&key, &value, bytes, &what)?;
@@ -331,6 +340,8 @@ impl WallCore {
                         let mut gamma_star = zeroed(&key, &value, n, "the inclinations γ*")?;
                         let mut candidates =
                             zeroed::<u32>(&key, &value, n, "the candidate counts")?;
+                        let mut alpha_element =
+                            zeroed(&key, &value, n, "the impact angles on the elements")?;
                         let out = Outputs {
                             velocity: &mut v,
                             spin: &mut w,
@@ -338,13 +349,14 @@ impl WallCore {
                             gamma: &mut gamma,
                             gamma_star: &mut gamma_star,
                             candidate_walls: &mut candidates,
+                            alpha_element: &mut alpha_element,
                         };
                         run_all(&model, &inputs, n, threads, out).map_err(|e| {
                             PyOSError::new_err(format!(
                                 "`threads` = {threads}: could not start the threads ({e})"
                             ))
                         })?;
-                        Ok((v, w, status, gamma, gamma_star, candidates))
+                        Ok((v, w, status, gamma, gamma_star, candidates, alpha_element))
                     })
                 })?;
             let vec3 = |v: Vec<f64>| PyArray1::from_vec(py, v).reshape([n, 3]);
@@ -357,6 +369,7 @@ impl WallCore {
                     PyArray1::from_vec(py, gamma).into_any(),
                     PyArray1::from_vec(py, gamma_star).into_any(),
                     PyArray1::from_vec(py, candidate_walls).into_any(),
+                    PyArray1::from_vec(py, alpha_element).into_any(),
                 ],
             )
         })

@@ -86,6 +86,8 @@ def load(path: str | None = None) -> C.CDLL:
     lib.rw_wall_free.argtypes = [C.c_void_p]
     lib.rw_rebound.argtypes = [C.c_void_p, C.POINTER(Hit), C.POINTER(Result)]
     lib.rw_rebound_batch.argtypes = [C.c_void_p, C.POINTER(Batch), C.c_int32]
+    lib.rw_element_impact_angle.argtypes = [C.POINTER(Hit), C.POINTER(Result)]
+    lib.rw_element_impact_angle.restype = C.c_double
     return lib
 
 
@@ -120,6 +122,13 @@ class CWall:
         r = Result()
         self.lib.rw_rebound(self.handle, C.byref(h), C.byref(r))
         return r
+
+    def element_angle(self, v, n, l, d, pid, cix, spin=(0, 0, 0), wall_velocity=(0, 0, 0)) -> float:
+        """rw_element_impact_angle of one hit's rw_rebound."""
+        h = Hit(D3(*v), D3(*spin), D3(*n), D3(*l), D3(*wall_velocity), d, pid, cix)
+        r = Result()
+        self.lib.rw_rebound(self.handle, C.byref(h), C.byref(r))
+        return self.lib.rw_element_impact_angle(C.byref(h), C.byref(r))
 
     def batch_inputs(self, velocity, normal, lay, diameter, particle_id, collision_index, spin=None, wall_velocity=None):
         """Struct-of-arrays columns (kept alive in the returned dict) and their rw_batch."""

@@ -36,6 +36,13 @@ def test_every_bit_is_the_c_librarys(c_library, case):
                               int(hits["particle_id"][i]), int(hits["collision_index"][i]),
                               hits["spin"][i], hits["wall_velocity"][i])
         assert list(r.velocity) == list(got.velocity[i]) and r.status == got.status[i]
+        # The facet's impact angle: the C library's rw_element_impact_angle, bit for bit.
+        a = cwall.element_angle(hits["velocity"][i], hits["normal"][i], hits["lay"][i], hits["diameter"][i],
+                                int(hits["particle_id"][i]), int(hits["collision_index"][i]),
+                                hits["spin"][i], hits["wall_velocity"][i])
+        assert a == got.alpha_element[i]
+    assert np.all(np.isfinite(got.alpha_element)) and np.all(got.alpha_element <= np.pi / 2)
+    assert np.all(got.alpha_element[got.status != roughwall.OK] == 0.0)
 
 
 @pytest.mark.parametrize(

@@ -29,6 +29,7 @@ class Rebound(NamedTuple):
     gamma: np.ndarray  # (n,) rad, Eq. 20
     gamma_star: np.ndarray  # (n,) rad, Eq. 21
     candidate_walls: np.ndarray  # (n,) uint32
+    alpha_element: np.ndarray  # (n,) rad, impact angle on the facet struck
 
 class Wall:
     seed: int

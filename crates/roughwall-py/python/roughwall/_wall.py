@@ -36,6 +36,10 @@ class Rebound(NamedTuple):
         (Radenkovic & Simonin 2021, Eq. 20); 0 for a smooth wall or an unchanged particle.
     gamma_star: (n,) inclination γ* (rad) normal to the incident plane (Eq. 21).
     candidate_walls: (n,) uint32: virtual walls drawn (≥ 1 for a rebound).
+    alpha_element: (n,) impact angle (rad, 0 … π/2) on the wall element that produced the
+        rebound: the facet struck, which erosion laws take (the C library's
+        `rw_element_impact_angle`); on a smooth wall the angle to the wall; 0 for a hit not
+        rebounded.
 
     With every input a single vector or number, the rows are squeezed: velocity (3,), status
     a 0-d array, and so on.
@@ -47,6 +51,7 @@ class Rebound(NamedTuple):
     gamma: np.ndarray
     gamma_star: np.ndarray
     candidate_walls: np.ndarray
+    alpha_element: np.ndarray
 
 
 class Wall:

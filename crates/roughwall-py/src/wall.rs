@@ -63,6 +63,16 @@ impl Inputs<'_> {
     }
 }
 
+/// `alpha_element` cut into the threads' shares: `chunk` values each, or, when the angles were
+/// not asked for (an empty slice), an empty slice for each of the `t` threads.
+fn element_shares(alpha_element: &mut [f64], chunk: usize, t: usize) -> Vec<&mut [f64]> {
+    if alpha_element.is_empty() {
+        (0..t).map(|_| <&mut [f64]>::default()).collect()
+    } else {
+        alpha_element.chunks_mut(chunk).collect()
+    }
+}
+
 /// The outputs of a run of consecutive hits.
 struct Outputs<'a> {
     velocity: &'a mut [f64],
@@ -82,8 +92,11 @@ impl Outputs<'_> {
         self.gamma[k] = o.gamma;
         self.gamma_star[k] = o.gamma_star;
         self.candidate_walls[k] = o.candidate_walls;
-        // The C library's `rw_element_impact_angle` of the same hit and result.
-        self.alpha_element[k] = o.element_impact_angle(hit);
+        // The C library's `rw_element_impact_angle` of the same hit and result, when asked
+        // for (an empty slice otherwise: it costs a frame and three arcsines a hit).
+        if let Some(a) = self.alpha_element.get_mut(k) {
+            *a = o.element_impact_angle(hit);
+        }
     }
 }
 
@@ -128,7 +141,7 @@ fn run_all(
             .zip(gamma.chunks_mut(chunk))
             .zip(gamma_star.chunks_mut(chunk))
             .zip(candidate_walls.chunks_mut(chunk))
-            .zip(alpha_element.chunks_mut(chunk));
+            .zip(element_shares(alpha_element, chunk, t));
         for (
             k,
             ((((((velocity, spin), status), gamma), gamma_star), candidate_walls), alpha_element),
@@ -245,10 +258,11 @@ impl WallCore {
 
     /// The rebounds of `n` hits. Vector inputs are C-contiguous `(1, 3)` or `(n, 3)` float64
     /// arrays, the others `(1,)` or `(n,)`; returns (velocity, spin, status, gamma,
-    /// gamma_star, candidate_walls, alpha_element) as new arrays. The GIL is released while the hits run.
+    /// gamma_star, candidate_walls, alpha_element) as new arrays, alpha_element `None` unless
+    /// `element_angle`. The GIL is released while the hits run.
     /// `n_from` names the argument whose rows set `n` in messages (default `n`): outputs the
     /// process cannot hold are a `MemoryError` naming it, before anything is allocated.
-    #[pyo3(signature = (n, velocity, normal, lay, spin, wall_velocity, diameter, particle_id, collision_index, threads, n_from=None))]
+    #[pyo3(signature = (n, velocity, normal, lay, spin, wall_velocity, diameter, particle_id, collision_index, threads, n_from=None, element_angle=false))]
     #[allow(clippy::too_many_arguments)]
     fn rebound<'py>(
         &self,
@@ -264,15 +278,17 @@ impl WallCore {
         collision_index: PyReadonlyArray1<'py, u64>,
         threads: usize,
         n_from: Option<String>,
+        element_angle: bool,
     ) -> PyResult<Bound<'py, PyTuple>> {
         guarded(|| {
-            // Outputs: 3 + 3 float64, 3 float64, an int32 and a uint32 per hit.
+            // Outputs: 3 + 3 float64, 2 (3 with the element angles) float64, an int32 and a
+            // uint32 per hit.
             let (key, value) = match n_from.as_deref() {
                 None | Some("n") => ("n".to_string(), n.to_string()),
                 Some(name) => (name.to_string(), format!("{n} hits")),
             };
             let per_hit =
-                (6 * size_of::<f64>() + 3 * size_of::<f64>() + 2 * size_of::<u32>()) as u64;
+                ((8 + usize::from(element_angle)) * size_of::<f64>() + 2 * size_of::<u32>()) as u64;
             let what = format!("returning the rebounds of {n} hits");
             let bytes = bytes_of(&key, &value, n, per_hit, &what)?;
             let n3 = n.checked_mul(3).ok_or_else(|| {
@@ -340,8 +356,11 @@ impl WallCore {
                         let mut gamma_star = zeroed(&key, &value, n, "the inclinations γ*")?;
                         let mut candidates =
                             zeroed::<u32>(&key, &value, n, "the candidate counts")?;
-                        let mut alpha_element =
-                            zeroed(&key, &value, n, "the impact angles on the elements")?;
+                        let mut alpha_element = if element_angle {
+                            zeroed(&key, &value, n, "the impact angles on the elements")?
+                        } else {
+                            Vec::new()
+                        };
                         let out = Outputs {
                             velocity: &mut v,
                             spin: &mut w,
@@ -369,7 +388,11 @@ impl WallCore {
                     PyArray1::from_vec(py, gamma).into_any(),
                     PyArray1::from_vec(py, gamma_star).into_any(),
                     PyArray1::from_vec(py, candidate_walls).into_any(),
-                    PyArray1::from_vec(py, alpha_element).into_any(),
+                    if element_angle {
+                        PyArray1::from_vec(py, alpha_element).into_any()
+                    } else {
+                        py.None().into_bound(py)
+                    },
                 ],
             )
         })

@@ -25,7 +25,7 @@ def test_every_bit_is_the_c_librarys(c_library, case):
     cols, batch = cwall.batch_inputs(**hits)
     assert cwall.run_batch(batch, 1) == 0
     expected = outputs(cols)
-    got = roughwall.Wall(**kw).rebound(**hits, threads=2)
+    got = roughwall.Wall(**kw).rebound(**hits, threads=2, element_angle=True)
     for name, a, b in zip(roughwall.Rebound._fields, got, expected):
         assert a.dtype == b.dtype or name == "status", name
         assert np.array_equal(a.view(np.uint8), np.ascontiguousarray(b).view(np.uint8)), name
@@ -43,6 +43,11 @@ def test_every_bit_is_the_c_librarys(c_library, case):
         assert a == got.alpha_element[i]
     assert np.all(np.isfinite(got.alpha_element)) and np.all(got.alpha_element <= np.pi / 2)
     assert np.all(got.alpha_element[got.status != roughwall.OK] == 0.0)
+    # Not asked for: not computed, and every other output the same.
+    plain = roughwall.Wall(**kw).rebound(**hits, threads=2)
+    assert plain.alpha_element is None
+    for name, a, b in zip(roughwall.Rebound._fields[:-1], plain, got):
+        assert np.array_equal(a, b), name
 
 
 @pytest.mark.parametrize(

@@ -29,7 +29,7 @@ class Rebound(NamedTuple):
     gamma: np.ndarray  # (n,) rad, Eq. 20
     gamma_star: np.ndarray  # (n,) rad, Eq. 21
     candidate_walls: np.ndarray  # (n,) uint32
-    alpha_element: np.ndarray  # (n,) rad, impact angle on the facet struck
+    alpha_element: Optional[np.ndarray]  # (n,) rad, on the facet struck (element_angle=True)
 
 class Wall:
     seed: int
@@ -66,6 +66,7 @@ class Wall:
         particle_id: PerHit,
         collision_index: PerHit,
         threads: Optional[int] = None,
+        element_angle: bool = False,
     ) -> Rebound: ...
 
 class Surface(NamedTuple):

@@ -36,10 +36,10 @@ class Rebound(NamedTuple):
         (Radenkovic & Simonin 2021, Eq. 20); 0 for a smooth wall or an unchanged particle.
     gamma_star: (n,) inclination γ* (rad) normal to the incident plane (Eq. 21).
     candidate_walls: (n,) uint32: virtual walls drawn (≥ 1 for a rebound).
-    alpha_element: (n,) impact angle (rad, 0 … π/2) on the wall element that produced the
-        rebound: the facet struck, which erosion laws take (the C library's
-        `rw_element_impact_angle`); on a smooth wall the angle to the wall; 0 for a hit not
-        rebounded.
+    alpha_element: with `element_angle=True`, (n,) impact angle (rad, 0 … π/2) on the wall
+        element that produced the rebound: the facet struck, which erosion laws take (the C
+        library's `rw_element_impact_angle`); on a smooth wall the angle to the wall; 0 for
+        a hit not rebounded. None otherwise.
 
     With every input a single vector or number, the rows are squeezed: velocity (3,), status
     a 0-d array, and so on.
@@ -51,7 +51,7 @@ class Rebound(NamedTuple):
     gamma: np.ndarray
     gamma_star: np.ndarray
     candidate_walls: np.ndarray
-    alpha_element: np.ndarray
+    alpha_element: Optional[np.ndarray]
 
 
 class Wall:
@@ -165,6 +165,7 @@ class Wall:
         particle_id,
         collision_index,
         threads: Optional[int] = None,
+        element_angle: bool = False,
     ) -> Rebound:
         """The rebounds of n particle–wall hits, each exactly what the C library's
         rw_rebound returns for the same key (seed, particle_id, collision_index).
@@ -183,6 +184,9 @@ class Wall:
                 0 … 2**64 - 1): the same key gives the same rebound on any thread or rank.
             threads: threads to split the hits over (None: every core); the results do not
                 depend on it.
+            element_angle: also return each hit's impact angle on the facet struck
+                (`Rebound.alpha_element`, for erosion laws; it costs a frame and three
+                arcsines a hit).
 
         C-contiguous float64 inputs are read in place (no copy); the GIL is released while
         the hits run. A bad hit (NaN, zero normal, …) gets its status and finite outputs,
@@ -216,8 +220,10 @@ class Wall:
         # The argument whose rows set n: a MemoryError for outputs too large names it.
         n_from = next((k for k, r in given.items() if r == n), "n")
         out = Rebound(
-            *self._core.rebound(n, v, n_, l_, w, u, d, pid, cix, _args.threads(threads), n_from)
+            *self._core.rebound(
+                n, v, n_, l_, w, u, d, pid, cix, _args.threads(threads), n_from, bool(element_angle)
+            )
         )
         if not given:
-            return Rebound(*(a[0] for a in out))
+            return Rebound(*(None if a is None else a[0] for a in out))
         return out

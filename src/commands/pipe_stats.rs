@@ -25,7 +25,10 @@ pub const DNV: Dnv = Dnv {
     angle_dependency: AngleDependency::Ductile,
 };
 
-/// Oka's Vickers hardness of the wall (GPa): annealed stainless steel (about 180 HV).
+/// Oka's Vickers hardness of the wall (GPa). An assumed value, not a measured one: 1.8 GPa
+/// (about 180 HV) stands for an annealed austenitic stainless steel pipe; the study names no
+/// steel grade. Oka's angle function sharpens with hardness (Oka, Okamura & Yoshida 2005,
+/// Eq. 2: n1 = 0.71 Hv^0.14, n2 = 2.4 Hv^−0.94), so a harder wall moves its ratios.
 pub const OKA_HARDNESS_GPA: f64 = 1.8;
 
 /// The erosion laws of the tallies, in the order of `pipe_flow::sums::LAWS`: Finnie, Oka

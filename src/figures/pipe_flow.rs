@@ -4,6 +4,7 @@
 //! circumference). Every point carries its standard error as an error bar.
 
 use super::plot::{plot_grid_svg, Kind, Plot, Series};
+use crate::pipe_flow::read::is_smooth_limit;
 use crate::pipe_flow::stats::{angle_pdf, erosion_profile, profile, Profile, ProfilePoint};
 use crate::pipe_flow::tables::Analysed;
 use roughwall::Result;
@@ -49,12 +50,6 @@ fn runs_of<'a>(
         }
     }
     out
-}
-
-/// The smooth wall and the technically smooth ones (`ts<Δγ>`): run with the paper's model
-/// only.
-fn is_smooth_limit(wall: &str) -> bool {
-    wall == "smooth" || wall.starts_with("ts")
 }
 
 fn model_title(model: &str) -> &'static str {

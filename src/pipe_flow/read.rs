@@ -16,11 +16,29 @@ pub struct RunInfo {
     /// `main` (the study), `mesh` (the finer mesh) or `development` (the later window).
     pub kind: String,
     pub diameter_um: f64,
-    /// `smooth`, `iso`, `axial` or `circ`.
+    /// `smooth`, `ts0.5`, `ts1`, `ts2` (technically smooth), `iso`, `axial` or `circ`.
     pub wall: String,
     /// `paper`, `calibrated` or `sh1999`.
     pub model: String,
     pub dir: PathBuf,
+}
+
+impl RunInfo {
+    /// Whether the run's wall is technically smooth (`ts<Δγ>`, e.g. `ts0.5`).
+    pub fn technically_smooth(&self) -> bool {
+        is_technically_smooth(&self.wall)
+    }
+}
+
+/// Whether a wall name is a technically smooth wall of the study (`ts<Δγ>`: `ts0.5`, `ts1`,
+/// `ts2`; scripts/pipe-flow.sh `walls_for`).
+pub fn is_technically_smooth(wall: &str) -> bool {
+    wall.starts_with("ts")
+}
+
+/// The smooth limit or a technically smooth wall: run with the paper's model only.
+pub fn is_smooth_limit(wall: &str) -> bool {
+    wall == "smooth" || is_technically_smooth(wall)
 }
 
 /// The `pipe.params` values the statistics need.

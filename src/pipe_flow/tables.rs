@@ -235,7 +235,7 @@ pub fn pairs(runs: &[Analysed]) -> Vec<(usize, usize)> {
             .enumerate()
             .filter(|(_, b)| {
                 let j = &b.run.info;
-                j.kind == "main" && j.diameter_um == d && j.wall.starts_with("ts")
+                j.kind == "main" && j.diameter_um == d && j.technically_smooth()
             })
             .map(|(k, _)| k)
             .collect();
@@ -245,7 +245,7 @@ pub fn pairs(runs: &[Analysed]) -> Vec<(usize, usize)> {
                 push(find("main", d, &i.wall, m), smooth);
             }
             "iso" => push(find("main", d, "iso", m), smooth),
-            w if w.starts_with("ts") => push(find("main", d, w, m), smooth),
+            w if super::read::is_technically_smooth(w) => push(find("main", d, w, m), smooth),
             _ => {}
         }
         if m == "paper" && matches!(i.wall.as_str(), "iso" | "axial" | "circ") {

@@ -333,5 +333,7 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
             assert!(num(r, "change_se") > 0.0, "{r:?}");
         }
     }
-    assert!(md.contains("**Sensitivity**"));
+    assert!(
+        md.contains("**Sensitivity**") && md.contains("Against the first version of this study")
+    );
 }

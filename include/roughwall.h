@@ -281,6 +281,42 @@ typedef struct {
 } rw_result;
 
 /*
+ The carrier fluid and a particle where the particle is, for the between-hit laws
+ `rw_saffman_mei_lift`, `rw_magnus_lift` and `rw_spin_relax` (global axes, SI units;
+ `roughwall::carrier`).
+ */
+typedef struct {
+  /*
+   Fluid density (kg/m³, > 0).
+   */
+  double rho_f;
+  /*
+   Fluid dynamic viscosity (Pa s, > 0).
+   */
+  double mu_f;
+  /*
+   Particle density (kg/m³, > 0).
+   */
+  double rho_p;
+  /*
+   Particle diameter (m, > 0).
+   */
+  double d_p;
+  /*
+   The fluid's velocity as the particle sees it minus the particle's (m/s).
+   */
+  double slip[3];
+  /*
+   The fluid's vorticity, the curl of its velocity (1/s): the fluid turns at half of it.
+   */
+  double vorticity[3];
+  /*
+   The particle's angular velocity (rad/s).
+   */
+  double spin[3];
+} rw_fluid_point;
+
+/*
  `n` hits in struct-of-arrays form. Inputs marked "may be NULL" default to zero. Output
  arrays may be the input arrays (in-place update); those marked "may be NULL" are not
  written.
@@ -479,6 +515,43 @@ int32_t rw_rebound(const rw_wall *wall, const rw_hit *hit, rw_result *result);
  `hit` and `result` are NULL or valid.
  */
 double rw_element_impact_angle(const rw_hit *hit, const rw_result *result);
+
+/*
+ The Saffman–Mei shear-lift acceleration (m/s², force over the particle's mass) on the
+ particle of `point`, into `acceleration[0..3]`: Saffman's lift with Mei's (1992)
+ finite-Reynolds correction (`roughwall::carrier`; docs/physics.md §8a). A CFD
+ code adds it to gravity in its particle equation. `RW_OK`; `RW_INVALID_INPUT` (zeros
+ written) for a non-finite number or a non-positive property; `RW_NULL_POINTER`.
+
+ # Safety
+ `point` is NULL or valid; `acceleration` is NULL or holds 3 doubles.
+ */
+int32_t rw_saffman_mei_lift(const rw_fluid_point *point, double *acceleration);
+
+/*
+ The Magnus (rotational) lift acceleration (m/s²) on the particle of `point`, spinning at
+ `point->spin` relative to the fluid's rotation, into `acceleration[0..3]`, with
+ Oesterlé & Bui Dinh's (1998) coefficient (docs/physics.md §8a). Statuses
+ as `rw_saffman_mei_lift`.
+
+ # Safety
+ `point` is NULL or valid; `acceleration` is NULL or holds 3 doubles.
+ */
+int32_t rw_magnus_lift(const rw_fluid_point *point, double *acceleration);
+
+/*
+ The particle's angular velocity (rad/s) after `dt` seconds in the fluid of `point`,
+ into `spin[0..3]` (which may be `point->spin`): the rotational drag of Dennis, Singh &
+ Ingham (1980) relaxes it towards the fluid's rotation (docs/physics.md §8a), at the rate
+ of the start of the step (exact in the Stokes regime). Carry
+ `rw_result.spin` with this between hits and give it back in the next `rw_hit.spin`.
+ `RW_INVALID_INPUT` (the spin written back unchanged, non-finite components as 0) for a
+ non-finite number, a non-positive property or a negative `dt`.
+
+ # Safety
+ `point` is NULL or valid; `spin` is NULL or holds 3 doubles.
+ */
+int32_t rw_spin_relax(const rw_fluid_point *point, double dt, double *spin);
 
 /*
  The rebounds of `batch->n` hits (each exactly as `rw_rebound` gives it, whatever the

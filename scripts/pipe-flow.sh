@@ -12,7 +12,11 @@
 #   library's dilation of configs/cases/pipe-wall.toml, a Gaussian wall whose 500 um row is the
 #   Sec. 4 wall);
 # each rough wall with the paper's model and `calibrated`, the isotropic one also with
-# Sommerfeld-Huber 1999; the Sec. 4 glass-steel collision law everywhere.
+# Sommerfeld-Huber 1999; the Sec. 4 glass-steel collision law everywhere; the particles'
+# spin carried between hits, the Saffman-Mei and the Magnus lift (pipe_forces.h).
+# Sensitivity: each physics switch on both lays, paper's model: no spin, no Saffman-Mei, no
+# Magnus, no dispersion, code_saturne's complete Langevin model, the 500 um deviations, and
+# (full mode) a near-wall mesh (first-cell y+ about 10 instead of 33-42).
 # Full mode: 4000 particles per run, 0.5 s (about 170 D) before a 0.4 s sampling window, plus
 # a finer mesh (the isotropic and the smooth wall) and a later window for one wall (the
 # checks of docs/pipe-flow.md). Quick mode
@@ -50,7 +54,7 @@ DT_FLUID=0.001 NT_FLUID=$(particles 600 400)
 DT=0.0005
 NPART=$(particles 4000 400)
 T_DEV=$(particles 0.5 0.1) T_WIN=$(particles 0.4 0.1)
-MESH="8 8 1.1 20" FINE="12 12 1.05 30"
+MESH="8 8 1.1 20" FINE="12 12 1.05 30" NEARWALL="8 12 1.2 20"
 NP=$(steps "$(awk -v a="$T_DEV" -v b="$T_WIN" 'BEGIN { print a + b }')")
 
 stage_start "pipe flow: build and mesh"
@@ -73,6 +77,10 @@ if [ "$QUICK" != 1 ]; then
   "$PIPE_EX/setup_pipe.sh" "$WORK/fine" $FINE > /dev/null
   fluid "$WORK/fine"
   inject "$WORK/fine" 200
+  # shellcheck disable=SC2086
+  "$PIPE_EX/setup_pipe.sh" "$WORK/nearwall" $NEARWALL > /dev/null
+  fluid "$WORK/nearwall"
+  for d in $DIAMETERS_UM; do inject "$WORK/nearwall" "$d"; done
 fi
 stage_end
 
@@ -86,10 +94,18 @@ for d in $DIAMETERS_UM; do
     done
   done
   # Sensitivity switches (docs/pipe-flow.md, "Sensitivity"), each on the two lays: without
-  # code_saturne's Langevin dispersion; with the 500 um bead's deviations (the Sec. 4 wall)
-  # instead of this size's own.
+  # the spin, the Saffman-Mei lift, the Magnus lift or code_saturne's Langevin dispersion;
+  # with its complete Langevin model; on a near-wall mesh (full mode); with the 500 um
+  # bead's deviations (the Sec. 4 wall) instead of this size's own.
   for wall in axial circ; do
+    particles_run "${d}um-$wall-paper-no-spin" no-spin "$WORK/coarse" "$d" "$wall" paper spin 0
+    particles_run "${d}um-$wall-paper-no-saffman" no-saffman "$WORK/coarse" "$d" "$wall" paper saffman 0
+    particles_run "${d}um-$wall-paper-no-magnus" no-magnus "$WORK/coarse" "$d" "$wall" paper magnus 0
     particles_run "${d}um-$wall-paper-no-dispersion" no-dispersion "$WORK/coarse" "$d" "$wall" paper dispersion 0
+    particles_run "${d}um-$wall-paper-complete-langevin" complete-langevin "$WORK/coarse" "$d" "$wall" paper complete_langevin 1
+    if [ "$QUICK" != 1 ]; then
+      particles_run "${d}um-$wall-paper-near-wall" near-wall "$WORK/nearwall" "$d" "$wall" paper
+    fi
   done
   WALLS="axial:2:3.8:7.5 circ:3:3.8:7.5"
   for wall in axial circ; do
@@ -112,6 +128,7 @@ stage_end
 stage_start "pipe flow: statistics"
 cp "$WORK/coarse/mesh.txt" "$WORK/mesh-coarse.txt"
 if [ -f "$WORK/fine/mesh.txt" ]; then cp "$WORK/fine/mesh.txt" "$WORK/mesh-fine.txt"; fi
+if [ -f "$WORK/nearwall/mesh.txt" ]; then cp "$WORK/nearwall/mesh.txt" "$WORK/mesh-nearwall.txt"; fi
 cat "$WORK"/*/fluid/converged.txt > "$WORK/fluid.txt"
 run pipe-stats --study "$WORK" --out "$P"
 stage_end

@@ -140,9 +140,10 @@ const LIBRARY_LAYERS: [&[&str]; 7] = [
         "rng",
         "warning",
     ],
-    // The wall, the collision laws, incident particles, erosion, force, surfaces, scans,
-    // tallies.
+    // The wall, the collision laws, the carrier flow between hits, incident particles,
+    // erosion, force, surfaces, scans, tallies.
     &[
+        "carrier",
         "collision",
         "erosion",
         "force",

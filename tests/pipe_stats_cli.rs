@@ -279,3 +279,39 @@ fn pipe_stats_gives_each_switchs_change_of_the_lay_ratio() {
     pipe_stats(&plain, &out2).ok();
     assert!(rows(&out2.join("sensitivity.csv")).is_empty());
 }
+
+/// `costs.csv`: a run's `forces_cost.csv` per particle step (10⁴ particle steps: 3 ms of lift
+/// is 300 ns, 1 + 0.5 ms of spin 150 ns, 0.1 s of steps 10 µs, a share of 4.5 %); runs
+/// without one are left out, and a study without any writes no `costs.csv`.
+#[test]
+fn pipe_stats_gives_what_the_forces_cost_per_particle_step() {
+    let d = Dir::new();
+    let s = d.path().join("study");
+    study(&s);
+    std::fs::write(
+        s.join("runs/b/forces_cost.csv"),
+        "particle_steps,lift_s,spin_relax_s,spin_exchange_s,step_s\n10000,0.003,0.001,0.0005,0.1\n",
+    )
+    .unwrap();
+    let out = d.path().join("out");
+    pipe_stats(&s, &out).ok();
+    let table = rows(&out.join("costs.csv"));
+    assert_eq!(table.len(), 1);
+    let r = &table[0];
+    let close = |k: &str, v: f64| assert!((num(r, k) - v).abs() < 1e-9 * v, "{k}: {}", r[k]);
+    close("lift_ns_per_particle_step", 300.0);
+    close("spin_ns_per_particle_step", 150.0);
+    close("step_ns_per_particle_step", 10000.0);
+    close("forces_share", 0.045);
+    // A broken file is an error naming it, not a silent row.
+    std::fs::write(
+        s.join("runs/b/forces_cost.csv"),
+        "particle_steps,lift_s,spin_relax_s,spin_exchange_s,step_s\n0,0,0,0,0\n",
+    )
+    .unwrap();
+    pipe_stats(&s, &d.path().join("out2")).refused("forces_cost.csv");
+    let plain = d.path().join("plain");
+    study(&plain);
+    pipe_stats(&plain, &d.path().join("out3")).ok();
+    assert!(!d.path().join("out3/costs.csv").exists());
+}

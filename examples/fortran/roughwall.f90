@@ -46,8 +46,16 @@ module roughwall
      integer(c_int32_t) :: status
   end type rw_result
 
+  !> The carrier fluid and a particle where it is (rw_fluid_point), for the spin and the lifts
+  !> between hits: slip = fluid velocity seen - particle velocity, vorticity = curl of the
+  !> fluid velocity, spin = the particle's angular velocity.
+  type, bind(c), public :: rw_fluid_point
+     real(c_double) :: rho_f, mu_f, rho_p, d_p
+     real(c_double) :: slip(3), vorticity(3), spin(3)
+  end type rw_fluid_point
+
   public :: rw_wall_params_default, rw_wall_new, rw_wall_free, rw_rebound, rw_element_impact_angle, &
-       rw_version_string
+       rw_spin_relax, rw_saffman_mei_lift, rw_magnus_lift, rw_version_string
 
   interface
      integer(c_int32_t) function rw_wall_params_default(params) bind(c, name="rw_wall_params_default")
@@ -81,6 +89,28 @@ module roughwall
        type(rw_hit), intent(in) :: hit
        type(rw_result), intent(in) :: result
      end function rw_element_impact_angle
+
+     ! The particle's spin after dt in the fluid (rotational drag), into spin(3).
+     integer(c_int32_t) function rw_spin_relax(point, dt, spin) bind(c, name="rw_spin_relax")
+       import :: c_int32_t, c_double, rw_fluid_point
+       type(rw_fluid_point), intent(in) :: point
+       real(c_double), value :: dt
+       real(c_double), intent(inout) :: spin(3)
+     end function rw_spin_relax
+
+     ! The Saffman-Mei and the Magnus lift as accelerations (m/s2), into acceleration(3).
+     integer(c_int32_t) function rw_saffman_mei_lift(point, acceleration) &
+          bind(c, name="rw_saffman_mei_lift")
+       import :: c_int32_t, c_double, rw_fluid_point
+       type(rw_fluid_point), intent(in) :: point
+       real(c_double), intent(out) :: acceleration(3)
+     end function rw_saffman_mei_lift
+
+     integer(c_int32_t) function rw_magnus_lift(point, acceleration) bind(c, name="rw_magnus_lift")
+       import :: c_int32_t, c_double, rw_fluid_point
+       type(rw_fluid_point), intent(in) :: point
+       real(c_double), intent(out) :: acceleration(3)
+     end function rw_magnus_lift
 
      type(c_ptr) function rw_version() bind(c, name="rw_version")
        import :: c_ptr

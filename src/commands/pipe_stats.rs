@@ -68,6 +68,9 @@ pub fn run(args: &PipeStatsArgs) -> Result<Summary> {
     tables::distributions(&analysed).write(&dir.join("distributions.csv"))?;
     tables::comparisons(&analysed).write(&dir.join("comparisons.csv"))?;
     tables::sensitivity(&analysed).write(&dir.join("sensitivity.csv"))?;
+    if analysed.iter().any(|a| a.run.cost.is_some()) {
+        tables::costs(&analysed).write(&dir.join("costs.csv"))?;
+    }
     let figures = crate::figures::pipe_flow::write(dir, &analysed)?;
     let mut run = toml::Table::new();
     run.insert("command".into(), "pipe-stats".into());
@@ -102,6 +105,7 @@ pub fn run(args: &PipeStatsArgs) -> Result<Summary> {
     for (key, file) in [
         ("mesh_coarse", "mesh-coarse.txt"),
         ("mesh_fine", "mesh-fine.txt"),
+        ("mesh_nearwall", "mesh-nearwall.txt"),
         ("fluid", "fluid.txt"),
     ] {
         if let Ok(text) = std::fs::read_to_string(args.study.join(file)) {

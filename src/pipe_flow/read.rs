@@ -104,6 +104,42 @@ pub struct Run {
     pub params: Params,
     pub particles: Vec<ParticleRow>,
     pub hits: Vec<Hit>,
+    /// What the carrier-flow forces cost (`forces_cost.csv`; `None` for a run without it).
+    pub cost: Option<ForcesCost>,
+}
+
+/// `forces_cost.csv` of a run (examples/code_saturne/pipe/case_src/pipe_forces.h): its
+/// particle steps and the seconds, summed over ranks, spent in the lifts, the spin's
+/// relaxation, the spins' exchange between ranks and whole steps (from the second on).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForcesCost {
+    pub particle_steps: f64,
+    pub lift_s: f64,
+    pub spin_relax_s: f64,
+    pub spin_exchange_s: f64,
+    pub step_s: f64,
+}
+
+/// A run's `forces_cost.csv`, if it wrote one.
+pub fn forces_cost(dir: &Path) -> Result<Option<ForcesCost>> {
+    let path = dir.join("forces_cost.csv");
+    let Some(rows) = Rows::read(&path)? else {
+        return Ok(None);
+    };
+    let Some(r) = rows.rows.first() else {
+        return Err(bad(&path, "no row"));
+    };
+    let cost = ForcesCost {
+        particle_steps: num(r, "particle_steps", &path)?,
+        lift_s: num(r, "lift_s", &path)?,
+        spin_relax_s: num(r, "spin_relax_s", &path)?,
+        spin_exchange_s: num(r, "spin_exchange_s", &path)?,
+        step_s: num(r, "step_s", &path)?,
+    };
+    if cost.particle_steps <= 0.0 {
+        return Err(bad(&path, "particle_steps must be > 0"));
+    }
+    Ok(Some(cost))
 }
 
 fn bad(path: &Path, what: impl std::fmt::Display) -> Error {
@@ -206,28 +242,61 @@ fn num(row: &HashMap<String, String>, key: &str, path: &Path) -> Result<f64> {
 /// A run's `particles.csv` (`n_bins` bins).
 pub fn particles(dir: &Path, n_bins: usize) -> Result<Vec<ParticleRow>> {
     let path = dir.join("particles.csv");
-    let rows = Rows::read(&path)?.ok_or_else(|| bad(&path, "not found"))?;
-    let mut out = Vec::with_capacity(rows.rows.len());
-    for r in &rows.rows {
-        let group = |g: &str| -> Result<Vec<f64>> {
-            (0..n_bins)
-                .map(|b| num(r, &format!("{g}_{b}"), &path))
-                .collect()
-        };
+    if !path.is_file() {
+        return Err(bad(&path, "not found"));
+    }
+    let mut r = csv::Reader::from_path(&path).map_err(|e| bad(&path, e))?;
+    let header = r.byte_headers().map_err(|e| bad(&path, e))?.clone();
+    let missing = |k: &str| {
+        bad(
+            &path,
+            format!("column `{k}` missing or not a finite number"),
+        )
+    };
+    // Column indices, resolved once: 5 scalars, then 8 groups of n_bins (a study reads
+    // hundreds of thousands of rows of about 165 cells).
+    let mut names: Vec<String> = ["particle_id", "n", "dist", "hits", "sum_y"]
+        .iter()
+        .map(|k| k.to_string())
+        .collect();
+    for g in ["cy", "cz", "ux", "ux2", "ur", "ur2", "sy", "sz"] {
+        names.extend((0..n_bins).map(|b| format!("{g}_{b}")));
+    }
+    let at: Vec<usize> = names
+        .iter()
+        .map(|k| {
+            header
+                .iter()
+                .position(|h| h == k.as_bytes())
+                .ok_or_else(|| missing(k))
+        })
+        .collect::<Result<_>>()?;
+    let mut out = Vec::new();
+    let mut rec = csv::ByteRecord::new();
+    let mut values = vec![0.0; at.len()];
+    while r.read_byte_record(&mut rec).map_err(|e| bad(&path, e))? {
+        for (k, &i) in at.iter().enumerate() {
+            values[k] = std::str::from_utf8(&rec[i])
+                .ok()
+                .and_then(|t| t.parse::<f64>().ok())
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| missing(&names[k]))?;
+        }
+        let group = |g: usize| values[5 + g * n_bins..5 + (g + 1) * n_bins].to_vec();
         out.push(ParticleRow {
-            id: num(r, "particle_id", &path)? as usize,
-            samples: num(r, "n", &path)?,
-            dist: num(r, "dist", &path)?,
-            hits: num(r, "hits", &path)?,
-            sum_y: num(r, "sum_y", &path)?,
-            cy: group("cy")?,
-            cz: group("cz")?,
-            ux: group("ux")?,
-            ux2: group("ux2")?,
-            ur: group("ur")?,
-            ur2: group("ur2")?,
-            sy: group("sy")?,
-            sz: group("sz")?,
+            id: values[0] as usize,
+            samples: values[1],
+            dist: values[2],
+            hits: values[3],
+            sum_y: values[4],
+            cy: group(0),
+            cz: group(1),
+            ux: group(2),
+            ux2: group(3),
+            ur: group(4),
+            ur2: group(5),
+            sy: group(6),
+            sz: group(7),
         });
     }
     if out.is_empty() {
@@ -251,28 +320,69 @@ pub fn hits(dir: &Path) -> Result<Vec<Hit>> {
     files.sort();
     let mut out = Vec::new();
     for path in files {
-        let Some(rows) = Rows::read(&path)? else {
-            continue;
-        };
-        for r in &rows.rows {
-            if num(r, "status", &path)? != 0.0 {
-                continue;
-            }
-            out.push(Hit {
-                particle_id: num(r, "particle_id", &path)? as usize,
-                y: num(r, "y", &path)?,
-                z: num(r, "z", &path)?,
-                alpha_in_deg: num(r, "alpha_in_deg", &path)?,
-                lay_angle_deg: num(r, "lay_angle_deg", &path)?,
-                speed_in: num(r, "speed_in", &path)?,
-                speed_out: num(r, "speed_out", &path)?,
-                alpha_out_deg: num(r, "alpha_out_deg", &path)?,
-                deflection_deg: num(r, "deflection_deg", &path)?,
-                alpha_element_deg: num(r, "alpha_element_deg", &path)?,
-            });
-        }
+        read_hits(&path, &mut out)?;
     }
     Ok(out)
+}
+
+/// The columns of a hit log that [`Hit`] takes, in its field order after `status`.
+const HIT_COLUMNS: [&str; 11] = [
+    "status",
+    "particle_id",
+    "y",
+    "z",
+    "alpha_in_deg",
+    "lay_angle_deg",
+    "speed_in",
+    "speed_out",
+    "alpha_out_deg",
+    "deflection_deg",
+    "alpha_element_deg",
+];
+
+/// Appends the rebounds of one `hits_rank*.csv` to `out`, reading only the columns a [`Hit`]
+/// takes (a run logs about 10⁵ hits of 30 columns; a study, millions). An empty file holds
+/// no hit.
+fn read_hits(path: &Path, out: &mut Vec<Hit>) -> Result<()> {
+    let mut r = csv::Reader::from_path(path).map_err(|e| bad(path, e))?;
+    let header = r.byte_headers().map_err(|e| bad(path, e))?.clone();
+    if header.is_empty() {
+        return Ok(());
+    }
+    let missing = |k: &str| bad(path, format!("column `{k}` missing or not a finite number"));
+    let mut at = [0usize; HIT_COLUMNS.len()];
+    for (i, k) in HIT_COLUMNS.iter().enumerate() {
+        at[i] = header
+            .iter()
+            .position(|h| h == k.as_bytes())
+            .ok_or_else(|| missing(k))?;
+    }
+    let mut rec = csv::ByteRecord::new();
+    while r.read_byte_record(&mut rec).map_err(|e| bad(path, e))? {
+        let v = |i: usize| -> Result<f64> {
+            std::str::from_utf8(&rec[at[i]])
+                .ok()
+                .and_then(|t| t.parse::<f64>().ok())
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| missing(HIT_COLUMNS[i]))
+        };
+        if v(0)? != 0.0 {
+            continue;
+        }
+        out.push(Hit {
+            particle_id: v(1)? as usize,
+            y: v(2)?,
+            z: v(3)?,
+            alpha_in_deg: v(4)?,
+            lay_angle_deg: v(5)?,
+            speed_in: v(6)?,
+            speed_out: v(7)?,
+            alpha_out_deg: v(8)?,
+            deflection_deg: v(9)?,
+            alpha_element_deg: v(10)?,
+        });
+    }
+    Ok(())
 }
 
 /// Every run of the study, read.
@@ -296,11 +406,13 @@ pub fn study(study: &Path) -> Result<Vec<Run>> {
                     ),
                 ));
             }
+            let cost = forces_cost(&info.dir)?;
             Ok(Run {
                 info,
                 params,
                 particles,
                 hits,
+                cost,
             })
         })
         .collect()

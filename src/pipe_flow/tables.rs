@@ -391,3 +391,47 @@ pub fn sensitivity(runs: &[Analysed]) -> CsvTable {
     }
     t
 }
+
+/// `costs.csv`: per run that timed its carrier-flow forces (`forces_cost.csv`), what the
+/// lifts and the spin (relaxation and the exchange between ranks) cost per particle step,
+/// against the whole step's cost per particle step (tracking, wall hits, dispersion and
+/// the forces; CPU time summed over ranks), and their share of it.
+pub fn costs(runs: &[Analysed]) -> CsvTable {
+    let mut t = CsvTable::new(&[
+        "run",
+        "kind",
+        "diameter_um",
+        "wall",
+        "model",
+        "particle_steps",
+        "lift_ns_per_particle_step",
+        "spin_ns_per_particle_step",
+        "step_ns_per_particle_step",
+        "forces_share",
+    ]);
+    for a in runs {
+        let (i, Some(c)) = (&a.run.info, a.run.cost) else {
+            continue;
+        };
+        let per = |s: f64| 1e9 * s / c.particle_steps;
+        let spin = c.spin_relax_s + c.spin_exchange_s;
+        let share = if c.step_s > 0.0 {
+            fmt_num((c.lift_s + spin) / c.step_s)
+        } else {
+            String::new()
+        };
+        t.push(vec![
+            i.name.clone(),
+            i.kind.clone(),
+            fmt_num(i.diameter_um),
+            i.wall.clone(),
+            i.model.clone(),
+            fmt_num(c.particle_steps),
+            fmt_num(per(c.lift_s)),
+            fmt_num(per(spin)),
+            fmt_num(per(c.step_s)),
+            share,
+        ]);
+    }
+    t
+}

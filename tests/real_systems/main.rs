@@ -20,6 +20,7 @@ mod code_saturne;
 mod erosion_references;
 mod fortran;
 mod pipe_flow;
+mod pipe_forces;
 mod python;
 mod slurm;
 mod surfacetopography;

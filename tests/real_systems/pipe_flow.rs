@@ -12,15 +12,18 @@
 //! * rough walls keep the particles suspended (higher, faster across the pipe) where the
 //!   smooth wall lets them settle;
 //! * without code_saturne's dispersion, 1 and 2 MPI ranks give the same wall hits for the
-//!   same keys (particle id, collision index) and the same per-particle statistics, to
-//!   round-off; with it, the same statistics within their standard errors.
+//!   same keys (particle id, collision index), with the same spins (carried between hits in
+//!   a table the ranks exchange, with both lifts on), and the same per-particle statistics,
+//!   to round-off; with dispersion, the same statistics within their standard errors.
+//!
+//! `pipe_forces.rs` checks the spin and the lifts on the same study.
 
 use crate::common::*;
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
 use std::process::Command;
 
-fn rows(path: &Path) -> Vec<HashMap<String, String>> {
+pub(crate) fn rows(path: &Path) -> Vec<HashMap<String, String>> {
     let mut r = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
     r.records()
@@ -35,14 +38,14 @@ fn rows(path: &Path) -> Vec<HashMap<String, String>> {
         .collect()
 }
 
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
+pub(crate) fn num(row: &HashMap<String, String>, key: &str) -> f64 {
     row[key]
         .parse()
         .unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
 }
 
 /// Every hit of a run, keyed by (particle id, collision index).
-fn hits(run: &Path) -> BTreeMap<(u64, u64), HashMap<String, String>> {
+pub(crate) fn hits(run: &Path) -> BTreeMap<(u64, u64), HashMap<String, String>> {
     let mut out = BTreeMap::new();
     for e in std::fs::read_dir(run).unwrap() {
         let p = e.unwrap().path();
@@ -64,29 +67,35 @@ fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs()))
 }
 
+/// The coarse study of `run_checks.sh`, run once for the tests of this file and of
+/// `pipe_forces.rs` (in target/, replaced on the next run).
+pub(crate) fn checks_study() -> &'static Path {
+    static STUDY: std::sync::OnceLock<std::path::PathBuf> = std::sync::OnceLock::new();
+    STUDY.get_or_init(|| {
+        crate::require(&["code_saturne", "gmsh", "gfortran", "mpiexec"]);
+        let root = repo_root();
+        let work = root.join("target/real-systems/pipe-checks");
+        let out = Command::new(root.join("examples/code_saturne/pipe/run_checks.sh"))
+            .arg(&work)
+            .env("ROUGHWALL_INCLUDE", root.join("include"))
+            .env("ROUGHWALL_LIB", c_library_dir())
+            .env("REBOUND_BIN", rebound_bin())
+            .output()
+            .expect("run examples/code_saturne/pipe/run_checks.sh");
+        let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+        assert!(
+            out.status.success(),
+            "{stdout}\n{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        eprintln!("{stdout}");
+        work
+    })
+}
+
 #[test]
 fn pipe_flow_physics_and_rank_independence() {
-    crate::require(&["code_saturne", "gmsh", "gfortran", "mpiexec"]);
-    let root = repo_root();
-    let tmp = tempfile::Builder::new()
-        .prefix("pipe")
-        .tempdir_in("/tmp")
-        .unwrap();
-    let work = tmp.path().join("study");
-    let out = Command::new(root.join("examples/code_saturne/pipe/run_checks.sh"))
-        .arg(&work)
-        .env("ROUGHWALL_INCLUDE", root.join("include"))
-        .env("ROUGHWALL_LIB", c_library_dir())
-        .env("REBOUND_BIN", rebound_bin())
-        .output()
-        .expect("run examples/code_saturne/pipe/run_checks.sh");
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert!(
-        out.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    eprintln!("{stdout}");
+    let work = checks_study();
     let runs = work.join("runs");
 
     // Energy at every hit of the smooth elastic wall.
@@ -190,6 +199,12 @@ fn pipe_flow_physics_and_rank_independence() {
             "speed_out",
             "alpha_out_deg",
             "deflection_deg",
+            "wx_in",
+            "wy_in",
+            "wz_in",
+            "wx_out",
+            "wy_out",
+            "wz_out",
         ] {
             assert!(
                 close(num(a, col), num(b, col)),
@@ -263,8 +278,8 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
     let summary = rows(&dir.join("summary.csv"));
     assert_eq!(
         summary.len(),
-        30,
-        "2 diameters x (11 walls and models + 2 switches on 2 lays)"
+        46,
+        "2 diameters x (11 walls and models + 6 switches on 2 lays)"
     );
     // Each bead size rebounds off the rough wall as its own sphere sees it
     // (configs/cases/pipe-wall.toml): more across the lay than the 500 µm bead's 7.5°.
@@ -318,10 +333,18 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
     let md = std::fs::read_to_string(results.join("REPORT.md")).unwrap();
     assert!(md.contains("Quick mode only") && md.contains("lay around the circumference"));
     assert!(md.contains("Kussin & Sommerfeld (2002)") && md.contains("at the facet"));
-    // The sensitivity table: both switches, both sizes, with a change and its error.
+    // The sensitivity table: every switch of the quick mode, both sizes, with a change and
+    // its error.
     let sens = rows(&dir.join("sensitivity.csv"));
     for d in ["100", "200"] {
-        for switch in ["no-dispersion", "sec4-deviations"] {
+        for switch in [
+            "no-spin",
+            "no-saffman",
+            "no-magnus",
+            "no-dispersion",
+            "complete-langevin",
+            "sec4-deviations",
+        ] {
             let r = sens
                 .iter()
                 .find(|r| {
@@ -334,6 +357,98 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
         }
     }
     assert!(
-        md.contains("**Sensitivity**") && md.contains("Against the first version of this study")
+        md.contains("**Sensitivity**") && md.contains("Against the earlier versions of this study")
     );
+    // What the forces cost: every study run timed them, a run without spin spent nothing on it.
+    let costs = rows(&dir.join("costs.csv"));
+    for r in &costs {
+        let (lift, spin, step) = (
+            num(r, "lift_ns_per_particle_step"),
+            num(r, "spin_ns_per_particle_step"),
+            num(r, "step_ns_per_particle_step"),
+        );
+        assert!(step > 0.0 && lift < step && spin < step, "{r:?}");
+        if r["kind"] == "main" {
+            assert!(lift > 0.0 && spin > 0.0, "{r:?}");
+        }
+        if r["kind"] == "no-spin" {
+            assert_eq!(spin, 0.0, "{r:?}");
+        }
+    }
+    assert!(md.contains("What spin and lift cost"));
+    // The switches reach code_saturne: its setup log names the complete model only where
+    // asked for; the study mesh's first cells sit at y+ of about 30 or more.
+    let setup = |run: &str| {
+        std::fs::read_to_string(tmp.path().join(format!("work/runs/{run}/setup.log"))).unwrap()
+    };
+    let from = |log: &str| -> i64 {
+        let line = log
+            .lines()
+            .find(|l| l.contains("apply complete model from time step"))
+            .expect("the complete-model line of setup.log");
+        line.split_whitespace().last().unwrap().parse().unwrap()
+    };
+    assert!(from(&setup("100um-axial-paper-complete-langevin")) > 0);
+    assert_eq!(from(&setup("100um-axial-paper")), 0);
+    let fluid = std::fs::read_to_string(tmp.path().join("work/fluid.txt")).unwrap();
+    let y_plus_min: f64 = fluid
+        .split("first-cell y+ min ")
+        .nth(1)
+        .and_then(|t| t.split_whitespace().next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("no first-cell y+ in {fluid}"));
+    assert!(y_plus_min >= 30.0, "study mesh: first-cell y+ {y_plus_min}");
+}
+
+/// The `near-wall` switch's mesh (`NEARWALL` of scripts/pipe-flow.sh) puts every wall cell's
+/// centre in the buffer layer, y⁺ ≤ 15, where the study mesh has 30 or more (the quick-mode
+/// test above): its converged flow, as the study runs it.
+#[test]
+fn pipe_flow_near_wall_mesh_puts_the_first_cells_below_y_plus_15() {
+    crate::require(&["code_saturne", "gmsh", "gfortran", "mpiexec"]);
+    let root = repo_root();
+    let script = std::fs::read_to_string(root.join("scripts/pipe-flow.sh")).unwrap();
+    let mesh = script
+        .split("NEARWALL=\"")
+        .nth(1)
+        .and_then(|t| t.split('"').next())
+        .expect("NEARWALL=\"...\" in scripts/pipe-flow.sh");
+    let tmp = tempfile::Builder::new()
+        .prefix("pipenw")
+        .tempdir_in("/tmp")
+        .unwrap();
+    let ex = root.join("examples/code_saturne/pipe");
+    let out = Command::new("bash")
+        .arg("-c")
+        .arg(format!(
+            "set -euo pipefail; PIPE_EX={ex}; source $PIPE_EX/study_lib.sh; \
+             D=0.05 L=0.2 UB=20 DT_FLUID=0.001 NT_FLUID=600 WORK={work}; study_init; \
+             $PIPE_EX/setup_pipe.sh $WORK/nearwall {mesh} > /dev/null; fluid $WORK/nearwall",
+            ex = ex.display(),
+            work = tmp.path().join("study").display()
+        ))
+        .env("ROUGHWALL_INCLUDE", root.join("include"))
+        .env("ROUGHWALL_LIB", c_library_dir())
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let line = stdout
+        .lines()
+        .find(|l| l.contains("first-cell y+"))
+        .unwrap_or_else(|| panic!("no first-cell y+ in {stdout}"));
+    let value = |key: &str| -> f64 {
+        line.split(key)
+            .nth(1)
+            .and_then(|t| t.split_whitespace().next())
+            .and_then(|v| v.parse().ok())
+            .unwrap_or_else(|| panic!("no {key:?} in {line}"))
+    };
+    let (lo, hi) = (value("first-cell y+ min "), value(" max "));
+    eprintln!("near-wall mesh {mesh}: first-cell y+ {lo} to {hi}");
+    assert!(hi <= 15.0 && lo >= 5.0, "first-cell y+ {lo} to {hi}");
 }

@@ -102,13 +102,14 @@ pub fn pipe_flow(results: &Path, md: &mut String) -> Result<()> {
          in a particle-laden pipe flow? `scripts/pipe-flow.sh` answers it in code_saturne 6.0.2 \
          (docs/pipe-flow.md): air at 20 m/s in a horizontal 50 mm pipe (k-ε RANS, a periodic section \
          4 D long, meshed by gmsh), glass beads of 100 and 200 µm (2500 kg/m³, one-way coupled, gravity, \
-         code_saturne's Langevin dispersion), every wall hit through roughwall with the Sec. 4 \
+         code_saturne's Langevin dispersion, the Saffman–Mei and the Magnus lift, each bead's spin \
+         carried between hits), every wall hit through roughwall with the Sec. 4 \
          glass–steel law. All walls start from the same particles, sampled after they travelled \
          about 170 D. Values are means over the sampling window ± one standard error (jackknife over \
          20 batches of particles); differences are paired.\n\n",
     );
     if let Some(t) = &run {
-        for key in ["fluid", "mesh_coarse", "mesh_fine"] {
+        for key in ["fluid", "mesh_coarse", "mesh_fine", "mesh_nearwall"] {
             if let Some(v) = t.get(key).and_then(|v| v.as_str()) {
                 let _ = writeln!(md, "- {key}: `{}`", v.replace('\n', "; "));
             }
@@ -227,6 +228,7 @@ pub fn pipe_flow(results: &Path, md: &mut String) -> Result<()> {
     }
     let sensitivity = Rows::read(&dir.join("sensitivity.csv"))?.unwrap_or_default();
     switches(md, &sensitivity);
+    costs(md, &Rows::read(&dir.join("costs.csv"))?.unwrap_or_default());
     checks(md, &comparisons);
     if dir.join("concentration_100um.svg").is_file() {
         let rel = if dir.ends_with(PIPE_FLOW_QUICK) {
@@ -314,9 +316,20 @@ fn answer(md: &mut String, d: &str, c: &Rows, by_name: &HashMap<&str, &HashMap<S
 const FIRST_VERSION: [(&str, f64, f64, f64); 2] =
     [("100", 1.91, 1.82, 2.45), ("200", 1.63, 1.54, 1.52)];
 
+/// The second version (results/REPORT.md at commit 61a9939a, 2026-11-29: technically smooth
+/// walls, each size's own deviations, erosion at the facet; no spin, no lift): per diameter
+/// (µm), the same lay ratios, Finnie's erosion at the mean wall and at the facet.
+const SECOND_VERSION: [(&str, f64, f64, f64, f64); 2] = [
+    ("100", 2.07, 1.97, 2.62, 2.20),
+    ("200", 1.74, 1.62, 1.54, 1.43),
+];
+
 /// The lay ratios now against [`FIRST_VERSION`]'s.
 fn against_first_version(md: &mut String, d: &str, c: &Rows) {
     let Some(&(_, collisions, rms, erosion)) = FIRST_VERSION.iter().find(|f| f.0 == d) else {
+        return;
+    };
+    let Some(&(_, c2, r2, e2_wall, e2_facet)) = SECOND_VERSION.iter().find(|f| f.0 == d) else {
         return;
     };
     let (circ, axial) = (format!("{d}um-circ-paper"), format!("{d}um-axial-paper"));
@@ -338,16 +351,24 @@ fn against_first_version(md: &mut String, d: &str, c: &Rows) {
     ) else {
         return;
     };
+    let held = [c_now, r_now, e_wall, e_facet].iter().all(|&r| r > 1.0);
     let _ = writeln!(
         md,
-        "**Against the first version of this study** ({d} µm; commit fecd09f9: smooth baseline, \
-         (3.8°, 7.5°) for every size, Finnie at the mean wall): the lay multiplied the collision \
-         frequency by {collisions:.2}, now {c_now:.2}; the wall-normal fluctuations by {rms:.2}, now \
-         {r_now:.2}; Finnie's erosion by {erosion:.2}, now {e_wall:.2} at the mean wall and \
-         {e_facet:.2} at the facet struck. The direction of every effect held; the sizes moved by \
-         the per-size deviations and the angle taken (the sensitivity table below). The published \
-         trends were then tested against the smooth wall only (for 100 µm two did not agree); \
-         below, they are tested against the technically smooth walls too.\n"
+        "**Against the earlier versions of this study** ({d} µm, lay ratio circumferential over \
+         axial; first, commit fecd09f9: smooth baseline, (3.8°, 7.5°) for every size, Finnie at \
+         the mean wall; second, commit 61a9939a: technically smooth walls, each size's own \
+         deviations, erosion at the facet, no spin and no lift; now: with spin and both lifts): \
+         collision frequency {collisions:.2} → {c2:.2} → {c_now:.2}; wall-normal fluctuations \
+         {rms:.2} → {r2:.2} → {r_now:.2}; Finnie's erosion at the mean wall {erosion:.2} → \
+         {e2_wall:.2} → {e_wall:.2}, at the facet struck {e2_facet:.2} → {e_facet:.2}. {} The \
+         sensitivity table below says what each switch moves.\n",
+        if held {
+            "The direction of every effect held: the lay around the circumference still raises \
+             each of them."
+        } else {
+            "**Not every direction held**: a ratio at or below 1 above is an effect the lay no \
+             longer has."
+        }
     );
 }
 
@@ -532,9 +553,10 @@ fn erosion(md: &mut String, d: &str, c: &Rows) {
     );
 }
 
-/// The physics switches not modelled yet (issue 40, parts 1, 2 and 4): named, with no number.
-const NOT_MODELLED: &str = "particle spin carried between hits, Saffman–Mei shear lift, \
-    Magnus lift, the complete Langevin model, a near-wall dispersion treatment";
+/// What the study does not model, so no switch: named, with no number.
+const NOT_MODELLED: &str = "a near-wall dispersion treatment (the near-wall mesh is the \
+    sensitivity to near-wall resolution instead), wall-corrected lift, two-way coupling, \
+    particle–particle collisions";
 
 /// The sensitivity table: each physics switch's change of the lay ratio (circumferential over
 /// axial) of the collision frequency, the wall-normal fluctuations and the erosion
@@ -544,6 +566,13 @@ fn switches(md: &mut String, s: &Rows) {
         return;
     }
     let name = |k: &str| match k {
+        "no-spin" => "no spin (0 at every hit, as code_saturne has it)".to_string(),
+        "no-saffman" => "no Saffman–Mei lift".to_string(),
+        "no-magnus" => "no Magnus lift".to_string(),
+        "complete-langevin" => "code_saturne's complete Langevin model".to_string(),
+        "near-wall" => {
+            "near-wall mesh (first cell at y⁺ ≈ 10, not 33–42; own flow and particles)".to_string()
+        }
         "no-dispersion" => "no Langevin dispersion (the fluid seen is the cell's mean)".to_string(),
         "sec4-deviations" => {
             "the 500 µm bead's deviations (3.8°, 7.5°) instead of this size's own".to_string()
@@ -594,7 +623,46 @@ fn switches(md: &mut String, s: &Rows) {
     }
     let _ = writeln!(
         md,
-        "\nNot modelled yet, so not in this table: {NOT_MODELLED} (issue 40).\n"
+        "\nNot modelled, so not in this table: {NOT_MODELLED}.\n"
+    );
+}
+
+/// What the lifts and the spin cost per particle step (`costs.csv`), over the study's own
+/// runs (`main`, all three on): the mean, and the range over runs.
+fn costs(md: &mut String, c: &Rows) {
+    let main: Vec<&HashMap<String, String>> = c
+        .rows
+        .iter()
+        .filter(|r| r.get("kind").map(String::as_str) == Some("main"))
+        .collect();
+    if main.is_empty() {
+        return;
+    }
+    let stat = |k: &str| {
+        let v: Vec<f64> = main.iter().filter_map(|r| num(r, k)).collect();
+        let mean = v.iter().sum::<f64>() / v.len().max(1) as f64;
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (mean, lo, hi)
+    };
+    let (lift, l0, l1) = stat("lift_ns_per_particle_step");
+    let (spin, s0, s1) = stat("spin_ns_per_particle_step");
+    let (step, t0, t1) = stat("step_ns_per_particle_step");
+    let (share, f0, f1) = stat("forces_share");
+    let _ = writeln!(
+        md,
+        "**What spin and lift cost** ({} runs of the study, one MPI rank each, two at a time on \
+         two cores; `costs.csv`): the two lifts {lift:.0} ns per particle step ({l0:.0}–{l1:.0}), the \
+         spin's relaxation {spin:.0} ns ({s0:.0}–{s1:.0}), against {:.1} µs for the whole particle \
+         step ({:.1}–{:.1}: tracking, wall hits, dispersion and these): {:.1} % of it \
+         ({:.1}–{:.1} %).\n",
+        main.len(),
+        step / 1e3,
+        t0 / 1e3,
+        t1 / 1e3,
+        100.0 * share,
+        100.0 * f0,
+        100.0 * f1
     );
 }
 

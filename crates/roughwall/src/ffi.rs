@@ -533,6 +533,137 @@ pub unsafe extern "C" fn rw_element_impact_angle(
     .unwrap_or(0.0)
 }
 
+/// The carrier fluid and a particle where the particle is, for the between-hit laws
+/// `rw_saffman_mei_lift`, `rw_magnus_lift` and `rw_spin_relax` (global axes, SI units;
+/// `roughwall::carrier`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct rw_fluid_point {
+    /// Fluid density (kg/m³, > 0).
+    pub rho_f: f64,
+    /// Fluid dynamic viscosity (Pa s, > 0).
+    pub mu_f: f64,
+    /// Particle density (kg/m³, > 0).
+    pub rho_p: f64,
+    /// Particle diameter (m, > 0).
+    pub d_p: f64,
+    /// The fluid's velocity as the particle sees it minus the particle's (m/s).
+    pub slip: [f64; 3],
+    /// The fluid's vorticity, the curl of its velocity (1/s): the fluid turns at half of it.
+    pub vorticity: [f64; 3],
+    /// The particle's angular velocity (rad/s).
+    pub spin: [f64; 3],
+}
+
+impl From<rw_fluid_point> for crate::carrier::FluidPoint {
+    fn from(p: rw_fluid_point) -> Self {
+        Self {
+            rho_f: p.rho_f,
+            mu_f: p.mu_f,
+            rho_p: p.rho_p,
+            d_p: p.d_p,
+            slip: p.slip,
+            vorticity: p.vorticity,
+            spin: p.spin,
+        }
+    }
+}
+
+/// Writes `law(point)` into `out` when `point` is valid; zeros and a status otherwise.
+///
+/// # Safety
+/// `point` and `out` are NULL or valid.
+unsafe fn carrier_call(
+    point: *const rw_fluid_point,
+    out: *mut f64,
+    law: impl Fn(&crate::carrier::FluidPoint) -> [f64; 3],
+    otherwise: impl Fn(&crate::carrier::FluidPoint) -> [f64; 3],
+) -> i32 {
+    if point.is_null() || out.is_null() {
+        return RW_NULL_POINTER;
+    }
+    let p = crate::carrier::FluidPoint::from(*point);
+    let (status, v) = if p.is_valid() {
+        match catch_unwind(AssertUnwindSafe(|| law(&p))) {
+            Ok(v) if v.iter().all(|x| x.is_finite()) => (RW_OK, v),
+            Ok(_) => (RW_INVALID_INPUT, otherwise(&p)),
+            Err(_) => (RW_INTERNAL_ERROR, otherwise(&p)),
+        }
+    } else {
+        (RW_INVALID_INPUT, otherwise(&p))
+    };
+    std::ptr::copy_nonoverlapping(v.as_ptr(), out, 3);
+    status
+}
+
+/// The Saffman–Mei shear-lift acceleration (m/s², force over the particle's mass) on the
+/// particle of `point`, into `acceleration[0..3]`: Saffman's lift with Mei's (1992)
+/// finite-Reynolds correction (`roughwall::carrier`; docs/physics.md §8a). A CFD
+/// code adds it to gravity in its particle equation. `RW_OK`; `RW_INVALID_INPUT` (zeros
+/// written) for a non-finite number or a non-positive property; `RW_NULL_POINTER`.
+///
+/// # Safety
+/// `point` is NULL or valid; `acceleration` is NULL or holds 3 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn rw_saffman_mei_lift(
+    point: *const rw_fluid_point,
+    acceleration: *mut f64,
+) -> i32 {
+    carrier_call(
+        point,
+        acceleration,
+        crate::carrier::saffman_mei_lift,
+        |_| [0.0; 3],
+    )
+}
+
+/// The Magnus (rotational) lift acceleration (m/s²) on the particle of `point`, spinning at
+/// `point->spin` relative to the fluid's rotation, into `acceleration[0..3]`, with
+/// Oesterlé & Bui Dinh's (1998) coefficient (docs/physics.md §8a). Statuses
+/// as `rw_saffman_mei_lift`.
+///
+/// # Safety
+/// `point` is NULL or valid; `acceleration` is NULL or holds 3 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn rw_magnus_lift(
+    point: *const rw_fluid_point,
+    acceleration: *mut f64,
+) -> i32 {
+    carrier_call(point, acceleration, crate::carrier::magnus_lift, |_| {
+        [0.0; 3]
+    })
+}
+
+/// The particle's angular velocity (rad/s) after `dt` seconds in the fluid of `point`,
+/// into `spin[0..3]` (which may be `point->spin`): the rotational drag of Dennis, Singh &
+/// Ingham (1980) relaxes it towards the fluid's rotation (docs/physics.md §8a), at the rate
+/// of the start of the step (exact in the Stokes regime). Carry
+/// `rw_result.spin` with this between hits and give it back in the next `rw_hit.spin`.
+/// `RW_INVALID_INPUT` (the spin written back unchanged, non-finite components as 0) for a
+/// non-finite number, a non-positive property or a negative `dt`.
+///
+/// # Safety
+/// `point` is NULL or valid; `spin` is NULL or holds 3 doubles.
+#[no_mangle]
+pub unsafe extern "C" fn rw_spin_relax(
+    point: *const rw_fluid_point,
+    dt: f64,
+    spin: *mut f64,
+) -> i32 {
+    let unchanged =
+        |p: &crate::carrier::FluidPoint| p.spin.map(|x| if x.is_finite() { x } else { 0.0 });
+    if dt.is_finite() && dt >= 0.0 {
+        carrier_call(
+            point,
+            spin,
+            |p| crate::carrier::relaxed_spin(p, dt),
+            unchanged,
+        )
+    } else {
+        carrier_call(point, spin, unchanged, unchanged).max(RW_INVALID_INPUT)
+    }
+}
+
 /// Raw pointers of a batch, shareable between the threads of one call: each thread touches
 /// only its own indices.
 #[derive(Clone, Copy)]
@@ -1475,5 +1606,61 @@ mod tests {
             let t = unsafe { std::ffi::CStr::from_ptr(rw_status_string(s)) };
             assert!(!t.to_bytes().is_empty());
         }
+    }
+
+    #[test]
+    fn carrier_laws_are_the_librarys_and_refuse_bad_points() {
+        let point = rw_fluid_point {
+            rho_f: 1.205,
+            mu_f: 1.82e-5,
+            rho_p: 2500.0,
+            d_p: 150e-6,
+            slip: [0.4, -0.1, 0.05],
+            vorticity: [10.0, -30.0, -1500.0],
+            spin: [200.0, 0.0, 900.0],
+        };
+        let p = crate::carrier::FluidPoint::from(point);
+        let mut a = [7.0; 3];
+        assert_eq!(
+            unsafe { rw_saffman_mei_lift(&point, a.as_mut_ptr()) },
+            RW_OK
+        );
+        assert_eq!(a, crate::carrier::saffman_mei_lift(&p));
+        assert_eq!(unsafe { rw_magnus_lift(&point, a.as_mut_ptr()) }, RW_OK);
+        assert_eq!(a, crate::carrier::magnus_lift(&p));
+        // in place: the spin array may be the point's own
+        let mut q = point;
+        let s = unsafe { rw_spin_relax(&q, 5e-4, q.spin.as_mut_ptr()) };
+        assert_eq!(s, RW_OK);
+        assert_eq!(q.spin, crate::carrier::relaxed_spin(&p, 5e-4));
+        // bad points: a status, zeros (lifts) or the spin unchanged, never NaN
+        let bad = rw_fluid_point {
+            mu_f: -1.0,
+            ..point
+        };
+        assert_eq!(
+            unsafe { rw_magnus_lift(&bad, a.as_mut_ptr()) },
+            RW_INVALID_INPUT
+        );
+        assert_eq!(a, [0.0; 3]);
+        let nan = rw_fluid_point {
+            spin: [f64::NAN, 1.0, 2.0],
+            ..point
+        };
+        let mut w = [9.0; 3];
+        let s = unsafe { rw_spin_relax(&nan, 1e-3, w.as_mut_ptr()) };
+        assert_eq!((s, w), (RW_INVALID_INPUT, [0.0, 1.0, 2.0]));
+        let s = unsafe { rw_spin_relax(&point, -1e-3, w.as_mut_ptr()) };
+        assert_eq!((s, w), (RW_INVALID_INPUT, point.spin));
+        let s = unsafe { rw_spin_relax(&point, f64::NAN, w.as_mut_ptr()) };
+        assert_eq!(s, RW_INVALID_INPUT);
+        assert_eq!(
+            unsafe { rw_saffman_mei_lift(std::ptr::null(), a.as_mut_ptr()) },
+            RW_NULL_POINTER
+        );
+        assert_eq!(
+            unsafe { rw_spin_relax(&point, 1e-3, std::ptr::null_mut()) },
+            RW_NULL_POINTER
+        );
     }
 }

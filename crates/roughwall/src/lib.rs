@@ -34,6 +34,7 @@
 //! | run many particles into tallies with standard errors | [`tally::run`] with [`models::fill_block`] or [`deterministic::fill_block`] |
 //! | the calibrated model and its table | [`calibrated`] |
 //! | erosion at an impact | [`ErosionModel`] |
+//! | carry a particle's spin between hits; the shear and rotational lifts | [`carrier`] |
 //! | peak elastic force of a sphere or spheroid | [`force::Model::evaluate`] |
 //! | the library's one-line errors and range checks, for a caller's own keys | [`Error`], [`check`] |
 //!
@@ -156,6 +157,7 @@
 #![warn(unnameable_types)]
 pub mod angles;
 pub mod calibrated;
+pub mod carrier;
 pub mod check;
 pub mod collision;
 pub mod deterministic;

@@ -43,7 +43,7 @@ params() {
 
 # fluid STUDY: the converged RANS flow of STUDY on 2 ranks; fails unless the pressure
 # gradient changed by less than 0.2 % over the last 100 steps and the bulk velocity is
-# within 0.1 % of UB. Writes STUDY/fluid/converged.txt.
+# within 0.1 % of UB. Writes STUDY/fluid/converged.txt (with the first cells' y+).
 fluid() {
   local s=$1 name
   name=$(basename "$s")
@@ -58,7 +58,9 @@ fluid() {
       if (dg < 0) dg = -dg; if (du < 0) du = -du
       if (dg > 2e-3 || du > 1e-3) { print "pipe-flow: fluid " name " has not converged: see its run_solver.log" > "/dev/stderr"; exit 1 }
     }' > "$s/fluid/converged.txt"
-  echo "  $(cat "$s/fluid/converged.txt")"
+  grep -h "pipe: first-cell y+" "$s/fluid/run_solver.log" | tail -1 | sed "s/^pipe:/fluid $name:/" \
+    >> "$s/fluid/converged.txt"
+  sed 's/^/  /' "$s/fluid/converged.txt"
 }
 
 # inject STUDY D_UM: NPART particles of diameter D_UM put into the converged flow (one rank:
@@ -74,6 +76,8 @@ inject() {
 # particles_run NAME KIND STUDY D_UM WALL MODEL [KEY VALUE ...]: queues one wall's run (a
 # line of study.tsv and its params file; run_all runs them). KEY VALUE pairs override the
 # params (e.g. law 0 dispersion 0 t_sample 0.9 np 2000); `nprocs N` sets its MPI ranks (1).
+# The physics by default: the Sec. 4 collision law, code_saturne's simplified Langevin
+# dispersion, the spin carried between hits, the Saffman-Mei and the Magnus lift.
 particles_run() {
   local name=$1 kind=$2 s=$3 d=$4 wall=$5 model=$6
   shift 6
@@ -91,8 +95,8 @@ particles_run() {
   done
   params "$WORK/params/$name.params" 2 $((NT_FLUID + 1 + np)) dt "$DT" wall "$code" \
     delta_xi_deg "$xi" delta_zeta_deg "$ze" model "$mc" law 1 preset 1 \
-    seed 2021 n_particles "$NPART" d_p "$(awk -v d="$d" 'BEGIN { print d * 1e-6 }')" \
-    rho_p "$RHO" dispersion 1 t_sample "$T_DEV" n_bins 20 log_hits 1 \
+    nt_restart $((NT_FLUID + 1)) seed 2021 n_particles "$NPART" d_p "$(awk -v d="$d" 'BEGIN { print d * 1e-6 }')" \
+    rho_p "$RHO" dispersion 1 spin 1 saffman 1 magnus 1 t_sample "$T_DEV" n_bins 20 log_hits 1 \
     mesh_sides "$(awk '$1 == "NC" { print 4 * $2 }' "$s/mesh.txt")" "${extra[@]}"
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$kind" "$d" "$wall" "$model" "runs/$name" >> "$WORK/study.tsv"
   RUNS+=("$s|$name|$d|$nprocs")

@@ -6,11 +6,15 @@
  *          circumference at the hit.
  * as any host passes it: the library builds the wall frame from the normal and the lay.
  * The key of the hit's random stream is (particle id, collision index), the id the
- * particle carries between ranks and through restarts (../case_src/cswm_ids.h).
+ * particle carries between ranks and through restarts (../case_src/cswm_ids.h). The hit
+ * takes the particle's spin from, and gives the rebound's spin back to, the spin table
+ * (pipe_spin.h; spin 0 when pipe.params `spin` is 0).
  * In the sampling window every rebound (status RW_OK) is counted (pipe_tally.c) and, with
  * log_hits, every hit is written to hits_rank<r>.csv: impact point, impact angle (to the
  * mean wall, and to the wall element the library drew: rw_element_impact_angle), angle to
- * the lay, speeds before and after, status. The rest of the step after a hit follows the
+ * the lay, speeds before and after, status; and the hit's vectors in full (velocity and
+ * spin before and after, the face normal) for the test that replays it in the library.
+ * The rest of the step after a hit follows the
  * rebound velocity.
  * PINNED TO code_saturne 6.0.x (../case_src/cswm_wall_hit.h).                           */
 
@@ -26,6 +30,7 @@
 #include "cswm_common.h"
 #include "cswm_wall_hit.h"
 #include "pipe_params.h"
+#include "pipe_spin.h"
 #include "pipe_tally.h"
 #include "roughwall.h"
 #include "cswm_wall.h"
@@ -86,9 +91,9 @@ _deg(double rad)
 
 static void
 _log_hit(unsigned long long pid, unsigned long long cidx, const cs_real_t xi[3],
-         const cs_real_t n[3], const double lay[3], const double u_in[3],
-         const double u_out[3], int status, unsigned candidates, double alpha_element)
+         const cs_real_t n[3], const double lay[3], const rw_hit *hit, const rw_result *res)
 {
+  const double *u_in = hit->velocity, *u_out = res->velocity;
   if (_hits_f == NULL) {
     char name[64];
     snprintf(name, 63, "hits_rank%04d.csv", cs_glob_rank_id < 0 ? 0 : cs_glob_rank_id);
@@ -97,7 +102,8 @@ _log_hit(unsigned long long pid, unsigned long long cidx, const cs_real_t xi[3],
       bft_error(__FILE__, __LINE__, 0, "cannot open %s", name);
     fprintf(_hits_f, "particle_id,collision_index,step,y,z,alpha_in_deg,lay_angle_deg,"
                      "speed_in,speed_out,alpha_out_deg,deflection_deg,status,candidate_walls,"
-                     "alpha_element_deg\n");
+                     "alpha_element_deg,ux_in,uy_in,uz_in,wx_in,wy_in,wz_in,ux_out,uy_out,"
+                     "uz_out,wx_out,wy_out,wz_out,nx,ny,nz,diameter\n");
   }
   double s_in = cs_math_3_norm(u_in), s_out = cs_math_3_norm(u_out);
   double un_in = fabs(cs_math_3_dot_product(u_in, n));
@@ -119,11 +125,15 @@ _log_hit(unsigned long long pid, unsigned long long cidx, const cs_real_t xi[3],
     uo[k] = u_out[k] - don * n[k];
   double cd = cs_math_3_dot_product(ut, uo)
               / (cs_math_3_norm(ut) * cs_math_3_norm(uo) + 1e-300);
-  fprintf(_hits_f, "%llu,%llu,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%u,%.17g\n",
+  fprintf(_hits_f, "%llu,%llu,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%u,%.17g",
           pid, cidx, cs_glob_time_step->nt_cur, xi[1], xi[2],
           _deg(asin(fmin(1., un_in / s_in))), _deg(acos(fmin(1., c))), s_in, s_out,
-          _deg(asin(fmin(1., un_out / s_out))), _deg(acos(fmax(-1., fmin(1., cd)))), status,
-          candidates, _deg(alpha_element));
+          _deg(asin(fmin(1., un_out / s_out))), _deg(acos(fmax(-1., fmin(1., cd)))),
+          res->status, res->candidate_walls, _deg(rw_element_impact_angle(hit, res)));
+  const double *vec[5] = {hit->velocity, hit->spin, res->velocity, res->spin, n};
+  for (int v = 0; v < 5; v++)
+    fprintf(_hits_f, ",%.17g,%.17g,%.17g", vec[v][0], vec[v][1], vec[v][2]);
+  fprintf(_hits_f, ",%.17g\n", hit->diameter);
 }
 
 void
@@ -149,9 +159,11 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
   double lay[3];
   _lay(face_norm, lay);
 
+  double spin[3];
+  pipe_spin_get(pid, spin);                    /* code_saturne 6.0 tracks no particle spin */
   rw_hit hit = {
     .velocity = {particle_velocity[0], particle_velocity[1], particle_velocity[2]},
-    .spin = {0., 0., 0.},                      /* code_saturne 6.0 tracks no particle spin */
+    .spin = {spin[0], spin[1], spin[2]},
     .normal = {face_norm[0], face_norm[1], face_norm[2]},
     .lay = {lay[0], lay[1], lay[2]},
     .wall_velocity = {0., 0., 0.},
@@ -167,6 +179,8 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
 
   for (int k = 0; k < 3; k++)
     particle_velocity[k] = res.velocity[k];
+  if (status == RW_OK)
+    pipe_spin_after_hit(pid, cidx, res.spin);
   cswm_set_key(particles, p_id, pid, cidx + 1);
 
   /* The rest of the step goes along the rebound velocity, not the specular reflection that
@@ -189,8 +203,7 @@ cs_lagr_user_boundary_interaction(cs_lagr_particle_set_t    *particles,
     if (status == RW_OK)
       pipe_tally_hit(pid);
     if (pipe_params()->log_hits)
-      _log_hit(pid, cidx, c_intersect, face_norm, lay, hit.velocity, res.velocity, status,
-               res.candidate_walls, rw_element_impact_angle(&hit, &res));
+      _log_hit(pid, cidx, c_intersect, face_norm, lay, &hit, &res);
   }
 }
 

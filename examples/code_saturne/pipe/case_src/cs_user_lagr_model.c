@@ -3,7 +3,8 @@
  * (one-way coupling on a frozen field), with code_saturne's own Langevin dispersion model on
  * or off (pipe.params `dispersion`). The particle runs restart from the injection run's
  * particles, so every wall of a study starts from the same particles, whatever the number
- * of MPI ranks.                                                                          */
+ * of MPI ranks. With pipe.params `complete_langevin` 1 the dispersion is code_saturne's
+ * complete model instead of the simplified one. The lifts and the spin: pipe_forces.h.                                                                          */
 #include "cs_defs.h"
 
 #include "cs_headers.h"
@@ -31,6 +32,24 @@ cs_user_lagr_model(void)
   cs_glob_lagr_stat_options->isuist = 0;
   cs_glob_lagr_stat_options->idstnt = pp->nt + 1;
   cs_glob_lagr_stat_options->nstist = pp->nt + 1;
+  if (pp->phase == 2 && pp->complete_langevin && pp->nt_restart <= 0)
+    bft_error(__FILE__, __LINE__, 0, "pipe.params: complete_langevin needs nt_restart, "
+              "the step the run restarts from (> 0)");
+  if (pp->phase == 2 && pp->complete_langevin && pp->dispersion) {
+    /* The complete model (Minier & Peirano 2001) needs the particles' mean velocity per cell:
+       code_saturne's volume statistics, from the first step of this run (a run that does
+       not read statistics must start them after its restart step: cs_lagr_lec.c, 6.0.2),
+       accumulated over it (steady, isttio = 1). It applies from the step after modcpl on
+       (cs_lagr_car.c), with the velocity gradient cs_user_lagr_ef gives it (pipe_forces.c).
+       Where a cell has no statistics yet, code_saturne falls back to the particle's own
+       velocities. */
+    cs_glob_lagr_stat_options->idstnt = pp->nt_restart + 1;
+    cs_glob_lagr_stat_options->nstist = pp->nt_restart + 1;
+    cs_glob_lagr_time_scheme->modcpl = pp->nt_restart + 1;
+    /* the mean flow along the pipe axis x (cs_lagr_car.c; the setup log prints this 1 as
+       "y": cs_lagr_log.c indexes "xyz" from 0) */
+    cs_glob_lagr_time_scheme->idirla = 1;
+  }
 }
 
 END_C_DECLS

@@ -13,11 +13,41 @@
 #include <stdio.h>
 
 #include "cs_headers.h"
+#include "pipe_forces.h"
 #include "pipe_params.h"
 
 BEGIN_C_DECLS
 
 static double _g_int = -1.;   /* integral part of G; < 0 until initialised */
+
+/* The wall cells' centres in wall units, y+ = y u_tau / nu, with the mean friction velocity
+   u_tau = (G D / 4 rho)^1/2 of the driving gradient G (in a steady periodic pipe G D / 4 is
+   the mean wall shear stress): the near-wall resolution the dispersion sees. */
+static void
+_first_cell_yplus(double g, double rho, double mu)
+{
+  const cs_mesh_t *m = cs_glob_mesh;
+  const cs_mesh_quantities_t *mq = cs_glob_mesh_quantities;
+  const double u_tau = sqrt(fabs(g) * pipe_params()->diameter_pipe / (4. * rho));
+  double lo = 1e300, hi = 0., s[2] = {0., 0.};
+  for (cs_lnum_t f = 0; f < m->n_b_faces; f++) {
+    const cs_real_t *n = mq->b_face_normal + 3 * f;
+    const cs_real_t *c = mq->cell_cen + 3 * m->b_face_cells[f];
+    const cs_real_t *o = mq->b_face_cog + 3 * f;
+    double y = fabs((c[0] - o[0]) * n[0] + (c[1] - o[1]) * n[1] + (c[2] - o[2]) * n[2])
+               / mq->b_face_surf[f];
+    double yp = y * u_tau * rho / mu;
+    lo = fmin(lo, yp);
+    hi = fmax(hi, yp);
+    s[0] += yp;
+    s[1] += 1.;
+  }
+  cs_parall_min(1, CS_DOUBLE, &lo);
+  cs_parall_max(1, CS_DOUBLE, &hi);
+  cs_parall_sum(2, CS_DOUBLE, s);
+  bft_printf("pipe: first-cell y+ min %.3g mean %.3g max %.3g (u_tau %.4g m/s)\n", lo,
+             s[0] / s[1], hi, u_tau);
+}
 
 void
 cs_user_source_terms(cs_domain_t  *domain,
@@ -60,6 +90,8 @@ cs_user_source_terms(cs_domain_t  *domain,
   if (cs_glob_time_step->nt_cur % 20 == 0 || cs_glob_time_step->nt_cur == cs_glob_time_step->nt_max)
     bft_printf("pipe: step %d bulk velocity %.6g m/s (target %.6g), pressure gradient %.6g Pa/m\n",
                cs_glob_time_step->nt_cur, u_b, pp->u_bulk, g);
+  if (cs_glob_time_step->nt_cur == cs_glob_time_step->nt_max)
+    _first_cell_yplus(g, rho, mu);
 }
 
 /* A uniform axial velocity at the start of the fluid run (k and epsilon from uref, almax). */
@@ -67,6 +99,7 @@ void
 cs_user_initialization(cs_domain_t  *domain)
 {
   CS_UNUSED(domain);
+  pipe_forces_init();   /* a particle run: the frozen flow's vorticity (lift, spin) */
   if (cs_glob_time_step->nt_prev > 0)
     return;
   cs_real_3_t *vel = (cs_real_3_t *)CS_F_(vel)->val;

@@ -24,7 +24,8 @@ _set(const char *key, const char *val)
 #define I(name) if (strcmp(key, #name) == 0) { _p.name = (int)v; return; }
   I(phase) I(nt) D(dt) D(diameter_pipe) D(length) D(u_bulk) I(wall) D(delta_xi_deg)
   D(delta_zeta_deg) I(model) I(law) I(preset) I(n_particles) D(d_p) D(rho_p)
-  I(dispersion) D(t_sample) I(n_bins) I(log_hits) I(mesh_sides)
+  I(dispersion) D(t_sample) I(n_bins) I(log_hits) I(mesh_sides) I(spin) I(saffman) I(magnus)
+  I(complete_langevin) I(trace) D(kick) I(nt_restart)
 #undef D
 #undef I
   if (strcmp(key, "seed") == 0) { _p.seed = strtoull(val, NULL, 10); return; }

@@ -28,6 +28,14 @@ typedef struct {
   double t_sample;         /* start of the sampling window, from the start of this run (s) */
   int    n_bins;           /* bins across a diameter */
   int    log_hits;         /* write every wall hit in the window to hits_rank<r>.csv */
+  int    spin;             /* carry the particles' spin between hits (pipe_spin.h) */
+  int    saffman;          /* Saffman-Mei shear lift (pipe_forces.h) */
+  int    magnus;           /* Magnus lift (pipe_forces.h) */
+  int    complete_langevin;/* code_saturne's complete dispersion model instead of the simplified one */
+  int    nt_restart;       /* the time step a particle run restarts from (the injection's last) */
+  int    trace;            /* write the state of particles 0 ... trace-1 every step */
+  double kick;             /* a test scene: the particles thrown at the wall at the end of the
+                              run's first step, this radial speed (m/s) added */
   int    mesh_sides;       /* sides of the mesh's polygonal wall (for pipe-stats' areas; 0: unknown) */
 } pipe_params_t;
 

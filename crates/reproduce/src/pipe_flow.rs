@@ -621,6 +621,29 @@ fn switches(md: &mut String, s: &Rows) {
         }
         md.push('\n');
     }
+    // The switches that move the answer (the collision ratio) beyond 3 standard errors: a
+    // physics choice the study's numbers depend on.
+    let beyond: Vec<String> = s
+        .rows
+        .iter()
+        .filter(|r| r.get("quantity").map(String::as_str) == Some("collisions_per_m"))
+        .filter_map(|r| {
+            let (c, se) = (num(r, "change")?, num(r, "change_se")?);
+            let (d, k) = (r.get("diameter_um")?, r.get("switch")?);
+            (c.abs() > 3.0 * se).then(|| format!("{d} µm {k} ({c:+.2} ± {se:.2})"))
+        })
+        .collect();
+    if !beyond.is_empty() {
+        let _ = writeln!(
+            md,
+            "\nSwitches that move the collision ratio by more than 3 standard errors: {}. The \
+             study's own settings (the simplified Langevin model, spin, both lifts, each size's \
+             deviations) carry that much model uncertainty: where the complete Langevin model is \
+             among them, the simplified one the study runs does not give the same answer within \
+             its error.",
+            beyond.join("; ")
+        );
+    }
     let _ = writeln!(
         md,
         "\nNot modelled, so not in this table: {NOT_MODELLED}.\n"

@@ -10,20 +10,29 @@
 
 use super::{cross, norm, FluidPoint};
 
-/// `C_LR |u_f − v_p|` (m/s) of Oesterlé & Bui Dinh (1998): `C_LR` times the slip speed,
-/// written as `0.45 |u| + (d_p |Ω| − 0.45 |u|) exp(…)` (Re_R/Re_p |u| = d_p |Ω|), finite as
-/// the slip vanishes.
-fn coefficient_times_slip(p: &FluidPoint, omega: f64) -> f64 {
-    let u = norm(&p.slip);
-    let re_p = p.reynolds_particle();
-    let re_r = p.rho_f * p.d_p * p.d_p * omega / p.mu_f;
-    let decay = (-0.05684 * re_r.powf(0.4) * re_p.powf(0.3)).exp();
-    0.45 * u + (p.d_p * omega - 0.45 * u) * decay
+/// Oesterlé & Bui Dinh's high-Reynolds limit of `C_LR`.
+const C_LR_LIMIT: f64 = 0.45;
+
+/// The weight `exp(−0.05684 Re_R^0.4 Re_p^0.3)` that takes Oesterlé & Bui Dinh's `C_LR`
+/// from Rubinow & Keller's `Re_R/Re_p` (weight 1) to [`C_LR_LIMIT`] (weight 0).
+fn oesterle_weight(re_p: f64, re_r: f64) -> f64 {
+    (-0.05684 * re_r.powf(0.4) * re_p.powf(0.3)).exp()
 }
 
-/// Oesterlé & Bui Dinh's (1998) lift coefficient `C_LR(Re_p, Re_R)`; `Re_p > 0`.
+/// `C_LR |u_f − v_p|` (m/s): [`magnus_coefficient`] times the slip speed, written as
+/// `0.45 |u| + (d_p |Ω| − 0.45 |u|) w` (Re_R/Re_p |u| = d_p |Ω|), finite as the slip
+/// vanishes.
+fn coefficient_times_slip(p: &FluidPoint, omega: f64) -> f64 {
+    let u = norm(&p.slip);
+    let re_r = p.rho_f * p.d_p * p.d_p * omega / p.mu_f;
+    let w = oesterle_weight(p.reynolds_particle(), re_r);
+    C_LR_LIMIT * u + (p.d_p * omega - C_LR_LIMIT * u) * w
+}
+
+/// Oesterlé & Bui Dinh's (1998) lift coefficient
+/// `C_LR = 0.45 + (Re_R/Re_p − 0.45) exp(−0.05684 Re_R^0.4 Re_p^0.3)`; `Re_p > 0`.
 pub fn magnus_coefficient(re_p: f64, re_r: f64) -> f64 {
-    0.45 + (re_r / re_p - 0.45) * (-0.05684 * re_r.powf(0.4) * re_p.powf(0.3)).exp()
+    C_LR_LIMIT + (re_r / re_p - C_LR_LIMIT) * oesterle_weight(re_p, re_r)
 }
 
 /// The Magnus lift acceleration F_LR / m_p (m/s², m_p = ρ_p π d_p³ / 6; the module's

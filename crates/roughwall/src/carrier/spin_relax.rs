@@ -9,11 +9,17 @@
 
 use super::{norm, FluidPoint};
 
+/// `C_R Re_R` in the Stokes regime: 64π (the Stokes torque π μ_f d_p³ Ω).
+const STOKES_C_R_RE: f64 = 64.0 * std::f64::consts::PI;
+
+/// The Re_R up to which the Stokes branch holds (Dennis, Singh & Ingham 1980).
+const STOKES_LIMIT: f64 = 32.0;
+
 /// Dennis, Singh & Ingham's (1980) rotational drag coefficient `C_R(Re_R)`, as Crowe et al.
 /// (2012, Ch. 4) quote it; the two branches meet at Re_R = 32 to 0.2 %.
 pub fn rotational_drag_coefficient(re_r: f64) -> f64 {
-    if re_r <= 32.0 {
-        64.0 * std::f64::consts::PI / re_r
+    if re_r <= STOKES_LIMIT {
+        STOKES_C_R_RE / re_r
     } else {
         12.9 / re_r.sqrt() + 128.4 / re_r
     }
@@ -28,8 +34,8 @@ pub fn relaxed_spin(p: &FluidPoint, dt: f64) -> [f64; 3] {
     let omega = norm(&rot);
     let re_r = p.rho_f * p.d_p * p.d_p * omega / p.mu_f;
     // C_R |Ω| without dividing by |Ω| in the Stokes branch (finite at Ω = 0)
-    let c_r_omega = if re_r <= 32.0 {
-        64.0 * std::f64::consts::PI * p.mu_f / (p.rho_f * p.d_p * p.d_p)
+    let c_r_omega = if re_r <= STOKES_LIMIT {
+        STOKES_C_R_RE * p.mu_f / (p.rho_f * p.d_p * p.d_p)
     } else {
         rotational_drag_coefficient(re_r) * omega
     };

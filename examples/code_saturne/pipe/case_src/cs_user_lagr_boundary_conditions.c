@@ -94,17 +94,11 @@ _log_hit(unsigned long long pid, unsigned long long cidx, const cs_real_t xi[3],
          const cs_real_t n[3], const double lay[3], const rw_hit *hit, const rw_result *res)
 {
   const double *u_in = hit->velocity, *u_out = res->velocity;
-  if (_hits_f == NULL) {
-    char name[64];
-    snprintf(name, 63, "hits_rank%04d.csv", cs_glob_rank_id < 0 ? 0 : cs_glob_rank_id);
-    _hits_f = fopen(name, "w");
-    if (_hits_f == NULL)
-      bft_error(__FILE__, __LINE__, 0, "cannot open %s", name);
-    fprintf(_hits_f, "particle_id,collision_index,step,y,z,alpha_in_deg,lay_angle_deg,"
+  if (_hits_f == NULL)
+    _hits_f = pipe_rank_csv("hits", "particle_id,collision_index,step,y,z,alpha_in_deg,lay_angle_deg,"
                      "speed_in,speed_out,alpha_out_deg,deflection_deg,status,candidate_walls,"
                      "alpha_element_deg,ux_in,uy_in,uz_in,wx_in,wy_in,wz_in,ux_out,uy_out,"
-                     "uz_out,wx_out,wy_out,wz_out,nx,ny,nz,diameter\n");
-  }
+                     "uz_out,wx_out,wy_out,wz_out,nx,ny,nz,diameter");
   double s_in = cs_math_3_norm(u_in), s_out = cs_math_3_norm(u_out);
   double un_in = fabs(cs_math_3_dot_product(u_in, n));
   double un_out = fabs(cs_math_3_dot_product(u_out, n));

@@ -90,16 +90,10 @@ _trace(const cs_lagr_particle_set_t *p_set, cs_lnum_t p_id, double taup,
        const cs_real_t gradpr[3], const rw_fluid_point *pt, const double a_s[3],
        const double a_m[3])
 {
-  if (_trace_f == NULL) {
-    char name[64];
-    snprintf(name, 63, "trace_rank%04d.csv", cs_glob_rank_id < 0 ? 0 : cs_glob_rank_id);
-    _trace_f = fopen(name, "w");
-    if (_trace_f == NULL)
-      bft_error(__FILE__, __LINE__, 0, "cannot open %s", name);
-    fprintf(_trace_f, "step,particle_id,collision_index,x,y,z,vx,vy,vz,usx,usy,usz,taup,"
+  if (_trace_f == NULL)
+    _trace_f = pipe_rank_csv("trace", "step,particle_id,collision_index,x,y,z,vx,vy,vz,usx,usy,usz,taup,"
                       "gpx,gpy,gpz,wfx,wfy,wfz,wpx,wpy,wpz,asx,asy,asz,amx,amy,amz,"
-                      "rho_f,mu_f,rho_p,d_p\n");
-  }
+                      "rho_f,mu_f,rho_p,d_p");
   const cs_real_t *x = cs_lagr_particles_attr_const(p_set, p_id, CS_LAGR_COORDS);
   const cs_real_t *v = cs_lagr_particles_attr_const(p_set, p_id, CS_LAGR_VELOCITY);
   const cs_real_t *us = cs_lagr_particles_attr_const(p_set, p_id, CS_LAGR_VELOCITY_SEEN);

@@ -32,6 +32,19 @@ _set(const char *key, const char *val)
   bft_error(__FILE__, __LINE__, 0, "pipe.params: unknown key '%s'", key);
 }
 
+FILE *
+pipe_rank_csv(const char *stem, const char *header)
+{
+  char name[128];
+  snprintf(name, sizeof name, "%s_rank%04d.csv", stem,
+           cs_glob_rank_id < 0 ? 0 : cs_glob_rank_id);
+  FILE *f = fopen(name, "w");
+  if (f == NULL)
+    bft_error(__FILE__, __LINE__, 0, "cannot open %s", name);
+  fprintf(f, "%s\n", header);
+  return f;
+}
+
 const pipe_params_t *
 pipe_params(void)
 {

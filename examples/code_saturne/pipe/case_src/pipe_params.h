@@ -7,6 +7,8 @@
  *
  * PINNED TO code_saturne 6.0.x like the rest of the hook.                                   */
 
+#include <stdio.h>
+
 typedef struct {
   int    phase;            /* 0 fluid (RANS only), 1 inject (one Lagrangian step), 2 particles */
   int    nt;               /* time steps of this run */
@@ -41,5 +43,9 @@ typedef struct {
 
 /* The parameters, read once (aborts the run with a message naming the key on a bad line). */
 const pipe_params_t *pipe_params(void);
+
+/* Opens this rank's CSV file <stem>_rank<r>.csv in the run directory for writing and writes
+   its header line (aborts the run if it cannot). */
+FILE *pipe_rank_csv(const char *stem, const char *header);
 
 #endif

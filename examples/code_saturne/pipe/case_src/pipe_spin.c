@@ -16,6 +16,7 @@ BEGIN_C_DECLS
 static double *_spin = NULL;          /* 3 n: the spins, the same on every rank */
 static long long *_stamp = NULL;      /* n: 2 + collision index of this step's last hit here */
 static double *_buf = NULL;           /* 3 n: exchange buffer */
+static long long *_mine = NULL;       /* n: this rank's stamps, during the exchange */
 
 static void
 _alloc(void)
@@ -26,7 +27,8 @@ _alloc(void)
   _spin = calloc(3 * n + 1, sizeof(double));
   _buf = calloc(3 * n + 1, sizeof(double));
   _stamp = calloc(n + 1, sizeof(long long));
-  if (_spin == NULL || _buf == NULL || _stamp == NULL)
+  _mine = calloc(n + 1, sizeof(long long));
+  if (_spin == NULL || _buf == NULL || _stamp == NULL || _mine == NULL)
     bft_error(__FILE__, __LINE__, 0, "pipe: cannot allocate the spins of %zu particles", n);
 }
 
@@ -75,9 +77,7 @@ pipe_spin_step(const cs_lagr_particle_set_t *p_set, double dt)
         highest collision index; one rank has it), unchanged where no rank saw a hit. */
 #if defined(HAVE_MPI)
   if (cs_glob_n_ranks > 1) {
-    long long *mine = malloc((n + 1) * sizeof(long long));
-    if (mine == NULL)
-      bft_error(__FILE__, __LINE__, 0, "pipe: cannot allocate the spin exchange");
+    long long *mine = _mine;
     memcpy(mine, _stamp, n * sizeof(long long));
     MPI_Allreduce(MPI_IN_PLACE, _stamp, (int)n, MPI_LONG_LONG, MPI_MAX, cs_glob_mpi_comm);
     for (size_t i = 0; i < n; i++)
@@ -87,7 +87,6 @@ pipe_spin_step(const cs_lagr_particle_set_t *p_set, double dt)
     for (size_t i = 0; i < n; i++)
       if (_stamp[i] > 0)
         memcpy(_spin + 3 * i, _buf + 3 * i, 3 * sizeof(double));
-    free(mine);
   }
 #endif
   memset(_stamp, 0, n * sizeof(long long));

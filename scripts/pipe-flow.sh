@@ -2,9 +2,9 @@
 # Pneumatic conveying in a horizontal pipe with rough walls (issue 30), in code_saturne 6.0:
 # air at a bulk velocity of 20 m/s in a 50 mm pipe (k-epsilon RANS, a streamwise-periodic
 # section 4 D long, meshed by gmsh), glass beads of 100 and 200 um, one-way coupled, with
-# gravity and code_saturne's Langevin dispersion, on the frozen converged flow; every wall hit
-# goes to roughwall (examples/code_saturne/pipe/, docs/pipe-flow.md). The walls, on the same
-# flow and the same particles:
+# gravity and code_saturne's complete Langevin dispersion model (Minier & Peirano 2001), on
+# the frozen converged flow; every wall hit goes to roughwall (examples/code_saturne/pipe/,
+# docs/pipe-flow.md). The walls, on the same flow and the same particles:
 #   smooth (the limit Delta gamma = 0); technically smooth, isotropic Delta gamma = 0.5, 1 and
 #   2 deg; the Sec. 4 rough wall, (3.8, 7.5) deg as a 500 um sphere sees it, with the lay
 #   along the axis (a drawn tube) and around the circumference, and isotropic with the rms
@@ -15,7 +15,7 @@
 # Sommerfeld-Huber 1999; the Sec. 4 glass-steel collision law everywhere; the particles'
 # spin carried between hits, the Saffman-Mei and the Magnus lift (pipe_forces.h).
 # Sensitivity: each physics switch on both lays, paper's model: no spin, no Saffman-Mei, no
-# Magnus, no dispersion, code_saturne's complete Langevin model, the 500 um deviations, and
+# Magnus, no dispersion, code_saturne's simplified Langevin model, the 500 um deviations, and
 # (full mode) a near-wall mesh (first-cell y+ about 10 instead of 33-42).
 # Full mode: 4000 particles per run, 0.5 s (about 170 D) before a 0.4 s sampling window, plus
 # a finer mesh (the isotropic and the smooth wall) and a later window for one wall (the
@@ -56,6 +56,9 @@ NPART=$(particles 4000 400)
 T_DEV=$(particles 0.5 0.1) T_WIN=$(particles 0.4 0.1)
 MESH="8 8 1.1 20" FINE="12 12 1.05 30" NEARWALL="8 12 1.2 20"
 NP=$(steps "$(awk -v a="$T_DEV" -v b="$T_WIN" 'BEGIN { print a + b }')")
+# the complete Langevin model in every run (study_lib.sh): the simplified one moves the 100 um
+# lay ratios by 4-6 %, beyond their errors (docs/pipe-flow.md, "Dispersion")
+COMPLETE_LANGEVIN=1
 
 stage_start "pipe flow: build and mesh"
 # the C library the hook links (ROUGHWALL_LIB names another build: the tests give theirs)
@@ -95,14 +98,14 @@ for d in $DIAMETERS_UM; do
   done
   # Sensitivity switches (docs/pipe-flow.md, "Sensitivity"), each on the two lays: without
   # the spin, the Saffman-Mei lift, the Magnus lift or code_saturne's Langevin dispersion;
-  # with its complete Langevin model; on a near-wall mesh (full mode); with the 500 um
+  # with its simplified Langevin model; on a near-wall mesh (full mode); with the 500 um
   # bead's deviations (the Sec. 4 wall) instead of this size's own.
   for wall in axial circ; do
     particles_run "${d}um-$wall-paper-no-spin" no-spin "$WORK/coarse" "$d" "$wall" paper spin 0
     particles_run "${d}um-$wall-paper-no-saffman" no-saffman "$WORK/coarse" "$d" "$wall" paper saffman 0
     particles_run "${d}um-$wall-paper-no-magnus" no-magnus "$WORK/coarse" "$d" "$wall" paper magnus 0
     particles_run "${d}um-$wall-paper-no-dispersion" no-dispersion "$WORK/coarse" "$d" "$wall" paper dispersion 0
-    particles_run "${d}um-$wall-paper-complete-langevin" complete-langevin "$WORK/coarse" "$d" "$wall" paper complete_langevin 1
+    particles_run "${d}um-$wall-paper-simplified-langevin" simplified-langevin "$WORK/coarse" "$d" "$wall" paper complete_langevin 0
     if [ "$QUICK" != 1 ]; then
       particles_run "${d}um-$wall-paper-near-wall" near-wall "$WORK/nearwall" "$d" "$wall" paper
     fi

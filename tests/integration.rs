@@ -6,7 +6,7 @@
 //! `Cargo.toml` sets `autotests = false` and lists this target. `fuzz_cases.rs` stays a
 //! binary of its own: it runs thousands of cases on every core under wall-time caps, so it
 //! must not share the machine with the other tests; `real_systems/` is the target of the
-//! tests against real systems (feature `real-systems`). The library's own tests are in
+//! tests against real systems (`test = false`: `cargo test --test real_systems`). The library's own tests are in
 //! `crates/roughwall/tests/`. A new test file is added below (the test at the end fails
 //! until it is, for this crate's `tests/` and the library's).
 

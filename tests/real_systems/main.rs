@@ -6,7 +6,7 @@
 //!
 //! ```sh
 //! scripts/install-deps.sh
-//! cargo test --features real-systems --test real_systems
+//! cargo test --test real_systems
 //! ```
 //!
 //! (`scripts/test-all.sh`, the README's test command, does both.) A tool that is missing is

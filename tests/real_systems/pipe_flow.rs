@@ -342,7 +342,7 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
             "no-saffman",
             "no-magnus",
             "no-dispersion",
-            "complete-langevin",
+            "simplified-langevin",
             "sec4-deviations",
         ] {
             let r = sens
@@ -376,8 +376,9 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
         }
     }
     assert!(md.contains("What spin and lift cost"));
-    // The switches reach code_saturne: its setup log names the complete model only where
-    // asked for; the study mesh's first cells sit at y+ of about 30 or more.
+    // The switches reach code_saturne: its setup log names the complete model in the study's
+    // runs and not in the `simplified-langevin` ones; the study mesh's first cells sit at y+
+    // of about 30 or more.
     let setup = |run: &str| {
         std::fs::read_to_string(tmp.path().join(format!("work/runs/{run}/setup.log"))).unwrap()
     };
@@ -388,8 +389,9 @@ fn pipe_flow_script_quick_mode_writes_the_study() {
             .expect("the complete-model line of setup.log");
         line.split_whitespace().last().unwrap().parse().unwrap()
     };
-    assert!(from(&setup("100um-axial-paper-complete-langevin")) > 0);
-    assert_eq!(from(&setup("100um-axial-paper")), 0);
+    assert!(from(&setup("100um-axial-paper")) > 0);
+    assert!(from(&setup("200um-circ-calibrated")) > 0);
+    assert_eq!(from(&setup("100um-axial-paper-simplified-langevin")), 0);
     let fluid = std::fs::read_to_string(tmp.path().join("work/fluid.txt")).unwrap();
     let y_plus_min: f64 = fluid
         .split("first-cell y+ min ")

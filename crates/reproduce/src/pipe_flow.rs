@@ -96,17 +96,20 @@ pub fn pipe_flow(results: &Path, md: &mut String) -> Result<()> {
         );
     }
     let comparisons = Rows::read(&dir.join("comparisons.csv"))?.unwrap_or_default();
+    let sensitivity = Rows::read(&dir.join("sensitivity.csv"))?.unwrap_or_default();
     let run = run_toml(&dir);
-    md.push_str(
+    let _ = write!(
+        md,
         "The question Radenkovic & Simonin leave open: how does the anisotropy of a rough wall act \
          in a particle-laden pipe flow? `scripts/pipe-flow.sh` answers it in code_saturne 6.0.2 \
          (docs/pipe-flow.md): air at 20 m/s in a horizontal 50 mm pipe (k-ε RANS, a periodic section \
          4 D long, meshed by gmsh), glass beads of 100 and 200 µm (2500 kg/m³, one-way coupled, gravity, \
-         code_saturne's Langevin dispersion, the Saffman–Mei and the Magnus lift, each bead's spin \
+         code_saturne's {} Langevin dispersion model, the Saffman–Mei and the Magnus lift, each bead's spin \
          carried between hits), every wall hit through roughwall with the Sec. 4 \
          glass–steel law. All walls start from the same particles, sampled after they travelled \
          about 170 D. Values are means over the sampling window ± one standard error (jackknife over \
          20 batches of particles); differences are paired.\n\n",
+        langevin_model(&sensitivity)
     );
     if let Some(t) = &run {
         for key in ["fluid", "mesh_coarse", "mesh_fine", "mesh_nearwall"] {
@@ -221,12 +224,11 @@ pub fn pipe_flow(results: &Path, md: &mut String) -> Result<()> {
         }
         md.push('\n');
         answer(md, d, &comparisons, &by_name);
-        against_first_version(md, d, &comparisons);
+        against_earlier_versions(md, d, &comparisons);
         erosion(md, d, &comparisons);
         trends(md, d, &comparisons);
         settled(md, d, &by_name);
     }
-    let sensitivity = Rows::read(&dir.join("sensitivity.csv"))?.unwrap_or_default();
     switches(md, &sensitivity);
     costs(md, &Rows::read(&dir.join("costs.csv"))?.unwrap_or_default());
     checks(md, &comparisons);
@@ -324,12 +326,22 @@ const SECOND_VERSION: [(&str, f64, f64, f64, f64); 2] = [
     ("200", 1.74, 1.62, 1.54, 1.43),
 ];
 
-/// The lay ratios now against [`FIRST_VERSION`]'s.
-fn against_first_version(md: &mut String, d: &str, c: &Rows) {
+/// The third version (results/REPORT.md at commit 8a03f822, 2026-11-29: the second with spin
+/// and both lifts, code_saturne's simplified Langevin model): the same lay ratios.
+const THIRD_VERSION: [(&str, f64, f64, f64, f64); 2] = [
+    ("100", 2.09, 1.93, 2.37, 2.08),
+    ("200", 1.62, 1.51, 1.30, 1.22),
+];
+
+/// The lay ratios now against the earlier versions'.
+fn against_earlier_versions(md: &mut String, d: &str, c: &Rows) {
     let Some(&(_, collisions, rms, erosion)) = FIRST_VERSION.iter().find(|f| f.0 == d) else {
         return;
     };
     let Some(&(_, c2, r2, e2_wall, e2_facet)) = SECOND_VERSION.iter().find(|f| f.0 == d) else {
+        return;
+    };
+    let Some(&(_, c3, r3, e3_wall, e3_facet)) = THIRD_VERSION.iter().find(|f| f.0 == d) else {
         return;
     };
     let (circ, axial) = (format!("{d}um-circ-paper"), format!("{d}um-axial-paper"));
@@ -357,10 +369,12 @@ fn against_first_version(md: &mut String, d: &str, c: &Rows) {
         "**Against the earlier versions of this study** ({d} µm, lay ratio circumferential over \
          axial; first, commit fecd09f9: smooth baseline, (3.8°, 7.5°) for every size, Finnie at \
          the mean wall; second, commit 61a9939a: technically smooth walls, each size's own \
-         deviations, erosion at the facet, no spin and no lift; now: with spin and both lifts): \
-         collision frequency {collisions:.2} → {c2:.2} → {c_now:.2}; wall-normal fluctuations \
-         {rms:.2} → {r2:.2} → {r_now:.2}; Finnie's erosion at the mean wall {erosion:.2} → \
-         {e2_wall:.2} → {e_wall:.2}, at the facet struck {e2_facet:.2} → {e_facet:.2}. {} The \
+         deviations, erosion at the facet, no spin and no lift; third, commit 8a03f822: with spin \
+         and both lifts, code_saturne's simplified Langevin model; now: its complete model): \
+         collision frequency {collisions:.2} → {c2:.2} → {c3:.2} → {c_now:.2}; wall-normal \
+         fluctuations {rms:.2} → {r2:.2} → {r3:.2} → {r_now:.2}; Finnie's erosion at the mean \
+         wall {erosion:.2} → {e2_wall:.2} → {e3_wall:.2} → {e_wall:.2}, at the facet struck \
+         {e2_facet:.2} → {e3_facet:.2} → {e_facet:.2}. {} The \
          sensitivity table below says what each switch moves.\n",
         if held {
             "The direction of every effect held: the lay around the circumference still raises \
@@ -558,6 +572,20 @@ const NOT_MODELLED: &str = "a near-wall dispersion treatment (the near-wall mesh
     sensitivity to near-wall resolution instead), wall-corrected lift, two-way coupling, \
     particle–particle collisions";
 
+/// Which of code_saturne's Langevin models the study ran, from its sensitivity switches
+/// (`sensitivity.csv`): the Langevin switch runs the other one.
+fn langevin_model(sensitivity: &Rows) -> &'static str {
+    let switched_to_complete = sensitivity
+        .rows
+        .iter()
+        .any(|r| r.get("switch").map(String::as_str) == Some("complete-langevin"));
+    if switched_to_complete {
+        "simplified"
+    } else {
+        "complete"
+    }
+}
+
 /// The sensitivity table: each physics switch's change of the lay ratio (circumferential over
 /// axial) of the collision frequency, the wall-normal fluctuations and the erosion
 /// (`sensitivity.csv`).
@@ -570,6 +598,9 @@ fn switches(md: &mut String, s: &Rows) {
         "no-saffman" => "no Saffman–Mei lift".to_string(),
         "no-magnus" => "no Magnus lift".to_string(),
         "complete-langevin" => "code_saturne's complete Langevin model".to_string(),
+        "simplified-langevin" => {
+            "code_saturne's simplified Langevin model instead of the complete one".to_string()
+        }
         "near-wall" => {
             "near-wall mesh (first cell at y⁺ ≈ 10, not 33–42; own flow and particles)".to_string()
         }
@@ -634,13 +665,19 @@ fn switches(md: &mut String, s: &Rows) {
         })
         .collect();
     if !beyond.is_empty() {
+        let ran = langevin_model(s);
+        let other = if ran == "complete" {
+            "simplified"
+        } else {
+            "complete"
+        };
         let _ = writeln!(
             md,
             "\nSwitches that move the collision ratio by more than 3 standard errors: {}. The \
-             study's own settings (the simplified Langevin model, spin, both lifts, each size's \
-             deviations) carry that much model uncertainty: where the complete Langevin model is \
-             among them, the simplified one the study runs does not give the same answer within \
-             its error.",
+             answer depends on these physics choices beyond its statistical error. The study runs \
+             the {ran} Langevin model, spin, both lifts and each size's own deviations; where the \
+             {other} Langevin model is among the switches above, it would give an answer that \
+             differs from the study's beyond its error.",
             beyond.join("; ")
         );
     }

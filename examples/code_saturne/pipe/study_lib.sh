@@ -76,8 +76,9 @@ inject() {
 # particles_run NAME KIND STUDY D_UM WALL MODEL [KEY VALUE ...]: queues one wall's run (a
 # line of study.tsv and its params file; run_all runs them). KEY VALUE pairs override the
 # params (e.g. law 0 dispersion 0 t_sample 0.9 np 2000); `nprocs N` sets its MPI ranks (1).
-# The physics by default: the Sec. 4 collision law, code_saturne's simplified Langevin
-# dispersion, the spin carried between hits, the Saffman-Mei and the Magnus lift.
+# The physics by default: the Sec. 4 collision law, code_saturne's Langevin dispersion (its
+# complete model where COMPLETE_LANGEVIN=1, the simplified one otherwise), the spin carried
+# between hits, the Saffman-Mei and the Magnus lift.
 particles_run() {
   local name=$1 kind=$2 s=$3 d=$4 wall=$5 model=$6
   shift 6
@@ -96,7 +97,8 @@ particles_run() {
   params "$WORK/params/$name.params" 2 $((NT_FLUID + 1 + np)) dt "$DT" wall "$code" \
     delta_xi_deg "$xi" delta_zeta_deg "$ze" model "$mc" law 1 preset 1 \
     nt_restart $((NT_FLUID + 1)) seed 2021 n_particles "$NPART" d_p "$(awk -v d="$d" 'BEGIN { print d * 1e-6 }')" \
-    rho_p "$RHO" dispersion 1 spin 1 saffman 1 magnus 1 t_sample "$T_DEV" n_bins 20 log_hits 1 \
+    rho_p "$RHO" dispersion 1 complete_langevin "${COMPLETE_LANGEVIN:-0}" spin 1 saffman 1 \
+    magnus 1 t_sample "$T_DEV" n_bins 20 log_hits 1 \
     mesh_sides "$(awk '$1 == "NC" { print 4 * $2 }' "$s/mesh.txt")" "${extra[@]}"
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$kind" "$d" "$wall" "$model" "runs/$name" >> "$WORK/study.tsv"
   RUNS+=("$s|$name|$d|$nprocs")

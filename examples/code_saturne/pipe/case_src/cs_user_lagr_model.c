@@ -35,7 +35,7 @@ cs_user_lagr_model(void)
   if (pp->phase == 2 && pp->complete_langevin && pp->nt_restart <= 0)
     bft_error(__FILE__, __LINE__, 0, "pipe.params: complete_langevin needs nt_restart, "
               "the step the run restarts from (> 0)");
-  if (pp->phase == 2 && pp->complete_langevin && pp->dispersion) {
+  if (pp->phase == 2 && pp->complete_langevin) {
     /* The complete model (Minier & Peirano 2001) needs the particles' mean velocity per cell:
        code_saturne's volume statistics, from the first step of this run (a run that does
        not read statistics must start them after its restart step: cs_lagr_lec.c, 6.0.2),

@@ -70,6 +70,9 @@ pipe_params(void)
     bft_error(__FILE__, __LINE__, 0, "pipe.params: nt, dt, diameter_pipe and length must be > 0");
   if (_p.n_bins < 2 || _p.n_bins > 200)
     bft_error(__FILE__, __LINE__, 0, "pipe.params: n_bins %d: allowed 2 ... 200", _p.n_bins);
+  /* the complete model is a dispersion model: without dispersion there is none to run */
+  if (!_p.dispersion)
+    _p.complete_langevin = 0;
   _read = 1;
   return &_p;
 }

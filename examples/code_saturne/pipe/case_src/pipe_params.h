@@ -33,7 +33,8 @@ typedef struct {
   int    spin;             /* carry the particles' spin between hits (pipe_spin.h) */
   int    saffman;          /* Saffman-Mei shear lift (pipe_forces.h) */
   int    magnus;           /* Magnus lift (pipe_forces.h) */
-  int    complete_langevin;/* code_saturne's complete dispersion model instead of the simplified one */
+  int    complete_langevin;/* code_saturne's complete dispersion model instead of the simplified
+                              one (0 where dispersion is 0) */
   int    nt_restart;       /* the time step a particle run restarts from (the injection's last) */
   int    trace;            /* write the state of particles 0 ... trace-1 every step */
   double kick;             /* a test scene: the particles thrown at the wall at the end of the

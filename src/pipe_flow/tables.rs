@@ -61,6 +61,23 @@ fn ratios(a: &Analysed, b: &Analysed) -> Vec<Estimate> {
         .collect()
 }
 
+/// The columns that name a run, first in every per-run table; [`id_cells`] fills them.
+const ID_COLUMNS: [&str; 5] = ["run", "kind", "diameter_um", "wall", "model"];
+
+/// A per-run table's header: [`ID_COLUMNS`], then `rest`.
+fn with_id_columns(rest: &[&str]) -> CsvTable {
+    let header: Vec<&str> = ID_COLUMNS.iter().chain(rest).copied().collect();
+    CsvTable::new(&header)
+}
+
+/// The run of `runs` of this kind, diameter, wall and model.
+fn find_run(runs: &[Analysed], kind: &str, d: f64, wall: &str, model: &str) -> Option<usize> {
+    runs.iter().position(|a| {
+        let i = &a.run.info;
+        i.kind == kind && i.diameter_um == d && i.wall == wall && i.model == model
+    })
+}
+
 fn id_cells(a: &Analysed) -> Vec<String> {
     let i = &a.run.info;
     vec![
@@ -74,20 +91,17 @@ fn id_cells(a: &Analysed) -> Vec<String> {
 
 /// `summary.csv`.
 pub fn summary(runs: &[Analysed]) -> CsvTable {
-    let mut header: Vec<String> = [
-        "run",
-        "kind",
-        "diameter_um",
-        "wall",
-        "model",
-        "delta_xi_deg",
-        "delta_zeta_deg",
-        "particles",
-        "samples",
-        "hits",
-    ]
-    .map(String::from)
-    .to_vec();
+    let mut header: Vec<String> = ID_COLUMNS
+        .iter()
+        .chain(&[
+            "delta_xi_deg",
+            "delta_zeta_deg",
+            "particles",
+            "samples",
+            "hits",
+        ])
+        .map(|c| c.to_string())
+        .collect();
     let names: Vec<&str> = QUANTITIES.iter().map(|q| q.name).collect();
     for n in &names {
         header.push(n.to_string());
@@ -123,12 +137,7 @@ fn est_cells(e: Option<Estimate>) -> [String; 2] {
 
 /// `profiles.csv`: every profile of every run (the vertical slabs with velocities).
 pub fn profiles(runs: &[Analysed]) -> CsvTable {
-    let mut t = CsvTable::new(&[
-        "run",
-        "kind",
-        "diameter_um",
-        "wall",
-        "model",
+    let mut t = with_id_columns(&[
         "profile",
         "position_over_r",
         "concentration",
@@ -163,18 +172,7 @@ pub fn profiles(runs: &[Analysed]) -> CsvTable {
 /// `distributions.csv`: impact-angle and lay-angle PDFs (per degree) and erosion around the
 /// circumference (µm per tonne, angle from the bottom, folded).
 pub fn distributions(runs: &[Analysed]) -> CsvTable {
-    let mut t = CsvTable::new(&[
-        "run",
-        "kind",
-        "diameter_um",
-        "wall",
-        "model",
-        "quantity",
-        "lo_deg",
-        "hi_deg",
-        "value",
-        "se",
-    ]);
+    let mut t = with_id_columns(&["quantity", "lo_deg", "hi_deg", "value", "se"]);
     for a in runs {
         let mut sets = vec![
             ("impact_angle_pdf".to_string(), angle_pdf(&a.sums, false)),
@@ -202,12 +200,7 @@ pub fn distributions(runs: &[Analysed]) -> CsvTable {
 
 /// The pairs the study compares, as indices into `runs`: `(a, b)` for "a − b".
 pub fn pairs(runs: &[Analysed]) -> Vec<(usize, usize)> {
-    let find = |kind: &str, d: f64, wall: &str, model: &str| {
-        runs.iter().position(|a| {
-            let i = &a.run.info;
-            i.kind == kind && i.diameter_um == d && i.wall == wall && i.model == model
-        })
-    };
+    let find = |kind: &str, d: f64, wall: &str, model: &str| find_run(runs, kind, d, wall, model);
     let mut out = Vec::new();
     let mut push = |a: Option<usize>, b: Option<usize>| {
         if let (Some(a), Some(b)) = (a, b) {
@@ -343,10 +336,7 @@ pub fn sensitivity(runs: &[Analysed]) -> CsvTable {
         "z",
     ]);
     let find = |kind: &str, d: f64, wall: &str, model: &str| {
-        runs.iter().find(|a| {
-            let i = &a.run.info;
-            i.kind == kind && i.diameter_um == d && i.wall == wall && i.model == model
-        })
+        find_run(runs, kind, d, wall, model).map(|k| &runs[k])
     };
     let mut done: Vec<(String, u64, String)> = Vec::new();
     for a in runs {
@@ -397,12 +387,7 @@ pub fn sensitivity(runs: &[Analysed]) -> CsvTable {
 /// against the whole step's cost per particle step (tracking, wall hits, dispersion and
 /// the forces; CPU time summed over ranks), and their share of it.
 pub fn costs(runs: &[Analysed]) -> CsvTable {
-    let mut t = CsvTable::new(&[
-        "run",
-        "kind",
-        "diameter_um",
-        "wall",
-        "model",
+    let mut t = with_id_columns(&[
         "particle_steps",
         "lift_ns_per_particle_step",
         "spin_ns_per_particle_step",
@@ -410,7 +395,7 @@ pub fn costs(runs: &[Analysed]) -> CsvTable {
         "forces_share",
     ]);
     for a in runs {
-        let (i, Some(c)) = (&a.run.info, a.run.cost) else {
+        let Some(c) = a.run.cost else {
             continue;
         };
         let per = |s: f64| 1e9 * s / c.particle_steps;
@@ -420,18 +405,15 @@ pub fn costs(runs: &[Analysed]) -> CsvTable {
         } else {
             String::new()
         };
-        t.push(vec![
-            i.name.clone(),
-            i.kind.clone(),
-            fmt_num(i.diameter_um),
-            i.wall.clone(),
-            i.model.clone(),
+        let mut row = id_cells(a);
+        row.extend([
             fmt_num(c.particle_steps),
             fmt_num(per(c.lift_s)),
             fmt_num(per(spin)),
             fmt_num(per(c.step_s)),
             share,
         ]);
+        t.push(row);
     }
     t
 }

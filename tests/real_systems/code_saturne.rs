@@ -16,7 +16,6 @@
 
 use crate::common::*;
 use roughwall::tally::Histogram;
-use std::process::Command;
 
 #[test]
 fn code_saturne_calls_roughwall_at_every_wall_hit() {
@@ -26,19 +25,11 @@ fn code_saturne_calls_roughwall_at_every_wall_hit() {
         .prefix("cs")
         .tempdir_in("/tmp")
         .unwrap();
-    let out = Command::new(root.join("examples/code_saturne/run_checks.sh"))
-        .arg(tmp.path().join("work"))
-        .env("ROUGHWALL_INCLUDE", root.join("include"))
-        .env("ROUGHWALL_LIB", c_library_dir())
-        .output()
-        .expect("run examples/code_saturne/run_checks.sh");
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert!(
-        out.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&out.stderr)
+    let stdout = crate::run_example_checks(
+        &root.join("examples/code_saturne/run_checks.sh"),
+        &tmp.path().join("work"),
+        &[],
     );
-    eprintln!("{stdout}");
     // (a)
     assert!(stdout.contains("cell_id mismatches: 0"), "{stdout}");
     assert!(

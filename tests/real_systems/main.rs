@@ -25,6 +25,32 @@ mod python;
 mod slurm;
 mod surfacetopography;
 
+/// Runs a code_saturne example script (`examples/code_saturne/…/run_checks.sh WORK`) against
+/// this build's C library and header, with the extra environment `env`; panics with its
+/// output unless it succeeds, and returns its stdout (also printed, for the test's log).
+pub fn run_example_checks(
+    script: &std::path::Path,
+    work: &std::path::Path,
+    env: &[(&str, &std::path::Path)],
+) -> String {
+    let root = common::repo_root();
+    let out = std::process::Command::new(script)
+        .arg(work)
+        .env("ROUGHWALL_INCLUDE", root.join("include"))
+        .env("ROUGHWALL_LIB", common::c_library_dir())
+        .envs(env.iter().copied())
+        .output()
+        .unwrap_or_else(|e| panic!("run {}: {e}", script.display()));
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    eprintln!("{stdout}");
+    stdout
+}
+
 /// Fails, naming the install step, unless every command of `tools` is on the `PATH` or in
 /// `/usr/sbin`, `/sbin` (where Debian puts daemons such as `slurmctld`, off a non-root
 /// user's `PATH`; the scripts that start them add those folders).

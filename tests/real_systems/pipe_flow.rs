@@ -75,20 +75,11 @@ pub(crate) fn checks_study() -> &'static Path {
         crate::require(&["code_saturne", "gmsh", "gfortran", "mpiexec"]);
         let root = repo_root();
         let work = root.join("target/real-systems/pipe-checks");
-        let out = Command::new(root.join("examples/code_saturne/pipe/run_checks.sh"))
-            .arg(&work)
-            .env("ROUGHWALL_INCLUDE", root.join("include"))
-            .env("ROUGHWALL_LIB", c_library_dir())
-            .env("REBOUND_BIN", rebound_bin())
-            .output()
-            .expect("run examples/code_saturne/pipe/run_checks.sh");
-        let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-        assert!(
-            out.status.success(),
-            "{stdout}\n{}",
-            String::from_utf8_lossy(&out.stderr)
+        crate::run_example_checks(
+            &root.join("examples/code_saturne/pipe/run_checks.sh"),
+            &work,
+            &[("REBOUND_BIN", rebound_bin())],
         );
-        eprintln!("{stdout}");
         work
     })
 }

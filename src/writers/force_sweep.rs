@@ -90,6 +90,11 @@ pub fn accuracy_table(acc: &[Accuracy]) -> CsvTable {
     t
 }
 
+/// Least wall time over which each step count of `dynamic_convergence` is timed (repeats of one
+/// impact): 2 ms is 5–400 repeats, enough for the per-run figure in `run.toml`; at 20 ms a
+/// sweep with `hertz-dynamic` spent up to 0.54 s timing itself (9 step counts × 3 λ).
+const TIMING_S: f64 = 0.002;
+
 /// Representative impacts of the speed-versus-error table: for (up to) the first three λ of
 /// the sweep, the sweep's β closest to 45°, its first positive U_N and first D.
 pub fn convergence_runs(
@@ -123,7 +128,7 @@ pub fn convergence_runs(
                 &imp,
                 &force::CONVERGENCE_STEPS,
                 force::REFERENCE_STEPS,
-                0.02,
+                TIMING_S,
             );
             (imp, p, c)
         })

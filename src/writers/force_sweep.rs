@@ -91,8 +91,9 @@ pub fn accuracy_table(acc: &[Accuracy]) -> CsvTable {
 }
 
 /// Least wall time over which each step count of `dynamic_convergence` is timed (repeats of one
-/// impact): 2 ms is 5–400 repeats, enough for the per-run figure in `run.toml`; at 20 ms a
-/// sweep with `hertz-dynamic` spent up to 0.54 s timing itself (9 step counts × 3 λ).
+/// impact): 2 ms is 8–340 repeats of impacts of 5.9–267 µs (8–1024 steps, Fig. 9's glass
+/// spheroid, 2026-11-30), enough for the per-run figure in `run.toml`; at 20 ms a sweep with
+/// `hertz-dynamic` spent up to 0.54 s timing itself (9 step counts × 3 λ).
 const TIMING_S: f64 = 0.002;
 
 /// Representative impacts of the speed-versus-error table: for (up to) the first three λ of

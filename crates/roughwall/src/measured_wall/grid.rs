@@ -29,8 +29,8 @@ pub const ZETA_KNOTS: usize = 33;
 /// Histories shot per cell by default (the Fibonacci number `F₂₂`, whose lattice is the
 /// Fibonacci lattice): the table's sampling noise at a grid point is then a KS distance of
 /// about `0.87/√n` ≈ 0.0065 and an error of mean `α⁺` of a few hundredths of a degree, less
-/// between grid points, where four cells are blended. The build then takes about 15 s on a
-/// 4096² scan on 2 cores (docs/performance.md, row 25).
+/// between grid points, where four cells are blended. The build then takes 7–11 s on a
+/// 4096² scan on 2 cores, depending on the day (docs/performance.md, row 25).
 pub const HISTORIES_PER_CELL: u64 = 17_711;
 
 /// The largest share of a cell's histories that may leave the scan for the cell to be

@@ -2,6 +2,9 @@
 ! Sec. 4, hit by 20 particles in the paper's frame (normal +y, lay +x). Prints per hit the key,
 ! the status, the rebound velocity and spin (17 significant digits, so the Rust test can
 ! check them against the Rust call bit for bit) and the candidate walls; then a bad input.
+! Then what a CFD code does between two hits (rw_fluid_point): a 100 um glass bead in air near
+! the wall, 3 states, each its Saffman-Mei and Magnus lifts (m/s2) and its spin after 1 ms;
+! then a negative time step.
 program hits
   use, intrinsic :: iso_c_binding
   use roughwall
@@ -9,6 +12,8 @@ program hits
   type(rw_wall_params) :: params
   type(rw_hit) :: hit
   type(rw_result) :: res
+  type(rw_fluid_point) :: point
+  real(c_double) :: lift_sm(3), lift_mag(3), spin(3)
   type(c_ptr) :: wall
   character(kind=c_char) :: message(256)
   integer(c_int32_t) :: status
@@ -45,4 +50,26 @@ program hits
   status = rw_rebound(wall, hit, res)
   print '(a, i0)', 'zero normal: status ', status
   call rw_wall_free(wall)
+
+  ! Between hits: air at 20 C, glass, the slip and the shear of a wall cell, the spin a hit left.
+  point%rho_f = 1.204d0
+  point%mu_f = 1.825d-5
+  point%rho_p = 2500.0d0
+  point%d_p = 100.0d-6
+  do pid = 0, 2
+     point%slip = [1.5d0 - 0.5d0 * pid, -0.05d0 * pid, 0.02d0]
+     point%vorticity = [0.0d0, 30.0d0 * pid, -800.0d0 - 400.0d0 * pid]
+     point%spin = [10.0d0 * pid, -20.0d0, 3000.0d0 - 1500.0d0 * pid]
+     status = rw_saffman_mei_lift(point, lift_sm)
+     if (status /= RW_OK) stop 2
+     status = rw_magnus_lift(point, lift_mag)
+     if (status /= RW_OK) stop 2
+     spin = point%spin
+     status = rw_spin_relax(point, 1.0d-3, spin)
+     if (status /= RW_OK) stop 2
+     print '(a, i1, 9(1x, es25.17e3))', 'carrier ', pid, lift_sm, lift_mag, spin
+  end do
+  spin = point%spin
+  status = rw_spin_relax(point, -1.0d-3, spin)
+  print '(a, i0)', 'negative dt: status ', status
 end program hits

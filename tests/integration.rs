@@ -6,8 +6,9 @@
 //! `Cargo.toml` sets `autotests = false` and lists this target. `fuzz_cases.rs` stays a
 //! binary of its own: it runs thousands of cases on every core under wall-time caps, so it
 //! does not share the machine with the other hermetic tests (`scripts/test-all.sh` runs the
-//! real-system tests beside it: its caps, 20 s of CPU and 60 s of wall time a case, are 4×
-//! its heaviest case, 14.9 s under its own four workers); `real_systems/` is the target of the
+//! real-system tests beside it: its caps are 20 s of CPU and 60 s of wall time a case, and its
+//! heaviest cases, 100 000-point force sweeps, take 3.75 s of CPU alone and 16 s of wall time
+//! among its four workers, 2026-11-30); `real_systems/` is the target of the
 //! tests against real systems (`test = false`: `cargo test --test real_systems`). The
 //! library's own tests are in `crates/roughwall/tests/`. A new test file is added below (the test at the end fails
 //! until it is, for this crate's `tests/` and the library's).

@@ -9,13 +9,15 @@
 # directions between the table's grid points
 # (configs/scans/own-model.toml). Every run is compared with the first reference. Writes
 # $REBOUND_RESULTS/measured-wall-model/; `rebound report` turns it into a REPORT.md section.
+# REBOUND_MODEL_SCANS (in place of $P_MODEL_SCANS) and REBOUND_MODEL_HISTORIES (histories per
+# table direction) may be set to study a subset or another table resolution.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -n "${REBOUND_NESTED:-}" ] || : > "$STAGE_LOG"
 M=$OUT/$P_MEASURED_WALL_MODEL
 mkdir -p "$M/cases"
 N=$(particles 200000 2000)
 # The tables' histories per incident direction: the default, or the least in quick mode.
-HISTORIES=$([ "$QUICK" = 1 ] && echo 1024 || echo 17711)
+HISTORIES=${REBOUND_MODEL_HISTORIES:-$([ "$QUICK" = 1 ] && echo 1024 || echo 17711)}
 GAUSS_SURFACES=$(particles 16 2)
 
 # card_value CARD D KEY: KEY of the card's [wall] (D = 0) or of its [[diameter]] row of D µm.
@@ -48,7 +50,7 @@ own_case() {
   fi
 }
 
-for entry in $P_MODEL_SCANS; do
+for entry in ${REBOUND_MODEL_SCANS:-$P_MODEL_SCANS}; do
   s=${entry%%:*}
   ds=${entry#*:}
   stage_start "Measured-wall model: $s"

@@ -247,7 +247,8 @@ fn read_escape_table(path: &str) -> Result<&'static roughwall::calibrated::Escap
     roughwall::calibrated::EscapeTable::parse(&text, &what)?.intern()
 }
 
-/// Largest measured-wall table read (bytes): a table of the fixed grid is about 4.5 MB.
+/// Largest measured-wall table read (bytes): a table of the fixed grid is 7–10 MB of text,
+/// at most 12 MiB (every knot at ±π/2).
 const MAX_WALL_TABLE_BYTES: u64 = 1 << 24;
 
 /// Reads the measured-wall table at `path` (`[stochastic] wall_table`), as

@@ -221,7 +221,7 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
          centre surface) at incident directions between the table's grid points \
          (`configs/scans/own-model.toml`: α⁻ = −6.25°, −13.5°, −31° × β⁻ = 7.5°, 97.5°, −82.5° \
          from the lay; sample-land, too rough for grazing incidence on its 784 × 537 µm, at \
-         −38°, −48°, −62°, `configs/scans/own-model-sample-land.toml`), and again with another \
+         −39°, −48°, −60°, `configs/scans/own-model-sample-land.toml`), and again with another \
          seed: what two independent references differ by is the noise floor; `deterministic` \
          on 16 Gaussian walls with the particle's card deviations stands beside the models. \
          The goal \

@@ -218,7 +218,7 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     );
     // Truncated, another version, another grid, an edited `first_row`, not a table at all.
     assert!(err(&lines[..header + 3].join("\n")).contains("truncated after 2 of"));
-    assert!(err(&text.replacen("table v1", "table v0", 1)).contains("another format"));
+    assert!(err(&text.replacen("table v2", "table v1", 1)).contains("another format"));
     let grid = text.replacen("beta_columns = 24", "beta_columns = 12", 1);
     assert!(err(&grid).contains("this version's grid"));
     let first = text.replacen("first_row = 0", "first_row = 3", 1);

@@ -1,16 +1,18 @@
 //! The grid of incident directions a measured-wall table is built on, and its resolution.
 //!
-//! Rows are the incident angle `|α⁻|`, dense at grazing incidence, where the shadow effect
-//! changes the law fastest; columns are `β⁻` from the lay over the whole circle, because a
+//! Rows are the incident angle `|α⁻|`, 0.5° apart at grazing incidence, where the shadow
+//! effect changes the law fastest, and 2–5° apart above 24°, where a striated wall's law still
+//! bends between rows 6–16° apart (docs/design-notes.md); columns are `β⁻` from the lay over the whole circle, because a
 //! real wall need not be its own mirror image (`β⁻ ↔ −β⁻`) nor unchanged by a half turn
 //! (`β⁻ ↔ β⁻ + 180°`). Between grid points the law is interpolated
 //! ([`super::MeasuredWallTable::incidence`]); the spacings were chosen by measuring the
 //! interpolation error at grid midpoints (`tests/measured_wall.rs` and docs/design-notes.md).
 
 /// The rows: incident angles `|α⁻|` (degrees), increasing.
-pub const ALPHA_ROWS_DEG: [f64; 29] = [
+pub const ALPHA_ROWS_DEG: [f64; 43] = [
     1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0, 5.5, 6.0, 6.5, 7.0, 7.5, 8.0, 9.0, 10.0, 11.5,
-    13.0, 15.0, 17.5, 20.5, 24.0, 28.0, 34.0, 42.0, 54.0, 70.0, 90.0,
+    13.0, 15.0, 17.5, 20.5, 24.0, 26.0, 28.0, 30.0, 32.0, 34.0, 36.0, 38.0, 40.0, 43.0, 46.0, 50.0,
+    54.0, 58.0, 62.0, 66.0, 70.0, 75.0, 80.0, 85.0, 90.0,
 ];
 
 /// The columns: `β⁻ = −180° + j · 360°/BETA_COLUMNS`, `j = 0 … BETA_COLUMNS − 1` (15° apart).
@@ -19,18 +21,21 @@ pub const BETA_COLUMNS: usize = 24;
 /// Knots of each cell's quantile function of `ξ'` ([`super::QuantileFunction`]).
 pub const XI_KNOTS: usize = 129;
 
-/// Rank bins of `ξ'` within which the law of `ζ'` is kept (their dependence: 8 bins left a
-/// bias of up to 0.07° in mean `α⁺` at grazing incidence oblique to the lay, 16 halve it).
-pub const RANK_BINS: usize = 16;
+/// Rank bins of `ξ'` within which the law of `ζ'` is kept (their dependence). 8 bins left a
+/// bias of up to 0.07° in mean `α⁺` at grazing incidence oblique to the lay, 16 halve it; a
+/// narrow specular peak of the law (a sphere on a striated metal wall) needs more: its `ξ'`
+/// paired with `ζ'` of other histories spreads it (docs/design-notes.md). 32 bins of 33
+/// knots keep a table of the fixed grid under 12 MiB of text.
+pub const RANK_BINS: usize = 32;
 
 /// Knots of each rank bin's quantile function of `ζ'`.
 pub const ZETA_KNOTS: usize = 33;
 
 /// Histories shot per cell by default (the Fibonacci number `F₂₂`, whose lattice is the
 /// Fibonacci lattice): the table's sampling noise at a grid point is then a KS distance of
-/// about `0.87/√n` ≈ 0.0065 and an error of mean `α⁺` of a few hundredths of a degree, less
-/// between grid points, where four cells are blended. The build then takes 7–11 s on a
-/// 4096² scan on 2 cores, depending on the day (docs/performance.md, row 25).
+/// about `0.87/√n` ≈ 0.0065 and an error of mean `α⁺` of `σ(α⁺)/√n` (0.02–0.1° on the
+/// shipped scans), less between grid points, where four cells are mixed. The build then takes
+/// 9–15 s on a 4096² scan on 2 cores, depending on the day (docs/performance.md, row 25).
 pub const HISTORIES_PER_CELL: u64 = 17_711;
 
 /// The largest share of a cell's histories that may leave the scan for the cell to be
@@ -125,13 +130,14 @@ mod tests {
         assert_eq!((i, k), (6, 7));
         assert!((w - 0.5).abs() < 1e-12);
         // Above 9° the weights are linear in cot α.
-        let (i, k, w) = row_weights(38.0, 0);
-        assert_eq!((i, k), (24, 25));
+        let (i, k, w) = row_weights(48.0, 0);
+        assert_eq!((i, k), (32, 33));
+        assert_eq!((ALPHA_ROWS_DEG[i], ALPHA_ROWS_DEG[k]), (46.0, 50.0));
         let cot = |a: f64| 1.0 / a.to_radians().tan();
-        assert!((w - (cot(38.0) - cot(34.0)) / (cot(42.0) - cot(34.0))).abs() < 1e-12);
+        assert!((w - (cot(48.0) - cot(46.0)) / (cot(50.0) - cot(46.0))).abs() < 1e-12);
         assert_eq!(row_weights(0.3, 0), (0, 0, 0.0));
         assert_eq!(row_weights(2.5, 4), (4, 4, 0.0));
-        assert_eq!(row_weights(90.0, 0), (28, 28, 0.0));
+        assert_eq!(row_weights(90.0, 0), (42, 42, 0.0));
         assert_eq!(column_weights(-180.0), (0, 1, 0.0));
         assert_eq!(column_weights(180.0), (0, 1, 0.0));
         let (j, k, w) = column_weights(172.5);

@@ -13,11 +13,12 @@
 //! particle or a sphere's centre surface) over a fixed grid of incident directions
 //! ([`grid`]), kept as quantile functions ([`quantiles`]) of its normal-angle fluctuations
 //! `(ξ', ζ')` in the wall's frame (Eq. 4): the marginal law of `ξ'`, and the law of `ζ'`
-//! within each of 16 rank bins of `ξ'` (their dependence). A rebound draws `(ξ', ζ')` for its
-//! incident direction by interpolating the quantile functions of the four surrounding grid
-//! cells at the same probabilities (displacement interpolation: a law that shifts with `α⁻`
-//! is interpolated as a shift, not as a mixture), and applies the collision law in that
-//! element's frame, as the paper's model does with its virtual wall.
+//! within each of 32 rank bins of `ξ'` (their dependence). A rebound draws `(ξ', ζ')` for its
+//! incident direction from one of the four surrounding grid cells, picked by its bilinear
+//! weight (a mixture: unshadowed, the law of the elements met is linear in `cot α⁻`, as a
+//! mixture is, and a mixture keeps a narrow peak of the law that a blend of quantile
+//! functions smears), and applies the collision law in that element's frame, as the
+//! paper's model does with its virtual wall.
 //! With the elastic law the rebound then has the reference's law up to the table's
 //! resolution and sampling noise, at any incident direction, by construction; with another
 //! law it is the one-element approximation every stochastic model makes.

@@ -76,25 +76,62 @@ impl MeasuredWallTable {
         }
     }
 
-    /// One effective element `(ξ', ζ')` (rad, the wall's frame) for `inc`: the four cells'
-    /// quantile functions blended at the same two probabilities (displacement
-    /// interpolation), the second read in the rank bin of the first. The wall's frame, not
-    /// the incident one, because a law that only turns with `β⁻` (the elements of a wall seen
-    /// from steep incidence) is then the same in every column, and blending columns is exact.
+    /// One effective element `(ξ', ζ')` (rad, the wall's frame) for `inc`: one of the four
+    /// cells, drawn by its weight (a mixture), read at two probabilities, the second in the
+    /// rank bin of the first.
+    ///
+    /// A mixture, not a blend of the cells' quantile functions at the same probabilities:
+    /// unshadowed, the law of the elements a particle meets has a density linear in
+    /// `cot α⁻` (each element weighted by `1 + cot|α⁻| tan γ`, Radenkovic & Simonin 2021,
+    /// Eq. 29), which the mixture of two rows with weights linear in `cot α⁻` is, exactly
+    /// where the elements' mean slope vanishes (a levelled wall); and a narrow peak of the law (a wall's specular facets) sits at a different rank in each
+    /// cell, which a blend smears (docs/design-notes.md, "The measured-wall model"). The
+    /// wall's frame, not the incident one, because a law that only turns with `β⁻` (the
+    /// elements of a wall seen from steep incidence) is then the same in every column.
     #[inline]
     pub fn draw<R: Rng + ?Sized>(&self, inc: &MeasuredWallIncidence, rng: &mut R) -> (f64, f64) {
-        let (u1, u2): (f64, f64) = (rng.gen(), rng.gen());
-        let bin = rank_bin(u1);
+        let (u0, u1, u2): (f64, f64, f64) = (rng.gen(), rng.gen(), rng.gen());
+        let law = &self.cells[inc.cells[mixture_member(&inc.weights, u0)] as usize];
         let (t1, t2) = (knot_coordinate(u1), knot_coordinate(u2));
-        let (mut xi, mut zeta) = (0.0, 0.0);
-        for (&c, &w) in inc.cells.iter().zip(&inc.weights) {
-            if w == 0.0 {
-                continue;
-            }
-            let law = &self.cells[c as usize];
-            xi += w * at(&law.xi.knots, t1);
-            zeta += w * at(&law.zeta[bin].knots, t2);
+        (at(&law.xi.knots, t1), at(&law.zeta[rank_bin(u1)].knots, t2))
+    }
+}
+
+/// The member of a mixture of weights `w` (summing to 1) that the uniform `u` in `[0, 1)`
+/// picks: the first whose cumulative weight exceeds `u`, never one of weight 0.
+#[inline]
+fn mixture_member(w: &[f64; 4], u: f64) -> usize {
+    let mut cumulative = 0.0;
+    for (i, &wi) in w.iter().enumerate() {
+        cumulative += wi;
+        if u < cumulative && wi > 0.0 {
+            return i;
         }
-        (xi, zeta)
+    }
+    // Rounding left `u` above the weights' sum: the last member of positive weight.
+    w.iter().rposition(|&wi| wi > 0.0).unwrap_or(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_mixture_picks_members_by_their_weights_and_never_a_weightless_one() {
+        let w = [0.0, 0.25, 0.0, 0.75];
+        assert_eq!(mixture_member(&w, 0.0), 1);
+        assert_eq!(mixture_member(&w, 0.2499), 1);
+        assert_eq!(mixture_member(&w, 0.25), 3);
+        assert_eq!(mixture_member(&w, 0.999_999), 3);
+        assert_eq!(mixture_member(&[1.0, 0.0, 0.0, 0.0], 0.999_999_999), 0);
+        // Weights whose sum rounds below 1.
+        let w = [0.1, 0.2, 0.3, 0.399_999_999_999];
+        assert_eq!(mixture_member(&w, 0.999_999_999_999_9), 3);
+        let mut counts = [0usize; 4];
+        let w = [0.1, 0.2, 0.3, 0.4];
+        for i in 0..10_000 {
+            counts[mixture_member(&w, (i as f64 + 0.5) / 10_000.0)] += 1;
+        }
+        assert_eq!(counts, [1000, 2000, 3000, 4000]);
     }
 }

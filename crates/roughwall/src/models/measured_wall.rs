@@ -87,7 +87,8 @@ pub fn rebound_off_table<R: Rng + ?Sized>(
         let un = u.dot(&seen.normal);
         // Every element of the table mirrors its history's particle off the wall; a drawn
         // one that does not (its two angles come from different histories of a rank bin,
-        // or from blended cells) is no element of the wall: drawn again.
+        // or were measured at a neighbouring grid direction) is no element of the wall here:
+        // drawn again.
         if un >= 0.0 || u.y - 2.0 * un * seen.normal.y <= 0.0 {
             continue;
         }

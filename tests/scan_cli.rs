@@ -909,15 +909,22 @@ fn the_card_names_the_walls_own_model_and_stochastic_takes_it() {
 /// with the default histories a cell; the in-place reference on the scan itself; the model
 /// from `stochastic --wall-card`, at incident directions between the table's grid points
 /// (configs/scans/own-model.toml); each with 2 × 10⁵ particles. Goal: KS of α⁺ ≤ 0.01 and
-/// |bias of mean α⁺| ≤ 0.05°. The paper's model, given the same card, misses the first scan
-/// by more than ten times the goal's KS: the comparison tells them apart.
+/// |bias of mean α⁺| ≤ 0.05°. The paper's model, given the same card, misses metropro-1 by
+/// more than ten times the goal's KS, and plu-1 by more than four: the comparison tells them
+/// apart. plu-1 (slope kurtosis 570 along the lay) is the wall a blend of the cells' quantile
+/// functions missed (KS 0.0165 at the point particle) and their mixture meets (0.0084).
 #[test]
 fn on_small_real_scans_the_walls_own_model_meets_its_goal() {
     let dir = tempfile::tempdir().unwrap();
     let directions = read_shipped_case("scans/own-model.toml");
     assert!(directions.contains("[particles]\ncount = 200000\n"));
-    // (scan, the particle's diameter in µm; 0 the point particle)
-    for (scan, diameter) in [("metropro-1.dat", 0.0), ("opd-1.opd", 50.0)] {
+    // (scan, the particle's diameter in µm, 0 the point particle; the KS by which the paper's
+    // model must miss, where it is run)
+    for (scan, diameter, paper_misses_by) in [
+        ("metropro-1.dat", 0.0, Some(0.1)),
+        ("opd-1.opd", 50.0, None),
+        ("plu-1.plu", 0.0, Some(0.04)),
+    ] {
         let tag = format!("{scan}-{diameter}");
         let out = dir.path().join(format!("card-{tag}"));
         let mut args = vec!["scan", "--scan"];
@@ -960,7 +967,7 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal() {
         ])
         .ok();
         for model in ["measured-wall", "radenkovic-simonin-2021"] {
-            if model != "measured-wall" && diameter > 0.0 {
+            if model != "measured-wall" && paper_misses_by.is_none() {
                 continue;
             }
             let case = write_case(
@@ -997,7 +1004,8 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal() {
             if model == "measured-wall" {
                 assert!(ks <= 0.01 && bias <= 0.05, "{tag}: KS {ks}, bias {bias}°");
             } else {
-                assert!(ks > 0.1, "{tag}: the paper's model: KS {ks}");
+                let floor = paper_misses_by.unwrap();
+                assert!(ks > floor, "{tag}: the paper's model: KS {ks}");
             }
         }
     }

@@ -1004,8 +1004,8 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal() {
             if model == "measured-wall" {
                 assert!(ks <= 0.01 && bias <= 0.05, "{tag}: KS {ks}, bias {bias}°");
             } else {
-                let floor = paper_misses_by.unwrap();
-                assert!(ks > floor, "{tag}: the paper's model: KS {ks}");
+                let least = paper_misses_by.unwrap();
+                assert!(ks > least, "{tag}: the paper's model: KS {ks}");
             }
         }
     }

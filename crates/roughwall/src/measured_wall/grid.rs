@@ -2,11 +2,12 @@
 //!
 //! Rows are the incident angle `|α⁻|`, 0.5° apart at grazing incidence, where the shadow
 //! effect changes the law fastest, and 2–5° apart above 24°, where a striated wall's law still
-//! bends between rows 6–16° apart (docs/design-notes.md); columns are `β⁻` from the lay over the whole circle, because a
-//! real wall need not be its own mirror image (`β⁻ ↔ −β⁻`) nor unchanged by a half turn
-//! (`β⁻ ↔ β⁻ + 180°`). Between grid points the law is interpolated
-//! ([`super::MeasuredWallTable::incidence`]); the spacings were chosen by measuring the
-//! interpolation error at grid midpoints (`tests/measured_wall.rs` and docs/design-notes.md).
+//! bends between rows 6–20° apart (docs/design-notes.md); columns are `β⁻` from the lay over
+//! the whole circle, because a real wall need not be its own mirror image (`β⁻ ↔ −β⁻`) nor
+//! unchanged by a half turn (`β⁻ ↔ β⁻ + 180°`). Between grid points the law is a mixture of
+//! the neighbours' ([`super::MeasuredWallTable::incidence`]); the spacings were chosen by
+//! measuring the interpolation error at grid midpoints (`tests/measured_wall.rs` and
+//! docs/design-notes.md).
 
 /// The rows: incident angles `|α⁻|` (degrees), increasing.
 pub const ALPHA_ROWS_DEG: [f64; 43] = [

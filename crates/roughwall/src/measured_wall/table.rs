@@ -84,10 +84,11 @@ impl MeasuredWallTable {
     /// unshadowed, the law of the elements a particle meets has a density linear in
     /// `cot α⁻` (each element weighted by `1 + cot|α⁻| tan γ`, Radenkovic & Simonin 2021,
     /// Eq. 29), which the mixture of two rows with weights linear in `cot α⁻` is, exactly
-    /// where the elements' mean slope vanishes (a levelled wall); and a narrow peak of the law (a wall's specular facets) sits at a different rank in each
-    /// cell, which a blend smears (docs/design-notes.md, "The measured-wall model"). The
-    /// wall's frame, not the incident one, because a law that only turns with `β⁻` (the
-    /// elements of a wall seen from steep incidence) is then the same in every column.
+    /// where the elements' mean slope vanishes (a levelled wall); and a narrow peak of the
+    /// law (a wall's specular facets) sits at a different rank in each cell, which a blend
+    /// smears (docs/design-notes.md, "The measured-wall model"). The wall's frame, not the
+    /// incident one, because a law that only turns with `β⁻` (the elements of a wall seen
+    /// from steep incidence) is then the same in every column.
     #[inline]
     pub fn draw<R: Rng + ?Sized>(&self, inc: &MeasuredWallIncidence, rng: &mut R) -> (f64, f64) {
         let (u0, u1, u2): (f64, f64, f64) = (rng.gen(), rng.gen(), rng.gen());

@@ -285,3 +285,42 @@ fn read_table_text(key: &str, path: &str, max_bytes: u64, kind: &str) -> Result<
         .map_err(|e| Error::Input(format!("{what}: cannot read it: {e}")))?;
     Ok((text, what))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::MAX_WALL_TABLE_BYTES;
+    use roughwall::measured_wall::{
+        CellLaw, MeasuredWallTable, QuantileFunction, CELLS, RANK_BINS, XI_KNOTS, ZETA_KNOTS,
+    };
+
+    /// The longest table the fixed grid can give (every knot −π/2, the widest number, and
+    /// counts of 20 digits) is read: a finer grid that outgrew the cap would fail here, not
+    /// in a user's run.
+    #[test]
+    fn the_largest_table_of_the_grid_fits_the_reader_cap() {
+        let widest = |k| QuantileFunction {
+            knots: vec![-std::f64::consts::FRAC_PI_2; k],
+        };
+        let cell = CellLaw {
+            histories: u64::MAX,
+            left_patch: 0,
+            lost_other: 0,
+            xi: widest(XI_KNOTS),
+            zeta: vec![widest(ZETA_KNOTS); RANK_BINS],
+        };
+        let table = MeasuredWallTable {
+            source: "x".repeat(255),
+            first_row: 0,
+            deviations: roughwall::Deviations {
+                delta_xi: 0.1,
+                delta_zeta: 0.1,
+            },
+            seed: u64::MAX,
+            cells: vec![cell; CELLS],
+        };
+        let bytes = table.to_text().len() as u64;
+        assert!(bytes <= MAX_WALL_TABLE_BYTES, "{bytes} bytes");
+        // The text is the worst case it claims to be (measured tables are 7–10 MB).
+        assert!(bytes > 11 << 20, "{bytes} bytes");
+    }
+}

@@ -34,8 +34,9 @@ pub const ZETA_KNOTS: usize = 33;
 
 /// Histories shot per cell by default (the Fibonacci number `F₂₂`, whose lattice is the
 /// Fibonacci lattice): the table's sampling noise at a grid point is then a KS distance of
-/// about `0.87/√n` ≈ 0.0065 and an error of mean `α⁺` of `σ(α⁺)/√n` (0.02–0.1° on the
-/// shipped scans), less between grid points, where four cells are mixed. The build then takes
+/// about `0.87/√n` ≈ 0.0065 and an error of mean `α⁺` of `σ(α⁺)/√n`: 0.001–0.12° on the
+/// shipped scans, whose `σ(α⁺)` is 0.14–15° at the study's directions
+/// (`results/measured-wall-model/`), less between grid points, where four cells are mixed. The build then takes
 /// 9–15 s on a 4096² scan on 2 cores, depending on the day (docs/performance.md, row 25).
 pub const HISTORIES_PER_CELL: u64 = 17_711;
 

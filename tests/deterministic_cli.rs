@@ -641,17 +641,17 @@ fn a_measured_scan_is_a_wall_to_bounce_on() {
     let fraction = scan["block_area_fraction"].as_float().unwrap();
     assert!(fraction > 0.3 && fraction < 1.0, "{scan:?}");
     // A file no reader takes: refused, naming it, and nothing written.
-    let o = dir.join("ORIGIN.md");
+    let o = dir.join("README.md");
     rebound(&[
         "deterministic",
         "--case",
         case.to_str().unwrap(),
         "--surface",
-        scans.join("ORIGIN.md").to_str().unwrap(),
+        scans.join("README.md").to_str().unwrap(),
         "--out",
         o.to_str().unwrap(),
     ])
-    .refused("ORIGIN.md");
+    .refused("README.md");
     assert!(!o.exists());
     refuses(
         &[(

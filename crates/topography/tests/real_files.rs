@@ -1,5 +1,5 @@
 //! The real instrument files of the workspace's `tests/data/scans/` (SurfaceTopography's
-//! examples; `ORIGIN.md` there says where each comes from): shape, pixel size, missing points
+//! examples; `README.md` there says where each comes from): shape, pixel size, missing points
 //! and a few heights per file. The expected values are SurfaceTopography 1.27.1's reading of
 //! the same files (its dump by `tests/real_systems/surfacetopography_dump.py`), which the
 //! workspace's `real_systems` test compares point by point; here they are fixed numbers, so

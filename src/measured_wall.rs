@@ -14,7 +14,7 @@ use crate::progress::Progress;
 use crate::writers::measured_wall::{MeasuredWallEntry, VersusPaper};
 use crate::writers::measured_wall::{VERSUS_DIRECTIONS, VERSUS_REBOUNDS};
 use roughwall::measured_wall::MeasuredWallTable;
-use roughwall::measured_wall::{scan_table, BuildOptions, CELLS};
+use roughwall::measured_wall::{scan_table, BuildOptions, BUILD_CELLS};
 use roughwall::scan::Characterisation;
 use roughwall::{Result, Triangulation};
 use std::path::Path;
@@ -48,7 +48,8 @@ pub fn build_tables(
     let particles: Vec<f64> = std::iter::once(0.0)
         .chain(diameters_m.iter().copied())
         .collect();
-    let per_table = CELLS as u64 * histories_per_cell;
+    // At most: the base rows and every row a build may add (it reports the rest when done).
+    let per_table = BUILD_CELLS as u64 * histories_per_cell;
     let progress = Progress::particles(per_table * particles.len() as u64, "measured-wall tables");
     let mut entries = Vec::with_capacity(particles.len());
     for &d in &particles {
@@ -92,6 +93,7 @@ pub fn build_tables(
                     note,
                     seconds: t0.elapsed().as_secs_f64(),
                     histories_per_cell,
+                    refined_rows_deg: table.refined_rows_deg(),
                     versus_paper: Some(versus_paper(&table, seed)?),
                 }
             }
@@ -105,6 +107,7 @@ pub fn build_tables(
                     note: format!("no measured-wall table: {e}"),
                     seconds: t0.elapsed().as_secs_f64(),
                     histories_per_cell,
+                    refined_rows_deg: Vec::new(),
                     versus_paper: None,
                 }
             }

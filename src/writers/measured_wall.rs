@@ -21,6 +21,8 @@ pub struct MeasuredWallEntry {
     pub seconds: f64,
     /// Histories per grid cell.
     pub histories_per_cell: u64,
+    /// The rows (`|α⁻|`, degrees) the build added to the base grid where the wall's law bends.
+    pub refined_rows_deg: Vec<f64>,
     /// What the Gaussian assumption costs on this wall: the paper's model against the table.
     pub versus_paper: Option<VersusPaper>,
 }
@@ -96,6 +98,10 @@ pub fn manifest_entries(entries: &[MeasuredWallEntry]) -> toml::Value {
                 t.insert("file".into(), f.clone().into());
                 t.insert("lowest_alpha_deg".into(), e.lowest_alpha_deg.into());
                 t.insert("max_left_share".into(), e.max_left_share.into());
+                t.insert(
+                    "refined_rows_deg".into(),
+                    toml::Value::Array(e.refined_rows_deg.iter().map(|&a| a.into()).collect()),
+                );
             }
             if !e.note.is_empty() {
                 t.insert("note".into(), e.note.clone().into());

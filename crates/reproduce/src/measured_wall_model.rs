@@ -73,22 +73,38 @@ fn left_share(dir: &Path) -> Option<f64> {
         .reduce(f64::max)
 }
 
-/// The card run's `[[measured_wall]]` entry of `diameter_um`: lowest served |α⁻|, its note.
-fn table_entry(card: &Path, diameter_um: f64) -> Option<(Option<f64>, String, Option<f64>)> {
+/// A card run's `[[measured_wall]]` entry: what limits one table.
+struct TableEntry {
+    /// The lowest `|α⁻|` served as measured.
+    lowest: Option<f64>,
+    note: String,
+    build_s: Option<f64>,
+    /// The rows the build added where the wall's law bends.
+    refined_rows: Vec<f64>,
+}
+
+/// The card run's `[[measured_wall]]` entry of `diameter_um`.
+fn table_entry(card: &Path, diameter_um: f64) -> Option<TableEntry> {
     let t = run_toml(card)?;
     let e = t.get("measured_wall")?.as_array()?.iter().find(|e| {
         e.get("diameter_um")
             .and_then(|d| d.as_float())
             .is_some_and(|d| (d - diameter_um).abs() <= 1e-6 * diameter_um.max(1.0))
     })?;
-    Some((
-        e.get("lowest_alpha_deg").and_then(|v| v.as_float()),
-        e.get("note")
+    Some(TableEntry {
+        lowest: e.get("lowest_alpha_deg").and_then(|v| v.as_float()),
+        note: e
+            .get("note")
             .and_then(|v| v.as_str())
             .unwrap_or("")
             .to_string(),
-        e.get("build_s").and_then(|v| v.as_float()),
-    ))
+        build_s: e.get("build_s").and_then(|v| v.as_float()),
+        refined_rows: e
+            .get("refined_rows_deg")
+            .and_then(|v| v.as_array())
+            .map(|a| a.iter().filter_map(|x| x.as_float()).collect())
+            .unwrap_or_default(),
+    })
 }
 
 pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
@@ -196,13 +212,24 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
                     links.join(", ")
                 );
             }
-            if let Some((lowest, note, build)) = table_entry(&card, d_um) {
+            if let Some(e) = table_entry(&card, d_um) {
+                let rows = match e.refined_rows.is_empty() {
+                    true => String::new(),
+                    false => format!(
+                        ", with rows added at {}°",
+                        e.refined_rows
+                            .iter()
+                            .map(|&a| fmt_num(a))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                };
                 let _ = writeln!(
                     notes,
-                    "- {scan}, {particle}: table {}{}{}; the reference lost up to {} of its histories off the scan.",
-                    lowest.map_or("not built".to_string(), |a| format!("measured from |α⁻| = {}°", fmt_num(a))),
-                    build.map_or(String::new(), |b| format!(", built in {} s", fmt_num(b))),
-                    if note.is_empty() { String::new() } else { format!(" ({note})") },
+                    "- {scan}, {particle}: table {}{rows}{}{}; the reference lost up to {} of its histories off the scan.",
+                    e.lowest.map_or("not built".to_string(), |a| format!("measured from |α⁻| = {}°", fmt_num(a))),
+                    e.build_s.map_or(String::new(), |b| format!(", built in {} s", fmt_num(b))),
+                    if e.note.is_empty() { String::new() } else { format!(" ({})", e.note) },
                     left.map_or("–".to_string(), |l| format!("{:.2} %", 100.0 * l)),
                 );
             }
@@ -221,7 +248,9 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
          centre surface) at incident directions between the table's grid points \
          (`configs/scans/own-model.toml`: α⁻ = −6.25°, −13.5°, −31° × β⁻ = 7.5°, 97.5°, −82.5° \
          from the lay; sample-land, too rough for grazing incidence on its 784 × 537 µm, at \
-         −39°, −48°, −60°, `configs/scans/own-model-sample-land.toml`), and again with another \
+         −31.5°, −38.5°, −39°, −48°, −60°, between its tables' rows except −39°, a row the \
+         point particle's table added, \
+         `configs/scans/own-model-sample-land.toml`), and again with another \
          seed: what two independent references differ by is the noise floor; `deterministic` \
          on 16 Gaussian walls with the particle's card deviations stands beside the models. \
          The goal \

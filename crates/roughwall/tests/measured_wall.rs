@@ -9,6 +9,7 @@ use rand::{Rng, SeedableRng};
 use roughwall::angles::incident_angles;
 use roughwall::deterministic::{history, Fate, ModelSetup};
 use roughwall::measured_wall::{build_table, BuildOptions, MeasuredWallTable, MAGIC};
+use roughwall::measured_wall::{ALPHA_ROWS_DEG, BETA_COLUMNS};
 use roughwall::models::{rebound_with, AnyModel, MeasuredWall};
 use roughwall::stochastic::Contact;
 use roughwall::surface::{generate, measured_deviations, SurfaceSpec};
@@ -218,7 +219,65 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     );
     // Truncated, another version, another grid, an edited `first_row`, not a table at all.
     assert!(err(&lines[..header + 3].join("\n")).contains("truncated after 2 of"));
-    assert!(err(&text.replacen("table v2", "table v1", 1)).contains("another format"));
+    assert!(err(&text.replacen("table v3", "table v1", 1)).contains("another format"));
+    // The rows: the base rows must all be there, increasing, and at most 12 more.
+    let rows_line = lines
+        .iter()
+        .find(|l| l.starts_with("alpha_rows_deg = "))
+        .unwrap();
+    for edit in [
+        rows_line.replacen(",90", "", 1),
+        rows_line.replacen("1,1.5", "1.5,1", 1),
+        // 13 rows of its own, increasing, between 24 and 26°: one too many.
+        rows_line.replacen(
+            ",24,",
+            &format!(
+                ",24,{},",
+                (1..=13)
+                    .map(|i| format!("24.{i:02}"))
+                    .collect::<Vec<_>>()
+                    .join(",")
+            ),
+            1,
+        ),
+        rows_line.replacen("= 1,", "= 0.5,1,", 1),
+    ] {
+        let e = err(&text.replacen(rows_line, &edit, 1));
+        assert!(e.contains("allowed the base rows"), "{e}");
+    }
+    // A v2 table (the base rows alone, as v2 wrote them) is read as it was written; a v2
+    // table with rows of its own is not one.
+    let base_only = MeasuredWallTable {
+        alpha_rows_deg: ALPHA_ROWS_DEG.to_vec(),
+        cells: table
+            .cells
+            .chunks(BETA_COLUMNS)
+            .zip(&table.alpha_rows_deg)
+            .filter(|(_, a)| ALPHA_ROWS_DEG.contains(a))
+            .flat_map(|(c, _)| c.to_vec())
+            .collect(),
+        ..table.clone()
+    };
+    let v2 = base_only.to_text().replacen("table v3", "table v2", 1);
+    assert!(MeasuredWallTable::parse(&v2, "t").unwrap() == base_only);
+    // The same with a row of its own at 39° (a copy of the 38° row's cells): v3 reads it
+    // back, v2 does not.
+    let r38 = ALPHA_ROWS_DEG.iter().position(|&a| a == 38.0).unwrap();
+    let mut cells = base_only.cells.clone();
+    let copy = cells[r38 * BETA_COLUMNS..(r38 + 1) * BETA_COLUMNS].to_vec();
+    cells.splice((r38 + 1) * BETA_COLUMNS..(r38 + 1) * BETA_COLUMNS, copy);
+    let mut rows = ALPHA_ROWS_DEG.to_vec();
+    rows.insert(r38 + 1, 39.0);
+    let refined = MeasuredWallTable {
+        alpha_rows_deg: rows,
+        cells,
+        ..base_only.clone()
+    };
+    assert_eq!(refined.refined_rows_deg(), vec![39.0]);
+    let refined_text = refined.to_text();
+    assert!(MeasuredWallTable::parse(&refined_text, "t").unwrap() == refined);
+    let v2_refined = refined_text.replacen("table v3", "table v2", 1);
+    assert!(err(&v2_refined).contains("a v2 table has the base rows"));
     let grid = text.replacen("beta_columns = 24", "beta_columns = 12", 1);
     assert!(err(&grid).contains("this version's grid"));
     let first = text.replacen("first_row = 0", "first_row = 3", 1);

@@ -2,11 +2,12 @@
 //! the wall, their effective elements' law kept.
 
 use super::effective_normal::effective_normal;
-use super::grid::{beta_column_deg, ALPHA_ROWS_DEG, BETA_COLUMNS, CELLS, RANK_BINS};
+use super::grid::{beta_column_deg, ALPHA_ROWS_DEG, BETA_COLUMNS, RANK_BINS};
 use super::grid::{HISTORIES_PER_CELL, SERVED_LEFT_BOUND};
 use super::quantiles::CellLaw;
+use super::refine::{merged_rows, refined_rows, Turn, MAX_REFINED_ROWS};
 use super::table::MeasuredWallTable;
-use crate::angles::xi_zeta_of_normal;
+use crate::angles::{incident_angles, xi_zeta_of_normal};
 use crate::collision::CollisionLaw;
 use crate::deterministic::{history_entered, Fate, LostReason, ModelSetup, Tracker};
 use crate::error::{Error, Result};
@@ -35,6 +36,10 @@ impl Default for BuildOptions {
     }
 }
 
+/// The cells a build shoots at most (the base grid and every row it may add): what its
+/// progress calls sum to, in cells of `histories_per_cell` histories.
+pub const BUILD_CELLS: usize = (ALPHA_ROWS_DEG.len() + MAX_REFINED_ROWS) * BETA_COLUMNS;
+
 /// The golden ratio, whose continued fraction makes the best two-dimensional lattices.
 const GOLDEN: f64 = 1.618_033_988_749_895;
 
@@ -48,9 +53,12 @@ const MIN_PAIRS: u64 = 8 * RANK_BINS as u64;
 /// The measured-wall table of the wall `tracker` walks (the in-place reference on a scan,
 /// [`crate::Tracker::in_place`]; or, for tests, a periodic wall), for a particle centre
 /// bouncing ideally elastically: every grid cell's histories, each turned into its effective
-/// element ([`super::effective_normal`]) and kept as its `(ξ', ζ')`. `deviations` are the wall's own (for the table's
-/// record), `source` says what it is. `progress(histories)` is called with each finished
-/// cell's histories (from worker threads). The table is the same for any thread count.
+/// element ([`super::effective_normal`]) and kept as its `(ξ', ζ')`. First the base rows;
+/// then the rows [`super::refine`] adds where the law the base rows measured bends.
+/// `deviations` are the wall's own (for the table's record), `source` says what it is.
+/// `progress(histories)` is called with each finished cell's histories (from worker
+/// threads), and at the end with those of the rows it did not add, so that its calls sum to
+/// [`BUILD_CELLS`] cells' worth. The table is the same for any thread count.
 pub fn build_table(
     tracker: &Tracker<'_>,
     deviations: Deviations,
@@ -78,30 +86,40 @@ pub fn build_table(
         erosion: None,
         spin: Default::default(),
     };
-    let cells: Vec<Result<CellLaw>> = (0..CELLS)
-        .into_par_iter()
-        .map(|k| {
-            let (row, column) = (k / BETA_COLUMNS, k % BETA_COLUMNS);
-            let cond =
-                IncidentCondition::from_degrees(-ALPHA_ROWS_DEG[row], beta_column_deg(column));
-            let law = cell_law(tracker, &setup, &cond, k as u64, opts);
-            progress(opts.histories_per_cell);
-            law
-        })
+    // Cell `(row, column)` of `rows`, with its stream's key.
+    let row_cells = |rows: &[(f64, u64)]| -> Result<Vec<MeasuredCell>> {
+        let cells: Vec<Result<MeasuredCell>> = (0..rows.len() * BETA_COLUMNS)
+            .into_par_iter()
+            .map(|k| {
+                let ((alpha, key), column) = (rows[k / BETA_COLUMNS], k % BETA_COLUMNS);
+                let cond = IncidentCondition::from_degrees(-alpha, beta_column_deg(column));
+                let law = cell_law(tracker, &setup, &cond, key + column as u64, opts);
+                progress(opts.histories_per_cell);
+                law
+            })
+            .collect();
+        cells.into_iter().collect()
+    };
+    // The base rows' streams are keyed by cell index, as they always were.
+    let base: Vec<(f64, u64)> = ALPHA_ROWS_DEG
+        .iter()
+        .enumerate()
+        .map(|(r, &a)| (a, (r * BETA_COLUMNS) as u64))
         .collect();
-    let cells = cells.into_iter().collect::<Result<Vec<_>>>()?;
-    let served = |row: usize| {
-        (0..BETA_COLUMNS).all(|c| cells[row * BETA_COLUMNS + c].left_share() <= SERVED_LEFT_BOUND)
+    let measured = row_cells(&base)?;
+    let served = |cells: &[MeasuredCell], row: usize| {
+        (0..BETA_COLUMNS)
+            .all(|c| cells[row * BETA_COLUMNS + c].law.left_share() <= SERVED_LEFT_BOUND)
     };
     let rows = ALPHA_ROWS_DEG.len();
     let mut first_row = rows;
-    while first_row > 0 && served(first_row - 1) {
+    while first_row > 0 && served(&measured, first_row - 1) {
         first_row -= 1;
     }
     if first_row == rows {
-        let worst = cells[(rows - 1) * BETA_COLUMNS..]
+        let worst = measured[(rows - 1) * BETA_COLUMNS..]
             .iter()
-            .map(CellLaw::left_share)
+            .map(|c| c.law.left_share())
             .fold(0.0, f64::max);
         return Err(Error::Input(format!(
             "{source}: too small for the measured-wall model: even at normal incidence {:.1} % of the histories leave it (at most {} allowed)",
@@ -109,13 +127,58 @@ pub fn build_table(
             SERVED_LEFT_BOUND
         )));
     }
+    let turn: Vec<Turn> = measured.iter().map(|c| c.turn).collect();
+    let added: Vec<(f64, u64)> = refined_rows(&turn, first_row)
+        .into_iter()
+        .map(|a| (a, refined_key(a)))
+        .collect();
+    let extra = row_cells(&added)?;
+    progress(
+        (MAX_REFINED_ROWS - added.len()) as u64 * BETA_COLUMNS as u64 * opts.histories_per_cell,
+    );
+    // A row between two served ones is served in practice; one that is not stays out, so
+    // that every row from `first_row` up is served.
+    let kept: Vec<f64> = added
+        .iter()
+        .enumerate()
+        .filter(|&(i, _)| served(&extra, i))
+        .map(|(_, &(a, _))| a)
+        .collect();
+    let alpha_rows_deg = merged_rows(&kept);
+    let mut by_row: Vec<(f64, Vec<MeasuredCell>)> = measured
+        .chunks(BETA_COLUMNS)
+        .zip(&ALPHA_ROWS_DEG)
+        .chain(extra.chunks(BETA_COLUMNS).zip(added.iter().map(|(a, _)| a)))
+        .filter(|(_, a)| alpha_rows_deg.contains(a))
+        .map(|(c, &a)| (a, c.to_vec()))
+        .collect();
+    by_row.sort_by(|x, y| x.0.total_cmp(&y.0));
     Ok(MeasuredWallTable {
         source: source.to_string(),
+        alpha_rows_deg,
         first_row,
         deviations,
         seed: opts.seed,
-        cells,
+        cells: by_row
+            .into_iter()
+            .flat_map(|(_, c)| c.into_iter().map(|m| m.law))
+            .collect(),
     })
+}
+
+/// The stream key of the first cell of a row the build added at `alpha_deg` (its cells add
+/// their column): far above the base cells' indices, and one per hundredth of a degree.
+fn refined_key(alpha_deg: f64) -> u64 {
+    (1 << 40) + (alpha_deg * 100.0).round() as u64 * BETA_COLUMNS as u64
+}
+
+/// A cell's law and, for [`super::refine`], how far its elements turn a rebound: twice their
+/// mean inclination `γ` towards the incident direction (degrees; Radenkovic & Simonin 2021,
+/// Eq. 20), what mirroring on them adds to `α⁺` for small slopes (NaN without a law).
+#[derive(Clone)]
+struct MeasuredCell {
+    law: CellLaw,
+    turn: Turn,
 }
 
 /// The measured-wall table of a levelled scan whose lay is `lay`, for a particle centre
@@ -143,6 +206,21 @@ pub fn scan_table(
     )
 }
 
+/// How far the elements `pairs` `(ξ', ζ')` turn a rebound of incident direction `beta`: twice
+/// their mean inclination `γ = ξ' cos β − ζ' sin β` towards it (Radenkovic & Simonin 2021,
+/// Eq. 20; [`crate::angles::gamma_from_normal`]), with its standard error, in degrees.
+fn turn_of(pairs: &[(f64, f64)], beta: f64) -> Turn {
+    let (s, c) = beta.sin_cos();
+    let m = pairs.len() as f64;
+    let gamma = |&(xi, zeta): &(f64, f64)| c * xi - s * zeta;
+    let mean = pairs.iter().map(gamma).sum::<f64>() / m;
+    let variance = pairs.iter().map(|p| (gamma(p) - mean).powi(2)).sum::<f64>() / (m - 1.0);
+    Turn {
+        deg: (2.0 * mean).to_degrees(),
+        se_deg: (2.0 * (variance / m).sqrt()).to_degrees(),
+    }
+}
+
 /// One cell's law: its histories in order (a cell is one task, so the thread count does not
 /// enter), the escaped ones' effective elements in the wall's frame `(ξ', ζ')`.
 ///
@@ -157,20 +235,25 @@ fn cell_law(
     cond: &IncidentCondition,
     k: u64,
     opts: &BuildOptions,
-) -> Result<CellLaw> {
+) -> Result<MeasuredCell> {
     let mut r = rng::stream(opts.seed, &[rng::domain::MEASURED_WALL, k]);
     let shift: (f64, f64) = (r.gen(), r.gen());
     let n = opts.histories_per_cell;
     let g = ((n as f64) / GOLDEN).round().max(1.0) as u64;
     let mut pairs = Vec::with_capacity(n as usize);
     let (mut left, mut lost) = (0u64, 0u64);
+    // The incident direction's β in the walk's axes (the same for every history of the cell).
+    let mut beta_walked = None;
     for i in 0..n {
         let a = (i as f64 / n as f64 + shift.0).fract();
         let b = (((i * g) % n) as f64 / n as f64 + shift.1).fract();
         let h = history_entered(tracker, setup, cond, (a, b), &mut r, |_| {});
         match h.fate {
             Fate::Escaped => match effective_normal(&h.incident, &h.velocity) {
-                Some(n) => pairs.push(xi_zeta_of_normal(&n)),
+                Some(n) => {
+                    pairs.push(xi_zeta_of_normal(&n));
+                    beta_walked.get_or_insert_with(|| incident_angles(&h.incident).1);
+                }
                 None => lost += 1,
             },
             Fate::Lost(LostReason::LeftPatch) => left += 1,
@@ -181,7 +264,13 @@ fn cell_law(
         // Too few histories stayed on the scan (a grazing row of a small scan): the cell
         // cannot be served, which its counts say; its law is the mean wall's.
         if left > 0 && (left as f64) / (n as f64) > SERVED_LEFT_BOUND {
-            return Ok(CellLaw::unserved(n, left, lost));
+            return Ok(MeasuredCell {
+                law: CellLaw::unserved(n, left, lost),
+                turn: Turn {
+                    deg: f64::NAN,
+                    se_deg: f64::NAN,
+                },
+            });
         }
         return Err(Error::Input(format!(
             "the measured-wall table's cell at α⁻ = {}°, β⁻ = {}°: only {} of {n} histories left the wall ({left} left the scan, {lost} lost otherwise)",
@@ -190,5 +279,32 @@ fn cell_law(
             pairs.len()
         )));
     }
-    Ok(CellLaw::of_pairs(pairs, n, left, lost))
+    let turn = turn_of(&pairs, beta_walked.unwrap_or(0.0));
+    Ok(MeasuredCell {
+        law: CellLaw::of_pairs(pairs, n, left, lost),
+        turn,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_turn_is_twice_the_elements_inclination_towards_the_incidence() {
+        // Elements tilted by ξ' = 0.01 rad: seen along x (β = 0) they turn a rebound by
+        // 0.02 rad; seen across (β = 90°) by nothing.
+        let pairs = vec![(0.01, 0.0); 100];
+        let t = turn_of(&pairs, 0.0);
+        assert!((t.deg - 0.02f64.to_degrees()).abs() < 1e-12 && t.se_deg.abs() < 1e-12);
+        assert!(turn_of(&pairs, std::f64::consts::FRAC_PI_2).deg.abs() < 1e-12);
+        // Spread ±0.01 rad: mean 0, standard error 2 · 0.01/√(n−1)… of the mean.
+        let spread: Vec<(f64, f64)> = (0..100)
+            .map(|i| (if i % 2 == 0 { 0.01 } else { -0.01 }, 0.0))
+            .collect();
+        let t = turn_of(&spread, 0.0);
+        let sd = (100.0 * 0.01f64.powi(2) / 99.0).sqrt();
+        assert!(t.deg.abs() < 1e-12);
+        assert!((t.se_deg - (2.0 * sd / 10.0).to_degrees()).abs() < 1e-12);
+    }
 }

@@ -2,14 +2,17 @@
 //!
 //! Rows are the incident angle `|α⁻|`, 0.5° apart at grazing incidence, where the shadow
 //! effect changes the law fastest, and 2–5° apart above 24°, where a striated wall's law still
-//! bends between rows 6–20° apart (docs/design-notes.md); columns are `β⁻` from the lay over
+//! bends between rows 6–20° apart (docs/design-notes.md); a table adds rows of its own between
+//! them where its wall's law bends ([`super::refine`]); columns are `β⁻` from the lay over
 //! the whole circle, because a real wall need not be its own mirror image (`β⁻ ↔ −β⁻`) nor
 //! unchanged by a half turn (`β⁻ ↔ β⁻ + 180°`). Between grid points the law is a mixture of
 //! the neighbours' ([`super::MeasuredWallTable::incidence`]); the spacings were chosen by
 //! measuring the interpolation error at grid midpoints (`tests/measured_wall.rs` and
 //! docs/design-notes.md).
 
-/// The rows: incident angles `|α⁻|` (degrees), increasing.
+/// The base rows every table has: incident angles `|α⁻|` (degrees), increasing. A table adds
+/// up to [`super::refine::MAX_REFINED_ROWS`] rows of its own between them, where its wall's
+/// law bends ([`super::refine`]).
 pub const ALPHA_ROWS_DEG: [f64; 43] = [
     1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0, 5.5, 6.0, 6.5, 7.0, 7.5, 8.0, 9.0, 10.0, 11.5,
     13.0, 15.0, 17.5, 20.5, 24.0, 26.0, 28.0, 30.0, 32.0, 34.0, 36.0, 38.0, 40.0, 43.0, 46.0, 50.0,
@@ -26,7 +29,7 @@ pub const XI_KNOTS: usize = 129;
 /// bias of up to 0.07° in mean `α⁺` at grazing incidence oblique to the lay, 16 halve it; a
 /// narrow specular peak of the law (a sphere on a striated metal wall) needs more: its `ξ'`
 /// paired with `ζ'` of other histories spreads it (docs/design-notes.md). 32 bins of 33
-/// knots keep a table of the fixed grid under 12 MiB of text.
+/// knots keep a table with every row a build may add under 16 MiB of text.
 pub const RANK_BINS: usize = 32;
 
 /// Knots of each rank bin's quantile function of `ζ'`.
@@ -48,7 +51,7 @@ pub const HISTORIES_PER_CELL: u64 = 17_711;
 /// card states the largest share served.
 pub const SERVED_LEFT_BOUND: f64 = 1e-2;
 
-/// Cells of the grid.
+/// Cells of the base grid (a table with refined rows has [`BETA_COLUMNS`] more per row).
 pub const CELLS: usize = ALPHA_ROWS_DEG.len() * BETA_COLUMNS;
 
 /// The `β⁻` (degrees) of column `j`.
@@ -62,11 +65,10 @@ pub fn cell(row: usize, column: usize) -> usize {
     row * BETA_COLUMNS + column
 }
 
-/// The row interval holding `|α⁻|` (degrees) and the weight of its upper row, with rows
-/// below `first_row` not served: angles below it take it alone.
+/// The interval of `rows` (a table's, increasing) holding `|α⁻|` (degrees) and the weight of
+/// its upper row, with rows below `first_row` not served: angles below it take it alone.
 #[inline]
-pub fn row_weights(abs_alpha_deg: f64, first_row: usize) -> (usize, usize, f64) {
-    let rows = &ALPHA_ROWS_DEG;
+pub fn row_weights(abs_alpha_deg: f64, rows: &[f64], first_row: usize) -> (usize, usize, f64) {
     let last = rows.len() - 1;
     if abs_alpha_deg.is_nan() || abs_alpha_deg <= rows[first_row] {
         return (first_row, first_row, 0.0);
@@ -97,7 +99,7 @@ pub const LINEAR_BELOW_DEG: f64 = 9.0;
 
 /// `cot α` of `α` in degrees (0 at 90°).
 #[inline]
-fn cot_deg(a: f64) -> f64 {
+pub(crate) fn cot_deg(a: f64) -> f64 {
     if a >= 90.0 {
         0.0
     } else {
@@ -127,19 +129,19 @@ mod tests {
 
     #[test]
     fn weights_hit_the_grid_and_interpolate_between() {
-        assert_eq!(row_weights(4.0, 0), (6, 7, 0.0));
-        let (i, k, w) = row_weights(4.25, 0);
+        assert_eq!(row_weights(4.0, &ALPHA_ROWS_DEG, 0), (6, 7, 0.0));
+        let (i, k, w) = row_weights(4.25, &ALPHA_ROWS_DEG, 0);
         assert_eq!((i, k), (6, 7));
         assert!((w - 0.5).abs() < 1e-12);
         // Above 9° the weights are linear in cot α.
-        let (i, k, w) = row_weights(48.0, 0);
+        let (i, k, w) = row_weights(48.0, &ALPHA_ROWS_DEG, 0);
         assert_eq!((i, k), (32, 33));
         assert_eq!((ALPHA_ROWS_DEG[i], ALPHA_ROWS_DEG[k]), (46.0, 50.0));
         let cot = |a: f64| 1.0 / a.to_radians().tan();
         assert!((w - (cot(48.0) - cot(46.0)) / (cot(50.0) - cot(46.0))).abs() < 1e-12);
-        assert_eq!(row_weights(0.3, 0), (0, 0, 0.0));
-        assert_eq!(row_weights(2.5, 4), (4, 4, 0.0));
-        assert_eq!(row_weights(90.0, 0), (42, 42, 0.0));
+        assert_eq!(row_weights(0.3, &ALPHA_ROWS_DEG, 0), (0, 0, 0.0));
+        assert_eq!(row_weights(2.5, &ALPHA_ROWS_DEG, 4), (4, 4, 0.0));
+        assert_eq!(row_weights(90.0, &ALPHA_ROWS_DEG, 0), (42, 42, 0.0));
         assert_eq!(column_weights(-180.0), (0, 1, 0.0));
         assert_eq!(column_weights(180.0), (0, 1, 0.0));
         let (j, k, w) = column_weights(172.5);

@@ -10,8 +10,9 @@
 //!
 //! So the model is the law of that element given the incident direction, measured on the
 //! deterministic reference on the scan itself (`deterministic::in_place_wall`, for a point
-//! particle or a sphere's centre surface) over a fixed grid of incident directions
-//! ([`grid`]), kept as quantile functions ([`quantiles`]) of its normal-angle fluctuations
+//! particle or a sphere's centre surface) over a grid of incident directions ([`grid`], with
+//! rows of the wall's own where its law bends, [`refine`]), kept as quantile functions
+//! ([`quantiles`]) of its normal-angle fluctuations
 //! `(ξ', ζ')` in the wall's frame (Eq. 4): the marginal law of `ξ'`, and the law of `ζ'`
 //! within each of 32 rank bins of `ξ'` (their dependence). A rebound draws `(ξ', ζ')` for its
 //! incident direction from one of the four surrounding grid cells, picked by its bilinear
@@ -24,18 +25,19 @@
 //! law it is the one-element approximation every stochastic model makes.
 //!
 //! The files follow the model's life: `grid` (the incident directions and the resolution,
-//! with how they were chosen), `effective_normal`, `quantiles`, `build` (the table from a
-//! deterministic reference), `table` (the law a rebound reads) and `table_file` (the text a
+//! with how they were chosen), `effective_normal`, `quantiles`, `refine` (the rows a wall
+//! adds), `build` (the table from a deterministic reference), `table` (the law a rebound reads) and `table_file` (the text a
 //! card points to and the C library and Python take).
 
 pub(crate) mod build;
 pub(crate) mod effective_normal;
 pub(crate) mod grid;
 pub(crate) mod quantiles;
+pub(crate) mod refine;
 pub(crate) mod table;
 pub(crate) mod table_file;
 
-pub use build::{build_table, scan_table, BuildOptions};
+pub use build::{build_table, scan_table, BuildOptions, BUILD_CELLS};
 pub use effective_normal::{effective_gammas, effective_normal};
 pub use grid::CELLS;
 pub use grid::{
@@ -43,6 +45,7 @@ pub use grid::{
     SERVED_LEFT_BOUND, XI_KNOTS, ZETA_KNOTS,
 };
 pub use quantiles::{CellLaw, QuantileFunction};
+pub use refine::{MAX_REFINED_ROWS, REFINE_ABOVE_DEG};
 pub use table::{MeasuredWallIncidence, MeasuredWallTable};
 pub use table_file::{MAGIC, MAX_DISTINCT_TABLES};
 

@@ -1,7 +1,7 @@
 //! The law a measured-wall rebound reads: the table of cells, and the draw of an effective
 //! wall element for any incident direction between them.
 
-use super::grid::{cell, column_weights, row_weights, ALPHA_ROWS_DEG};
+use super::grid::{cell, column_weights, row_weights};
 use super::quantiles::{at, knot_coordinate, rank_bin, CellLaw};
 use crate::wall::Deviations;
 use rand::Rng;
@@ -13,6 +13,10 @@ use rand::Rng;
 pub struct MeasuredWallTable {
     /// What the table was built on (scan file, diameter, block), for messages and files.
     pub source: String,
+    /// Its rows `|α⁻|` (degrees, increasing): the base rows
+    /// ([`super::ALPHA_ROWS_DEG`]) and those its build added where the wall's law bends
+    /// ([`super::refine`]).
+    pub alpha_rows_deg: Vec<f64>,
     /// The lowest row served: every row from it up has at most
     /// [`super::SERVED_LEFT_BOUND`] of each cell's histories leaving the scan. Incident
     /// angles below it take its law.
@@ -42,7 +46,16 @@ impl MeasuredWallTable {
     /// The incident angles `|α⁻|` (degrees) the table serves as measured; below, the lowest
     /// served row's law is taken.
     pub fn lowest_served_alpha_deg(&self) -> f64 {
-        ALPHA_ROWS_DEG[self.first_row]
+        self.alpha_rows_deg[self.first_row]
+    }
+
+    /// The rows the build added to the base grid (degrees, increasing).
+    pub fn refined_rows_deg(&self) -> Vec<f64> {
+        self.alpha_rows_deg
+            .iter()
+            .filter(|a| !super::ALPHA_ROWS_DEG.contains(a))
+            .copied()
+            .collect()
     }
 
     /// The largest share of histories that left the scan in a served cell.
@@ -61,7 +74,7 @@ impl MeasuredWallTable {
     /// Where the incident direction `(α, β)` (rad, `α < 0` towards the wall) falls.
     pub fn incidence(&self, alpha: f64, beta: f64) -> MeasuredWallIncidence {
         let abs_alpha = alpha.abs().to_degrees().min(90.0);
-        let (r0, r1, wr) = row_weights(abs_alpha, self.first_row);
+        let (r0, r1, wr) = row_weights(abs_alpha, &self.alpha_rows_deg, self.first_row);
         let (c0, c1, wc) = column_weights(beta.to_degrees());
         let idx = |r, c| cell(r, c) as u32;
         MeasuredWallIncidence {

@@ -2,7 +2,9 @@
 //! wall card, a case names (`[stochastic] wall_table`) and the C library and Python take.
 //!
 //! Format: the magic line [`MAGIC`], then `key = value` lines (`source`, `seed`,
-//! `first_row`, the deviations and the grid, which must be this version's), then the header
+//! `first_row`, the deviations and the grid: the table's rows, which are the base rows and at
+//! most [`MAX_REFINED_ROWS`] more, and the columns, knots and bins, which must be this
+//! version's), then the header
 //! [`CELL_HEADER`] and one line per cell: its row and column, `α⁻` and `β⁻`, its counts,
 //! then the [`XI_KNOTS`] knots of `ξ'` and the [`RANK_BINS`] × [`ZETA_KNOTS`] knots of `ζ'`
 //! (as whole multiples of [`KNOT_UNIT_RAD`], 0.1 µrad). Knots are kept on that resolution,
@@ -11,15 +13,20 @@
 
 use super::grid::*;
 use super::quantiles::{CellLaw, QuantileFunction, KNOT_UNIT_RAD};
+use super::refine::MAX_REFINED_ROWS;
 use super::table::MeasuredWallTable;
 use crate::error::{Error, Result};
 use crate::wall::Deviations;
 use std::sync::Mutex;
 
-/// First line of a table file (names the format and its version: v2 has the 43 rows, the
-/// 32 rank bins and the mixture between cells; a v1 table, of 29 rows, 16 bins and blended
-/// cells, is refused with the advice to build it again).
-pub const MAGIC: &str = "# roughwall measured-wall table v2";
+/// First line of a table file (names the format and its version: v3 has the 43 base rows and
+/// the rows its build added, the 32 rank bins and the mixture between cells). A v2 table (the
+/// base rows alone) is read as it is; a v1 table, of 29 rows, 16 bins and blended cells, is
+/// refused with the advice to build it again.
+pub const MAGIC: &str = "# roughwall measured-wall table v3";
+
+/// The first line of a v2 table: v3 without added rows.
+const MAGIC_V2: &str = "# roughwall measured-wall table v2";
 
 const MAGIC_STEM: &str = "# roughwall measured-wall table v";
 
@@ -47,7 +54,7 @@ fn list(v: &[f64]) -> String {
 impl MeasuredWallTable {
     /// The table as text ([`MeasuredWallTable::parse`] reads it back, bit for bit).
     pub fn to_text(&self) -> String {
-        let mut s = String::with_capacity(CELLS * KNOTS * 12);
+        let mut s = String::with_capacity(self.cells.len() * KNOTS * 12);
         s.push_str(MAGIC);
         s.push('\n');
         // The source is one line: a newline in a file name would break the format.
@@ -60,7 +67,10 @@ impl MeasuredWallTable {
             "delta_zeta_rad = {}\n",
             self.deviations.delta_zeta
         ));
-        s.push_str(&format!("alpha_rows_deg = {}\n", list(&ALPHA_ROWS_DEG)));
+        s.push_str(&format!(
+            "alpha_rows_deg = {}\n",
+            list(&self.alpha_rows_deg)
+        ));
         s.push_str(&format!("beta_columns = {BETA_COLUMNS}\n"));
         s.push_str(&format!("xi_knots = {XI_KNOTS}\n"));
         s.push_str(&format!("rank_bins = {RANK_BINS}\n"));
@@ -71,7 +81,7 @@ impl MeasuredWallTable {
             let (row, column) = (k / BETA_COLUMNS, k % BETA_COLUMNS);
             s.push_str(&format!(
                 "{row},{column},{},{},{},{},{}",
-                ALPHA_ROWS_DEG[row],
+                self.alpha_rows_deg[row],
                 beta_column_deg(column),
                 c.histories,
                 c.left_patch,
@@ -93,8 +103,9 @@ impl MeasuredWallTable {
     pub fn parse(text: &str, what: &str) -> Result<MeasuredWallTable> {
         let bad = |line: usize, msg: &str| Error::Input(format!("{what}, line {line}: {msg}"));
         let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end()));
-        match lines.next() {
-            Some((_, l)) if l == MAGIC => {}
+        let v2 = match lines.next() {
+            Some((_, l)) if l == MAGIC => false,
+            Some((_, l)) if l == MAGIC_V2 => true,
             Some((_, l)) if l.starts_with(MAGIC_STEM) => {
                 return Err(Error::Input(format!(
                     "{what}: a measured-wall table of another format (`{l}`); this version reads `{MAGIC}`: build it again with `rebound scan --measured-wall`"
@@ -105,7 +116,7 @@ impl MeasuredWallTable {
                     "{what}: not a measured-wall table (the first line must be `{MAGIC}`; `rebound scan --measured-wall` writes one)"
                 )))
             }
-        }
+        };
         let mut value = |key: &str| -> Result<(usize, String)> {
             match lines.next() {
                 Some((n, l)) => match l.strip_prefix(key).and_then(|r| r.strip_prefix(" = ")) {
@@ -128,24 +139,25 @@ impl MeasuredWallTable {
         let seed: u64 = v
             .parse()
             .map_err(|_| bad(n, &format!("`seed` = `{v}` is not an integer")))?;
-        let (n, v) = value("first_row")?;
-        let first_row: usize = v
+        let (first_row_line, first_row_text) = value("first_row")?;
+        let xi = number(value("delta_xi_rad")?, "delta_xi_rad")?;
+        let zeta = number(value("delta_zeta_rad")?, "delta_zeta_rad")?;
+        let (n, v) = value("alpha_rows_deg")?;
+        let alpha_rows_deg = parse_rows(&v, v2).map_err(|m| bad(n, &m))?;
+        let first_row: usize = first_row_text
             .parse()
             .ok()
-            .filter(|&r: &usize| r < ALPHA_ROWS_DEG.len())
+            .filter(|&r: &usize| r < alpha_rows_deg.len())
             .ok_or_else(|| {
                 bad(
-                    n,
+                    first_row_line,
                     &format!(
-                        "`first_row` = `{v}`: allowed 0 to {}",
-                        ALPHA_ROWS_DEG.len() - 1
+                        "`first_row` = `{first_row_text}`: allowed 0 to {}",
+                        alpha_rows_deg.len() - 1
                     ),
                 )
             })?;
-        let xi = number(value("delta_xi_rad")?, "delta_xi_rad")?;
-        let zeta = number(value("delta_zeta_rad")?, "delta_zeta_rad")?;
         for (key, want) in [
-            ("alpha_rows_deg", list(&ALPHA_ROWS_DEG)),
             ("beta_columns", BETA_COLUMNS.to_string()),
             ("xi_knots", XI_KNOTS.to_string()),
             ("rank_bins", RANK_BINS.to_string()),
@@ -168,21 +180,23 @@ impl MeasuredWallTable {
                 )))
             }
         }
-        let mut cells = Vec::with_capacity(CELLS);
-        for k in 0..CELLS {
+        let rows = alpha_rows_deg.len();
+        let count = rows * BETA_COLUMNS;
+        let mut cells = Vec::with_capacity(count);
+        for k in 0..count {
             let (n, l) = lines.next().ok_or_else(|| {
                 Error::Input(format!(
-                    "{what}: truncated after {k} of {CELLS} cells (the grid is {} rows × {BETA_COLUMNS} columns)",
-                    ALPHA_ROWS_DEG.len()
+                    "{what}: truncated after {k} of {count} cells (the grid is {rows} rows × {BETA_COLUMNS} columns)"
                 ))
             })?;
-            cells.push(parse_cell(l, k).map_err(|m| bad(n, &m))?);
+            cells.push(parse_cell(l, k, &alpha_rows_deg).map_err(|m| bad(n, &m))?);
         }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
-            return Err(bad(n, &format!("more than the {CELLS} cells of the grid")));
+            return Err(bad(n, &format!("more than the {count} cells of the grid")));
         }
         let t = MeasuredWallTable {
             source,
+            alpha_rows_deg,
             first_row,
             deviations: Deviations {
                 delta_xi: xi,
@@ -195,9 +209,7 @@ impl MeasuredWallTable {
         let served = |row: usize| {
             (0..BETA_COLUMNS).all(|c| t.cells[cell(row, c)].left_share() <= SERVED_LEFT_BOUND)
         };
-        if !(first_row..ALPHA_ROWS_DEG.len()).all(served)
-            || (first_row > 0 && served(first_row - 1))
-        {
+        if !(first_row..rows).all(served) || (first_row > 0 && served(first_row - 1)) {
             return Err(Error::Input(format!(
                 "{what}: `first_row` = {first_row} does not match the cells' counts of histories that left the scan"
             )));
@@ -225,8 +237,42 @@ impl MeasuredWallTable {
     }
 }
 
-/// One cell line, checked against its place `k` in the grid.
-fn parse_cell(line: &str, k: usize) -> std::result::Result<CellLaw, String> {
+/// The table's rows from the text of `alpha_rows_deg`: the base rows (alone in a v2 table)
+/// and at most [`MAX_REFINED_ROWS`] more between them, increasing.
+fn parse_rows(v: &str, v2: bool) -> std::result::Result<Vec<f64>, String> {
+    let base = list(&ALPHA_ROWS_DEG);
+    let again = "build the table again with `rebound scan --measured-wall`";
+    if v2 {
+        return match v == base {
+            true => Ok(ALPHA_ROWS_DEG.to_vec()),
+            false => Err(format!(
+                "`alpha_rows_deg` = `{v}`: a v2 table has the base rows `{base}`: {again}"
+            )),
+        };
+    }
+    let rows: Vec<f64> = v
+        .split(',')
+        .map(|x| x.parse::<f64>().ok().filter(|a| a.is_finite()))
+        .collect::<Option<_>>()
+        .ok_or_else(|| format!("`alpha_rows_deg` = `{v}` is not a list of numbers"))?;
+    let allowed = format!(
+        "the base rows `{base}` and at most {MAX_REFINED_ROWS} more between them, increasing"
+    );
+    let increasing = rows.windows(2).all(|w| w[0] < w[1]);
+    let has_base = ALPHA_ROWS_DEG.iter().all(|a| rows.contains(a));
+    let inside = rows
+        .iter()
+        .all(|&a| (ALPHA_ROWS_DEG[0]..=90.0).contains(&a));
+    if !increasing || !has_base || !inside || rows.len() > ALPHA_ROWS_DEG.len() + MAX_REFINED_ROWS {
+        return Err(format!(
+            "`alpha_rows_deg` = `{v}`: allowed {allowed}: {again}"
+        ));
+    }
+    Ok(rows)
+}
+
+/// One cell line, checked against its place `k` in the grid of `rows`.
+fn parse_cell(line: &str, k: usize, rows: &[f64]) -> std::result::Result<CellLaw, String> {
     let f: Vec<&str> = line.split(',').collect();
     if f.len() != LEADING + KNOTS {
         return Err(format!("{} fields, expected {}", f.len(), LEADING + KNOTS));
@@ -243,12 +289,12 @@ fn parse_cell(line: &str, k: usize) -> std::result::Result<CellLaw, String> {
         ));
     }
     let (a, b) = (f[2].parse::<f64>(), f[3].parse::<f64>());
-    if a != Ok(ALPHA_ROWS_DEG[row]) || b != Ok(beta_column_deg(column)) {
+    if a != Ok(rows[row]) || b != Ok(beta_column_deg(column)) {
         return Err(format!(
             "α⁻ = {}, β⁻ = {} where the grid has {}, {}",
             f[2],
             f[3],
-            ALPHA_ROWS_DEG[row],
+            rows[row],
             beta_column_deg(column)
         ));
     }

@@ -18,6 +18,7 @@ use roughwall::measured_wall::{scan_table, BuildOptions, BUILD_CELLS};
 use roughwall::scan::Characterisation;
 use roughwall::{Result, Triangulation};
 use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 /// The table's file name for a particle of `diameter_m` (0: the point).
@@ -48,7 +49,7 @@ pub fn build_tables(
     let particles: Vec<f64> = std::iter::once(0.0)
         .chain(diameters_m.iter().copied())
         .collect();
-    // At most: the base rows and every row a build may add (it reports the rest when done).
+    // At most: the base rows and every row a build may add.
     let per_table = BUILD_CELLS as u64 * histories_per_cell;
     let progress = Progress::particles(per_table * particles.len() as u64, "measured-wall tables");
     let mut entries = Vec::with_capacity(particles.len());
@@ -62,6 +63,7 @@ pub fn build_tables(
             histories_per_cell,
             seed,
         };
+        let shot = AtomicU64::new(0);
         let built = scan_table(
             &c.levelled,
             &lay,
@@ -69,8 +71,13 @@ pub fn build_tables(
             triangulation,
             &what,
             &opts,
-            &|n| progress.advance(n),
+            &|n| {
+                shot.fetch_add(n, Ordering::Relaxed);
+                progress.advance(n)
+            },
         );
+        // The plan held every row a build may add; what it did not shoot will not run.
+        progress.skip(per_table.saturating_sub(shot.load(Ordering::Relaxed)));
         let entry = match built {
             Ok(table) => {
                 let name = table_file_name(d);
@@ -97,20 +104,17 @@ pub fn build_tables(
                     versus_paper: Some(versus_paper(&table, seed)?),
                 }
             }
-            Err(e @ roughwall::Error::Input(_)) => {
-                progress.skip(per_table);
-                MeasuredWallEntry {
-                    diameter_m: d,
-                    file: None,
-                    lowest_alpha_deg: f64::NAN,
-                    max_left_share: f64::NAN,
-                    note: format!("no measured-wall table: {e}"),
-                    seconds: t0.elapsed().as_secs_f64(),
-                    histories_per_cell,
-                    refined_rows_deg: Vec::new(),
-                    versus_paper: None,
-                }
-            }
+            Err(e @ roughwall::Error::Input(_)) => MeasuredWallEntry {
+                diameter_m: d,
+                file: None,
+                lowest_alpha_deg: f64::NAN,
+                max_left_share: f64::NAN,
+                note: format!("no measured-wall table: {e}"),
+                seconds: t0.elapsed().as_secs_f64(),
+                histories_per_cell,
+                refined_rows_deg: Vec::new(),
+                versus_paper: None,
+            },
             Err(e) => return Err(e),
         };
         entries.push(entry);

@@ -131,7 +131,13 @@ pub fn xi_zeta_of_normal(n: &Vector3<f64>) -> (f64, f64) {
 /// (Radenkovic & Simonin 2021, Eqs. 20–21 as corrected in docs/physics.md §2).
 pub fn gamma_from_normal(n: &Vector3<f64>, beta_in: f64) -> (f64, f64) {
     let (xi_p, zeta_p) = xi_zeta_of_normal(n);
-    let (s, c) = beta_in.sin_cos();
+    gamma_rotated(xi_p, zeta_p, beta_in.sin_cos())
+}
+
+/// Eqs. (20–21) from `(ξ', ζ')` with `(sin β⁻, cos β⁻)` given (computed once per incident
+/// direction): the inverse of [`xi_zeta_rotated`].
+#[inline]
+pub fn gamma_rotated(xi_p: f64, zeta_p: f64, (s, c): (f64, f64)) -> (f64, f64) {
     (c * xi_p - s * zeta_p, s * xi_p + c * zeta_p)
 }
 

@@ -2,12 +2,12 @@
 //! the wall, their effective elements' law kept.
 
 use super::effective_normal::effective_normal;
-use super::grid::{beta_column_deg, ALPHA_ROWS_DEG, BETA_COLUMNS, RANK_BINS};
+use super::grid::{beta_column_deg, cell, ALPHA_ROWS_DEG, BETA_COLUMNS, RANK_BINS};
 use super::grid::{HISTORIES_PER_CELL, SERVED_LEFT_BOUND};
 use super::quantiles::CellLaw;
-use super::refine::{merged_rows, refined_rows, Turn, MAX_REFINED_ROWS};
+use super::refine::{refined_rows, Turn, MAX_REFINED_ROWS};
 use super::table::MeasuredWallTable;
-use crate::angles::{incident_angles, xi_zeta_of_normal};
+use crate::angles::{gamma_rotated, incident_angles, xi_zeta_of_normal};
 use crate::collision::CollisionLaw;
 use crate::deterministic::{history_entered, Fate, LostReason, ModelSetup, Tracker};
 use crate::error::{Error, Result};
@@ -36,8 +36,8 @@ impl Default for BuildOptions {
     }
 }
 
-/// The cells a build shoots at most (the base grid and every row it may add): what its
-/// progress calls sum to, in cells of `histories_per_cell` histories.
+/// The cells a build shoots at most (the base grid and every row it may add): what a
+/// progress display plans for, in cells of `histories_per_cell` histories.
 pub const BUILD_CELLS: usize = (ALPHA_ROWS_DEG.len() + MAX_REFINED_ROWS) * BETA_COLUMNS;
 
 /// The golden ratio, whose continued fraction makes the best two-dimensional lattices.
@@ -57,8 +57,8 @@ const MIN_PAIRS: u64 = 8 * RANK_BINS as u64;
 /// then the rows [`super::refine`] adds where the law the base rows measured bends.
 /// `deviations` are the wall's own (for the table's record), `source` says what it is.
 /// `progress(histories)` is called with each finished cell's histories (from worker
-/// threads), and at the end with those of the rows it did not add, so that its calls sum to
-/// [`BUILD_CELLS`] cells' worth. The table is the same for any thread count.
+/// threads); they sum to at most [`BUILD_CELLS`] cells' worth. The table is the same for any
+/// thread count.
 pub fn build_table(
     tracker: &Tracker<'_>,
     deviations: Deviations,
@@ -107,17 +107,18 @@ pub fn build_table(
         .map(|(r, &a)| (a, (r * BETA_COLUMNS) as u64))
         .collect();
     let measured = row_cells(&base)?;
-    let served = |cells: &[MeasuredCell], row: usize| {
-        (0..BETA_COLUMNS)
-            .all(|c| cells[row * BETA_COLUMNS + c].law.left_share() <= SERVED_LEFT_BOUND)
+    let row_served = |cells: &[MeasuredCell], row: usize| {
+        cells[cell(row, 0)..cell(row + 1, 0)]
+            .iter()
+            .all(|c| c.law.served())
     };
     let rows = ALPHA_ROWS_DEG.len();
     let mut first_row = rows;
-    while first_row > 0 && served(&measured, first_row - 1) {
+    while first_row > 0 && row_served(&measured, first_row - 1) {
         first_row -= 1;
     }
     if first_row == rows {
-        let worst = measured[(rows - 1) * BETA_COLUMNS..]
+        let worst = measured[cell(rows - 1, 0)..]
             .iter()
             .map(|c| c.law.left_share())
             .fold(0.0, f64::max);
@@ -133,35 +134,31 @@ pub fn build_table(
         .map(|a| (a, refined_key(a)))
         .collect();
     let extra = row_cells(&added)?;
-    progress(
-        (MAX_REFINED_ROWS - added.len()) as u64 * BETA_COLUMNS as u64 * opts.histories_per_cell,
-    );
-    // A row between two served ones is served in practice; one that is not stays out, so
-    // that every row from `first_row` up is served.
-    let kept: Vec<f64> = added
+    // Every row, base and added, with its cells; an added row that is not served stays out
+    // (a row between two served ones is served in practice), so that every row from
+    // `first_row` up is served. Added rows lie above `first_row`, so it keeps its index.
+    let mut by_row: Vec<(f64, &[MeasuredCell])> = ALPHA_ROWS_DEG
         .iter()
-        .enumerate()
-        .filter(|&(i, _)| served(&extra, i))
-        .map(|(_, &(a, _))| a)
-        .collect();
-    let alpha_rows_deg = merged_rows(&kept);
-    let mut by_row: Vec<(f64, Vec<MeasuredCell>)> = measured
-        .chunks(BETA_COLUMNS)
-        .zip(&ALPHA_ROWS_DEG)
-        .chain(extra.chunks(BETA_COLUMNS).zip(added.iter().map(|(a, _)| a)))
-        .filter(|(_, a)| alpha_rows_deg.contains(a))
-        .map(|(c, &a)| (a, c.to_vec()))
+        .copied()
+        .zip(measured.chunks(BETA_COLUMNS))
+        .chain(
+            added
+                .iter()
+                .map(|&(a, _)| a)
+                .zip(extra.chunks(BETA_COLUMNS))
+                .filter(|(_, c)| row_served(c, 0)),
+        )
         .collect();
     by_row.sort_by(|x, y| x.0.total_cmp(&y.0));
     Ok(MeasuredWallTable {
         source: source.to_string(),
-        alpha_rows_deg,
+        alpha_rows_deg: by_row.iter().map(|&(a, _)| a).collect(),
         first_row,
         deviations,
         seed: opts.seed,
         cells: by_row
-            .into_iter()
-            .flat_map(|(_, c)| c.into_iter().map(|m| m.law))
+            .iter()
+            .flat_map(|(_, c)| c.iter().map(|m| m.law.clone()))
             .collect(),
     })
 }
@@ -207,12 +204,12 @@ pub fn scan_table(
 }
 
 /// How far the elements `pairs` `(ξ', ζ')` turn a rebound of incident direction `beta`: twice
-/// their mean inclination `γ = ξ' cos β − ζ' sin β` towards it (Radenkovic & Simonin 2021,
-/// Eq. 20; [`crate::angles::gamma_from_normal`]), with its standard error, in degrees.
+/// their mean inclination `γ` towards it (Radenkovic & Simonin 2021, Eq. 20,
+/// [`gamma_rotated`]), with its standard error, in degrees.
 fn turn_of(pairs: &[(f64, f64)], beta: f64) -> Turn {
-    let (s, c) = beta.sin_cos();
+    let sin_cos = beta.sin_cos();
     let m = pairs.len() as f64;
-    let gamma = |&(xi, zeta): &(f64, f64)| c * xi - s * zeta;
+    let gamma = |&(xi, zeta): &(f64, f64)| gamma_rotated(xi, zeta, sin_cos).0;
     let mean = pairs.iter().map(gamma).sum::<f64>() / m;
     let variance = pairs.iter().map(|p| (gamma(p) - mean).powi(2)).sum::<f64>() / (m - 1.0);
     Turn {

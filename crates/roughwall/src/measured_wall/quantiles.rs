@@ -2,7 +2,7 @@
 //! of `ξ'`, and the law of `ζ'` within each rank bin of `ξ'` (so that their dependence is
 //! kept).
 
-use super::grid::{RANK_BINS, XI_KNOTS, ZETA_KNOTS};
+use super::grid::{RANK_BINS, SERVED_LEFT_BOUND, XI_KNOTS, ZETA_KNOTS};
 
 /// A quantile function on `K` knots at the probabilities `p(t_k) = (1 − cos π t_k)/2`,
 /// `t_k = k/(K − 1)`, linear in `t` between them: the knots are the sample's order statistics
@@ -146,6 +146,12 @@ impl CellLaw {
         } else {
             self.left_patch as f64 / self.histories as f64
         }
+    }
+
+    /// Whether the cell serves its direction: at most [`SERVED_LEFT_BOUND`] of its histories
+    /// left the scan. A row is served when every cell of it is.
+    pub fn served(&self) -> bool {
+        self.left_share() <= SERVED_LEFT_BOUND
     }
 }
 

@@ -28,7 +28,9 @@ use super::grid::{cot_deg, ALPHA_ROWS_DEG, BETA_COLUMNS, LINEAR_BELOW_DEG};
 pub const REFINE_ABOVE_DEG: f64 = 0.025;
 
 /// The most rows a table adds: they cost a base row's build time each (about 0.15 s on a
-/// 4096² scan on 2 cores), and keep the widest table within the 16 MiB a reader takes.
+/// 4096² scan on 2 cores: 14 base rows cost 2.14 s, docs/performance.md row 25's history in
+/// docs/design-notes.md, "Rows"), and the widest table keeps within the 16 MiB a reader
+/// takes (about 15 MiB; `src/case/stochastic.rs` tests it).
 pub const MAX_REFINED_ROWS: usize = 12;
 
 /// A cell's turn `2 γ̄` and its standard error (degrees; NaN for a cell without a law).
@@ -36,15 +38,18 @@ pub const MAX_REFINED_ROWS: usize = 12;
 pub struct Turn {
     /// Twice the mean inclination `γ` of the cell's elements towards the incident direction.
     pub deg: f64,
-    /// Its standard error, as for independent histories (the lattice the histories enter on
-    /// makes the true one smaller, so this errs towards adding fewer rows).
+    /// Its standard error, as for independent histories. The lattice the histories enter on
+    /// makes the true one smaller (two seeds' tables of sample-land differ by at most 0.046°
+    /// in mean α⁺ where `σ(α⁺)/√n` is about 0.075°), so this errs towards adding fewer rows.
     pub se_deg: f64,
 }
 
 /// How sure the predicted error must be: an interval is refined where the error's lower
 /// bound, the estimate less this many standard errors, exceeds [`REFINE_ABOVE_DEG`]. Each
-/// interval is tested in 24 columns at its two ends; at 3 standard errors noise alone passes
-/// in about one table in eight, and adds one row.
+/// interval is tested in 24 columns at its two ends, so a looser margin lets noise through:
+/// without it every sample-land table took all 12 rows. With it, the 13 tables of the four
+/// smooth shipped scans (x3p-2, opd-1, plu-1, metropro-1) and the generated 4096² bench wall
+/// get none (docs/design-notes.md, "Rows per wall").
 pub const REFINE_SIGMAS: f64 = 3.0;
 
 /// The rows (degrees, increasing) to add to the base grid, given each base cell's turn
@@ -100,13 +105,6 @@ pub fn refined_rows(turn: &[Turn], first_row: usize) -> Vec<f64> {
     added
 }
 
-/// The base rows and `added` merged, increasing.
-pub fn merged_rows(added: &[f64]) -> Vec<f64> {
-    let mut rows: Vec<f64> = ALPHA_ROWS_DEG.iter().chain(added).copied().collect();
-    rows.sort_by(f64::total_cmp);
-    rows
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -128,7 +126,7 @@ mod tests {
     }
 
     /// The turn of a law `g(α⁻)` in every column, known to 0.005°.
-    fn turn_of(g: impl Fn(f64) -> f64) -> Vec<Turn> {
+    fn turn_known(g: impl Fn(f64) -> f64) -> Vec<Turn> {
         turn_se(g, 0.005)
     }
 
@@ -142,22 +140,22 @@ mod tests {
     #[test]
     fn a_law_linear_in_cot_alpha_gets_no_rows() {
         // What the mixture reproduces exactly (a flat wall turns nothing): nothing to add.
-        assert!(refined_rows(&turn_of(|a| 3.0 + 2.0 * cot_deg(a)), 0).is_empty());
-        assert!(refined_rows(&turn_of(|_| 0.0), 0).is_empty());
+        assert!(refined_rows(&turn_known(|a| 3.0 + 2.0 * cot_deg(a)), 0).is_empty());
+        assert!(refined_rows(&turn_known(|_| 0.0), 0).is_empty());
         // A turn linear in α⁻ is curved in cot α⁻, but too little to matter.
-        assert!(refined_rows(&turn_of(|a| 0.05 * a), 0).is_empty());
+        assert!(refined_rows(&turn_known(|a| 0.05 * a), 0).is_empty());
     }
 
     #[test]
     fn a_kink_gets_the_midpoints_around_it_and_no_more() {
-        let added = refined_rows(&turn_of(kink), 0);
+        let added = refined_rows(&turn_known(kink), 0);
         assert!(added.contains(&39.0), "{added:?}");
         assert!(
             added.iter().all(|&a| (30.0..=46.0).contains(&a)),
             "{added:?}"
         );
         // The same kink in one column only is found too (the worst column counts).
-        let mut one = turn_of(|_| 4.0);
+        let mut one = turn_known(|_| 4.0);
         for (r, &a) in ALPHA_ROWS_DEG.iter().enumerate() {
             one[r * BETA_COLUMNS + 5].deg = kink(a);
         }
@@ -169,10 +167,10 @@ mod tests {
     #[test]
     fn unserved_rows_and_cells_without_a_law_are_left_alone_and_the_count_is_capped() {
         let served_from_40 = ALPHA_ROWS_DEG.iter().position(|&a| a == 40.0).unwrap();
-        assert!(refined_rows(&turn_of(kink), served_from_40)
+        assert!(refined_rows(&turn_known(kink), served_from_40)
             .iter()
             .all(|&a| a > 40.0));
-        assert!(refined_rows(&turn_of(|_| f64::NAN), 0).is_empty());
+        assert!(refined_rows(&turn_known(|_| f64::NAN), 0).is_empty());
         // Rows alternating by 2° (known far better): every interval qualifies, at most the
         // cap is added.
         let noisy: Vec<Turn> = (0..ALPHA_ROWS_DEG.len() * BETA_COLUMNS)
@@ -188,8 +186,7 @@ mod tests {
         let added = refined_rows(&noisy, 0);
         assert_eq!(added.len(), MAX_REFINED_ROWS);
         assert!(added.windows(2).all(|w| w[0] < w[1]));
-        let rows = merged_rows(&added);
-        assert_eq!(rows.len(), ALPHA_ROWS_DEG.len() + MAX_REFINED_ROWS);
-        assert!(rows.windows(2).all(|w| w[0] < w[1]));
+        // Midpoints: never a base row.
+        assert!(added.iter().all(|a| !ALPHA_ROWS_DEG.contains(a)));
     }
 }

@@ -207,7 +207,9 @@ impl MeasuredWallTable {
         };
         // The served rows follow from the counts: an edited `first_row` is refused.
         let served = |row: usize| {
-            (0..BETA_COLUMNS).all(|c| t.cells[cell(row, c)].left_share() <= SERVED_LEFT_BOUND)
+            t.cells[cell(row, 0)..cell(row + 1, 0)]
+                .iter()
+                .all(CellLaw::served)
         };
         if !(first_row..rows).all(served) || (first_row > 0 && served(first_row - 1)) {
             return Err(Error::Input(format!(

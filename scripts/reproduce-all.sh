@@ -12,10 +12,11 @@ export REBOUND_NESTED=1
 : > "$RUN_LOG"
 T0=$(date +%s)
 # Fingerprints of the CSVs already there, to check afterwards that the same seeds give the
-# same bytes. speed_vs_error.csv holds wall times, so it is left out of the check.
+# same bytes. speed_vs_error.csv holds wall times and pipe-flow's costs.csv CPU times, so they
+# are left out of the check.
 BEFORE=$(mktemp)
 trap 'rm -f "$BEFORE"' EXIT
-(cd "$OUT" && find . -name '*.csv' ! -name 'speed_vs_error.csv' -print0 | sort -z | xargs -0 -r sha256sum) > "$BEFORE"
+(cd "$OUT" && find . -name '*.csv' ! -name 'speed_vs_error.csv' ! -name 'costs.csv' -print0 | sort -z | xargs -0 -r sha256sum) > "$BEFORE"
 # The mode the files before were made in: the `mode:` line of the last check (unknown without
 # one, e.g. results written before the line existed).
 PREVIOUS_MODE=$(awk '/^mode: /{print $2; exit}' "$OUT/$P_REPRODUCIBILITY" 2>/dev/null || true)
@@ -50,7 +51,7 @@ if [ -s "$BEFORE" ]; then
   fi
   {
     echo "mode: $MODE"
-    echo "CSV files present before this run: $total (speed_vs_error.csv excluded: it holds wall times)"
+    echo "CSV files present before this run: $total (speed_vs_error.csv and costs.csv excluded: they hold wall and CPU times)"
     echo "byte-identical after re-running with the same seeds: $((total - changed))"
     echo "different: $changed"
     [ "$changed" = 0 ] || echo "  ($why)"

@@ -43,6 +43,7 @@ fn cases() -> Vec<(&'static str, How)> {
     use topography::Format::*;
     vec![
         ("x3p-2.x3p", How::Read(X3p)),
+        ("csafe-cartridge-case-TW05-08.x3p", How::Read(X3p)),
         ("sur-2.sur", How::Read(Sur)),
         ("sur-3.sur", How::Read(Sur)),
         ("metropro-1.dat", How::Read(MetroPro)),

@@ -208,13 +208,14 @@ pub const STUDY_WITH_TILED: &str = "tiled";
 pub const MEASURED_WALL_MODEL: &str = "measured-wall-model";
 /// Its scans and particles, `scan:D:D…` (µm; 0 the point particle): each scan a shipped case
 /// `configs/scans/<scan>.toml`, each particle a directory `d<D>` under the scan's.
-pub const MODEL_SCANS: [&str; 6] = [
+pub const MODEL_SCANS: [&str; 7] = [
     "x3p-2:0:50",
     "opd-1:0:50:500",
     "matrix-3:0",
     "plu-1:0:50:100:500",
     "metropro-1:0:50:100:500",
     "sample-land:0:50:100",
+    "cartridge-case:0:50:100",
 ];
 /// The wall's own model: `rebound scan --measured-wall` of a scan (its card and tables).
 pub const MODEL_CARD: &str = "card";

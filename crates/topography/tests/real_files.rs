@@ -298,3 +298,32 @@ fn x3p_from_x3ptools_with_a_folder_and_an_empty_offset() {
     assert!(t.info_value("main.xml").unwrap().contains("sample-land/"));
     assert_eq!(t.info_value("vendor"), Some("Sensofar"));
 }
+
+/// CSAFE's processed Weller scan TW05-08 (cartridgeCaseScans, CC-BY 4.0): the breech-face
+/// impression on a fired 9 mm cartridge case's primer (metal), a NanoFocus µsurf confocal scan,
+/// band-pass filtered and downsampled by its authors; the firing-pin hole and the outside of
+/// the primer are NaN. Its `main.xml` states a `<Mask>` whose image the archive does not
+/// hold: the heights are read, the mask is not needed. The expected heights are its
+/// `bindata/data.bin` decoded independently (little-endian f64 × Increment 1).
+#[test]
+fn x3p_of_a_cartridge_case_with_a_mask_record_and_no_mask_image() {
+    let t = read(&scan("csafe-cartridge-case-TW05-08.x3p")).unwrap();
+    check(
+        &t,
+        Format::X3p,
+        (631, 631),
+        (6.25e-6, 6.25e-6),
+        216_633,
+        &[
+            (0, 0, f64::NAN),
+            (315, 315, f64::NAN),
+            (100, 200, -3.418991157676885e-07),
+            (200, 100, 1.5655955490759868e-06),
+            (560, 320, -5.366284091612832e-07),
+            (320, 560, -7.243953590227254e-07),
+        ],
+    );
+    assert_eq!(t.info_value("main.xml MD5"), Some("verified"));
+    assert_eq!(t.info_value("point data MD5"), Some("verified"));
+    assert_eq!(t.info_value("vendor"), Some("NanoFocus"));
+}

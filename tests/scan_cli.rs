@@ -631,7 +631,7 @@ fn a_scan_becomes_a_stochastic_and_a_deterministic_run_in_two_commands() {
     for (args, needle) in [
         (
             vec!["stochastic", "--case", case.to_str().unwrap(), "--wall-card", card_path],
-            format!("`--wall-card` {card_path} has no [[diameter]] row for the particles' 250 µm (`particles.diameter_um`, default 500): it has 0 (the point particle, [wall]), 500 µm"),
+            format!("`--wall-card` {card_path} has no [[diameter]] row for the particles' 250 µm (`particles.diameter_um`, default 500): its rows are for 500 µm"),
         ),
         (
             vec!["stochastic", "--wall-card", "no-wall.toml"],

@@ -183,10 +183,10 @@ impl WallCard {
         })
     }
 
-    /// The diameters the card has, for messages: `0 (the point, [wall]), 100, 500 µm`.
+    /// The diameters of the card's rows, for messages: `100, 500 µm`. Not its [wall]: a
+    /// point particle is no `particles.diameter_um` a case can give (a nanometre at least).
     fn diameters(&self) -> String {
-        let mut d = vec!["0 (the point particle, [wall])".to_string()];
-        d.extend(self.rows.iter().map(|r| fmt_num(r.diameter_um)));
+        let d: Vec<String> = self.rows.iter().map(|r| fmt_num(r.diameter_um)).collect();
         format!("{} µm", d.join(", "))
     }
 
@@ -219,7 +219,7 @@ impl WallCard {
                 .find(|r| (r.diameter_um - d).abs() <= DIAMETER_MATCH * d.abs())
                 .ok_or_else(|| {
                     Error::Input(format!(
-                        "{what} has no [[diameter]] row for the particles' {} µm (`particles.diameter_um`, default {DEFAULT_DIAMETER_UM}): it has {}; set `particles.diameter_um` to one of them, or run `rebound scan --diameter-um {}`",
+                        "{what} has no [[diameter]] row for the particles' {} µm (`particles.diameter_um`, default {DEFAULT_DIAMETER_UM}): its rows are for {}; set `particles.diameter_um` to one of them, or run `rebound scan --diameter-um {}` (its [wall], the point particle's, goes into a case's [wall] by hand)",
                         fmt_num(d),
                         self.diameters(),
                         fmt_num(d)
@@ -363,7 +363,7 @@ mod tests {
             )
             .unwrap_err();
         assert_eq!(e.exit_code(), 2);
-        assert!(e.to_string().contains("has no [[diameter]] row for the particles' 250 µm (`particles.diameter_um`, default 500): it has 0 (the point particle, [wall]), 100, 500, 1000000 µm; set `particles.diameter_um` to one of them, or run `rebound scan --diameter-um 250`"), "{e}");
+        assert!(e.to_string().contains("has no [[diameter]] row for the particles' 250 µm (`particles.diameter_um`, default 500): its rows are for 100, 500, 1000000 µm; set `particles.diameter_um` to one of them, or run `rebound scan --diameter-um 250` (its [wall], the point particle's, goes into a case's [wall] by hand)"), "{e}");
         let e = c
             .apply(&mut case("[particles]\ndiameter_um = 1e6\n"), "stochastic")
             .unwrap_err();

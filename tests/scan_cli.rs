@@ -904,6 +904,57 @@ fn the_card_names_the_walls_own_model_and_stochastic_takes_it() {
     .refused("measured_wall_table");
 }
 
+/// The rows each measured-wall table of a `scan --measured-wall` run in `out` added
+/// (`run.toml`, `[[measured_wall]] refined_rows_deg`), in the order of its tables.
+fn refined_rows(out: &Path) -> Vec<Vec<f64>> {
+    let m: toml::Table = std::fs::read_to_string(out.join("run.toml"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    m["measured_wall"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| {
+            e["refined_rows_deg"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|a| a.as_float().unwrap())
+                .collect()
+        })
+        .collect()
+}
+
+/// On a striated metal land whose law bends between the base rows (x3ptools' sample-land,
+/// between 30° and 46°: docs/design-notes.md, "Rows per wall"), the point particle's table
+/// adds rows there, midpoints of base intervals, and only there; the table file lists them
+/// and reads back with them.
+#[test]
+fn a_wall_whose_law_bends_gets_rows_of_its_own_where_it_bends() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("card");
+    run_case(
+        "scan",
+        &shipped_case("scans/sample-land.toml"),
+        &out,
+        &["--measured-wall"],
+    );
+    let rows = refined_rows(&out);
+    assert_eq!(rows.len(), 1, "{rows:?}");
+    let added = &rows[0];
+    assert!(!added.is_empty(), "no row added on sample-land");
+    let base = roughwall::measured_wall::ALPHA_ROWS_DEG;
+    for a in added {
+        assert!((30.0..=46.0).contains(a), "{added:?}");
+        let i = base.iter().position(|b| b > a).unwrap();
+        assert_eq!(*a, 0.5 * (base[i - 1] + base[i]), "{added:?}");
+    }
+    let text = std::fs::read_to_string(out.join("measured_wall_point.txt")).unwrap();
+    let table = roughwall::measured_wall::MeasuredWallTable::parse(&text, "t").unwrap();
+    assert_eq!(&table.refined_rows_deg(), added);
+}
+
 /// The wall's own model against its goal on small real scans (issue 39, "Done when"), the
 /// study's comparison (scripts/measured-wall-model.sh) at one seed: `scan --measured-wall`
 /// with the default histories a cell; the in-place reference on the scan itself; the model
@@ -936,6 +987,12 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal() {
         }
         args.extend(["--measured-wall", "--out", out.to_str().unwrap()]);
         rebound(&args).ok();
+        // A smooth wall's law does not bend between the base rows: no row is added.
+        assert!(
+            refined_rows(&out).iter().all(Vec::is_empty),
+            "{tag}: {:?}",
+            refined_rows(&out)
+        );
         let card_file = out.join("wall_card.toml");
         let particles = if diameter > 0.0 {
             format!("[particles]\ncount = 200000\ndiameter_um = {diameter}\n")

@@ -4,7 +4,7 @@
 use super::effective_normal::effective_normal;
 use super::grid::{beta_column_deg, cell, ALPHA_ROWS_DEG, BETA_COLUMNS, RANK_BINS};
 use super::grid::{HISTORIES_PER_CELL, SERVED_LEFT_BOUND};
-use super::quantiles::CellLaw;
+use super::quantiles::{first_served_row, row_served, CellLaw};
 use super::refine::{refined_rows, Turn, MAX_REFINED_ROWS};
 use super::table::MeasuredWallTable;
 use crate::angles::{gamma_rotated, incident_angles, xi_zeta_of_normal};
@@ -106,21 +106,16 @@ pub fn build_table(
         .enumerate()
         .map(|(r, &a)| (a, (r * BETA_COLUMNS) as u64))
         .collect();
-    let measured = row_cells(&base)?;
-    let row_served = |cells: &[MeasuredCell], row: usize| {
-        cells[cell(row, 0)..cell(row + 1, 0)]
-            .iter()
-            .all(|c| c.law.served())
-    };
+    let (laws, turn): (Vec<CellLaw>, Vec<Turn>) = row_cells(&base)?
+        .into_iter()
+        .map(|c| (c.law, c.turn))
+        .unzip();
     let rows = ALPHA_ROWS_DEG.len();
-    let mut first_row = rows;
-    while first_row > 0 && row_served(&measured, first_row - 1) {
-        first_row -= 1;
-    }
+    let first_row = first_served_row(&laws);
     if first_row == rows {
-        let worst = measured[cell(rows - 1, 0)..]
+        let worst = laws[cell(rows - 1, 0)..]
             .iter()
-            .map(|c| c.law.left_share())
+            .map(CellLaw::left_share)
             .fold(0.0, f64::max);
         return Err(Error::Input(format!(
             "{source}: too small for the measured-wall model: even at normal incidence {:.1} % of the histories leave it (at most {} allowed)",
@@ -128,25 +123,24 @@ pub fn build_table(
             SERVED_LEFT_BOUND
         )));
     }
-    let turn: Vec<Turn> = measured.iter().map(|c| c.turn).collect();
     let added: Vec<(f64, u64)> = refined_rows(&turn, first_row)
         .into_iter()
         .map(|a| (a, refined_key(a)))
         .collect();
-    let extra = row_cells(&added)?;
+    let extra: Vec<CellLaw> = row_cells(&added)?.into_iter().map(|c| c.law).collect();
     // Every row, base and added, with its cells; an added row that is not served stays out
     // (a row between two served ones is served in practice), so that every row from
     // `first_row` up is served. Added rows lie above `first_row`, so it keeps its index.
-    let mut by_row: Vec<(f64, &[MeasuredCell])> = ALPHA_ROWS_DEG
+    let mut by_row: Vec<(f64, &[CellLaw])> = ALPHA_ROWS_DEG
         .iter()
         .copied()
-        .zip(measured.chunks(BETA_COLUMNS))
+        .zip(laws.chunks(BETA_COLUMNS))
         .chain(
             added
                 .iter()
                 .map(|&(a, _)| a)
                 .zip(extra.chunks(BETA_COLUMNS))
-                .filter(|(_, c)| row_served(c, 0)),
+                .filter(|(_, c)| row_served(c)),
         )
         .collect();
     by_row.sort_by(|x, y| x.0.total_cmp(&y.0));
@@ -156,10 +150,7 @@ pub fn build_table(
         first_row,
         deviations,
         seed: opts.seed,
-        cells: by_row
-            .iter()
-            .flat_map(|(_, c)| c.iter().map(|m| m.law.clone()))
-            .collect(),
+        cells: by_row.iter().flat_map(|(_, c)| c.iter().cloned()).collect(),
     })
 }
 

@@ -2,7 +2,7 @@
 //! of `ξ'`, and the law of `ζ'` within each rank bin of `ξ'` (so that their dependence is
 //! kept).
 
-use super::grid::{RANK_BINS, SERVED_LEFT_BOUND, XI_KNOTS, ZETA_KNOTS};
+use super::grid::{BETA_COLUMNS, RANK_BINS, SERVED_LEFT_BOUND, XI_KNOTS, ZETA_KNOTS};
 
 /// A quantile function on `K` knots at the probabilities `p(t_k) = (1 − cos π t_k)/2`,
 /// `t_k = k/(K − 1)`, linear in `t` between them: the knots are the sample's order statistics
@@ -153,6 +153,23 @@ impl CellLaw {
     pub fn served(&self) -> bool {
         self.left_share() <= SERVED_LEFT_BOUND
     }
+}
+
+/// Whether a row of cells serves its directions: every one of its cells does.
+pub fn row_served(row: &[CellLaw]) -> bool {
+    row.iter().all(CellLaw::served)
+}
+
+/// The lowest row of the grid `cells` (rows of [`BETA_COLUMNS`] cells, increasing `|α⁻|`)
+/// from which every row up is served: what a build measures and a table states as its
+/// `first_row`. The row count when not even the top row is served.
+pub fn first_served_row(cells: &[CellLaw]) -> usize {
+    let rows: Vec<&[CellLaw]> = cells.chunks(BETA_COLUMNS).collect();
+    let mut first = rows.len();
+    while first > 0 && row_served(rows[first - 1]) {
+        first -= 1;
+    }
+    first
 }
 
 /// The rank bin of probability `u` in `[0, 1)`.

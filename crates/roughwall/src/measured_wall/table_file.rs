@@ -12,7 +12,7 @@
 //! or truncated table is a one-line error naming the line.
 
 use super::grid::*;
-use super::quantiles::{CellLaw, QuantileFunction, KNOT_UNIT_RAD};
+use super::quantiles::{first_served_row, CellLaw, QuantileFunction, KNOT_UNIT_RAD};
 use super::refine::MAX_REFINED_ROWS;
 use super::table::MeasuredWallTable;
 use crate::error::{Error, Result};
@@ -206,12 +206,7 @@ impl MeasuredWallTable {
             cells,
         };
         // The served rows follow from the counts: an edited `first_row` is refused.
-        let served = |row: usize| {
-            t.cells[cell(row, 0)..cell(row + 1, 0)]
-                .iter()
-                .all(CellLaw::served)
-        };
-        if !(first_row..rows).all(served) || (first_row > 0 && served(first_row - 1)) {
+        if first_row != first_served_row(&t.cells) {
             return Err(Error::Input(format!(
                 "{what}: `first_row` = {first_row} does not match the cells' counts of histories that left the scan"
             )));

@@ -76,3 +76,44 @@ variant_case() {
     END { if (!seen) printf "\n[stochastic]\nmodel = \"%s\"\n", m }
   ' "$(if [ -f "configs/$1" ]; then echo "configs/$1"; else echo "$1"; fi)"
 }
+
+# gaussian_control CARD_DIR REF D XI ZE DIRECTIONS NAME CASES OUT: the noise floor of a
+# verdict on the Gaussian assumption for a scan (issue 39, part 3). The scan is one
+# realisation, so even a Gaussian wall would differ from a Gaussian ensemble: one Gaussian
+# wall (seed 2022) of the size and pixel of the block the in-place reference REF bounced on
+# (its run.toml), with deviations XI, ZE (the card's for particles of D µm, 0 the point) and
+# the correlation area `rebound scan` measured for that particle (wall_card_diameters.csv of
+# CARD_DIR: its part of the scan over its correlation areas, so that the block holds as many
+# as the scan's; rms height from Eq. 15), against an ensemble of $P_STUDY_CONTROL_SURFACES such
+# walls (seed 2021; fewer in quick mode), at DIRECTIONS' incident directions, and their
+# comparison. Cases go to CASES/NAME-{one,ensemble}.toml, runs under OUT.
+gaussian_control() {
+  local card_dir=$1 ref=$2 d=$3 xi=$4 ze=$5 directions=$6 name=$7 cases=$8 out=$9
+  local size area h surfaces
+  surfaces=$(particles "$P_STUDY_CONTROL_SURFACES" 4)
+  size=$(awk -F' = ' '
+    /^\[/{sec=$0}
+    sec=="[surface_choice]" && $1=="grid_nx"{nx=$2+0} sec=="[surface_choice]" && $1=="grid_nz"{nz=$2+0}
+    sec=="[surface_choice]" && $1=="spacing_x_um"{px=$2+0} sec=="[surface_choice]" && $1=="spacing_z_um"{pz=$2+0}
+    END { if (nx > 2 && nz > 2) { L = sqrt(nx*px*nz*pz); printf "%.6g %d\n", L, int(L / sqrt(px*pz) + 0.5) } }' "$ref/run.toml")
+  area=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+    NR == 2 { printf "%.9g\n", $col["nx"] * $col["dx_um"] * $col["ny"] * $col["dy_um"] }' "$card_dir/scan_summary.csv")
+  h=$(awk -F, -v d="$d" -v area="$area" -v xi="$xi" -v ze="$ze" '
+    NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+    $1 + 0 == d + 0 && $col["correlation_areas"] > 0 {
+      a = $col["exact_fraction"] * area / $col["correlation_areas"]; r = 3.141592653589793 / 180
+      printf "%.6g\n", sqrt(a * xi * r * ze * r / 2); exit }' "$card_dir/wall_card_diameters.csv")
+  [ -n "$size" ] && [ -n "$h" ] || { echo "gaussian_control: no block size in $ref/run.toml or correlation area for $d µm in $card_dir" >&2; exit 1; }
+  local which tag n_surf seed cc
+  for which in "$P_STUDY_CONTROL_ONE:1:2022" "$P_STUDY_CONTROL_ENSEMBLE:$surfaces:2021"; do
+    IFS=: read -r tag n_surf seed <<< "$which"
+    cc="$cases/$name-$tag.toml"
+    { sed -e "s/^name = .*/name = \"$name-$tag\"/" -e "s/^seed = .*/seed = $seed/" "$directions"
+      printf '\n[surface]\nlength_um = %s\nnodes = %s\nrms_height_um = %s\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n\n[deterministic]\nsurfaces = %s\n' \
+        "${size% *}" "${size#* }" "$h" "$xi" "$ze" "$n_surf"; } > "$cc"
+    grep -q "^surfaces = $n_surf\$" "$cc" || { echo "gaussian_control: could not write $cc" >&2; exit 1; }
+    run deterministic --case "$cc" --particles "$N" --out "$out/$tag/$P_DETERMINISTIC"
+  done
+  run compare --a "$out/$P_STUDY_CONTROL_ENSEMBLE/$P_DETERMINISTIC" \
+    --b "$out/$P_STUDY_CONTROL_ONE/$P_DETERMINISTIC" --out "$out/$P_COMPARE"
+}

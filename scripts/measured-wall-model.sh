@@ -6,8 +6,9 @@
 # noise floor: what two independent references differ by); and the measured-wall model, the
 # paper's model and the calibrated model, the last two with the card's deviations for that
 # particle, and `deterministic` on 16 Gaussian walls with those deviations, run at incident
-# directions between the table's grid points
-# (configs/scans/own-model.toml). Every run is compared with the first reference. Writes
+# directions between the table's grid points (configs/scans/own-model.toml). Every run is
+# compared with the first reference. The Gaussian walls' verdict has a noise floor of its own:
+# one Gaussian wall of the reference's block size against $P_STUDY_CONTROL_SURFACES such walls. Writes
 # $REBOUND_RESULTS/measured-wall-model/; `rebound report` turns it into a REPORT.md section.
 # REBOUND_MODEL_SCANS (in place of $P_MODEL_SCANS) and REBOUND_MODEL_HISTORIES (histories per
 # table direction) may be set to study a subset or another table resolution.
@@ -91,6 +92,9 @@ for entry in ${REBOUND_MODEL_SCANS:-$P_MODEL_SCANS}; do
         "$xi" "$ze" "$GAUSS_SURFACES"; } > "$cg"
     run deterministic --case "$cg" --particles "$N" --out "$p/$P_MODEL_GAUSSIAN/$P_DETERMINISTIC"
     run compare --a "$ref" --b "$p/$P_MODEL_GAUSSIAN/$P_DETERMINISTIC" --out "$p/$P_MODEL_GAUSSIAN/$P_COMPARE"
+    # The noise floor of that verdict (part 3; common.sh).
+    gaussian_control "$card_dir" "$ref" "$d" "$xi" "$ze" "$DIRECTIONS" "$s-d$d-$P_MODEL_CONTROL" \
+      "$M/cases" "$p/$P_MODEL_CONTROL"
     for v in $P_MODEL_MODELS; do
       st="model = \"$v\"\n"
       if [ "$v" = measured-wall ]; then

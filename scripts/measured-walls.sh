@@ -78,7 +78,6 @@ done
 # --- 2. Real scans: on the scan, on Gaussian walls, and the models with the card --------------
 N=$(particles 200000 2000)
 GAUSS_SURFACES=$(particles 16 2)
-CONTROL_SURFACES=$(particles "$P_STUDY_CONTROL_SURFACES" 4)
 for s in $P_STUDY_SCANS; do
   d="$M/$P_STUDY/$s"
   stage_start "Measured walls: scan $s"
@@ -106,29 +105,9 @@ for s in $P_STUDY_SCANS; do
   txi=$(awk -F' = ' '/^measured_delta_xi_deg/{print $2; exit}' "$detm/run.toml")
   tze=$(awk -F' = ' '/^measured_delta_zeta_deg/{print $2; exit}' "$detm/run.toml")
   [ -n "$txi" ] && [ -n "$tze" ] || { echo "measured-walls.sh: no measured deviations in $detm/run.toml" >&2; exit 1; }
-  # The noise floor of a "miss" (issue 39, part 3): one Gaussian wall with the scan's size,
-  # pixel (geometric means of its two sides and spacings), Sq and the card's deviations
-  # (Eq. 15), another seed, against an ensemble of $CONTROL_SURFACES such walls: what one
-  # realisation of that size differs from the ensemble by, through the same runs.
-  read -r L nodes sq < <(awk -F' = ' '
-    /^\[/{sec=$0}
-    sec=="[scan]" && /^grid = /{gsub(/[][]/,"",$2); split($2,g,","); nx=g[1]+0; ny=g[2]+0}
-    sec=="[scan]" && /^pixel_um = /{gsub(/[][]/,"",$2); split($2,p,","); px=p[1]+0; py=p[2]+0}
-    sec=="[scan]" && /^sq_um = /{split($2,a," "); sq=a[1]}
-    END { L = sqrt(nx*px*ny*py); n = int(L / sqrt(px*py) + 0.5); printf "%.6g %d %s\n", L, n, sq }' "$card")
-  [ -n "$sq" ] && [ "$nodes" -gt 2 ] || { echo "measured-walls.sh: no [scan] size in $card" >&2; exit 1; }
-  for which in "$P_STUDY_CONTROL_ONE:1:2022" "$P_STUDY_CONTROL_ENSEMBLE:$CONTROL_SURFACES:2021"; do
-    IFS=: read -r tag n_surf seed <<< "$which"
-    cc="$M/cases/study-$s-control-$tag.toml"
-    awk -v name="study-$s-control-$tag" -v seed="$seed" '
-      /^name = /{print "name = \"" name "\""; next} /^seed = /{print "seed = " seed; next} {print}' \
-      configs/scans/study.toml > "$cc"
-    printf '\n[surface]\nlength_um = %s\nnodes = %s\nrms_height_um = %s\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n\n[deterministic]\nsurfaces = %s\n' \
-      "$L" "$nodes" "$sq" "$xi" "$ze" "$n_surf" >> "$cc"
-    run deterministic --case "$cc" --particles "$N" --out "$d/$P_STUDY_CONTROL/$tag/$P_DETERMINISTIC"
-  done
-  run compare --a "$d/$P_STUDY_CONTROL/$P_STUDY_CONTROL_ENSEMBLE/$P_DETERMINISTIC" \
-    --b "$d/$P_STUDY_CONTROL/$P_STUDY_CONTROL_ONE/$P_DETERMINISTIC" --out "$d/$P_STUDY_CONTROL/$P_COMPARE"
+  # The noise floor of a "miss" (issue 39, part 3; common.sh).
+  gaussian_control "$d/$P_STUDY_CARD" "$det" 0 "$xi" "$ze" configs/scans/study.toml \
+    "study-$s-control" "$M/cases" "$d/$P_STUDY_CONTROL"
   for which in "$P_STUDY_WITH_CARD:$xi:$ze" "$P_STUDY_WITH_TILED:$txi:$tze"; do
     IFS=: read -r tag wxi wze <<< "$which"
     cw="$M/cases/study-$s-$tag.toml"

@@ -162,6 +162,10 @@ pub struct StochasticArgs {
     /// its [[diameter]] row of [particles] diameter_um when it has rows, else its [wall].
     #[arg(long, value_name = "FILE")]
     pub wall_card: Option<PathBuf>,
+    /// With --wall-card: take the card's [wall], the point particle's deviations (and
+    /// measured-wall table), even when the card has [[diameter]] rows.
+    #[arg(long, requires = "wall_card")]
+    pub wall_card_point: bool,
     #[command(flatten)]
     pub tally: TallyArgs,
 }

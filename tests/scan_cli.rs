@@ -9,10 +9,12 @@ use roughwall::scan::characterise;
 use roughwall::ScanField;
 use std::path::{Path, PathBuf};
 
-/// The files every run with a lay writes (with diameters, also `wall_card_diameters.csv`).
-const OUTPUTS: [&str; 7] = [
+/// The files every run with a lay writes (`wall_card_diameters.csv` has the point particle's
+/// row and, with diameters, one per sphere).
+const OUTPUTS: [&str; 8] = [
     "scan_summary.csv",
     "wall_card.toml",
+    "wall_card_diameters.csv",
     "height_map.svg",
     "slope_angle_pdfs.svg",
     "autocorrelation.svg",
@@ -144,9 +146,17 @@ fn the_builtin_self_check_gives_back_the_generated_wall_for_any_thread_count() {
     );
     assert_eq!(t["lay"]["angle_deg"].as_float(), Some(row.num("lay_deg")));
     assert_eq!(t["notes"].as_array().map(Vec::len), Some(0));
-    // Without diameters: no dilation, no rows.
+    // Without diameters: no dilation, no rows; the point particle's resolution check, which
+    // the card's header points to, is still written.
     assert!(t.get("diameter").is_none());
-    assert!(!one.join("wall_card_diameters.csv").exists());
+    let rows = Csv::read(&one.join("wall_card_diameters.csv"));
+    assert_eq!(rows.rows.len(), 1);
+    assert_eq!(rows.row(0).num("diameter_um"), 0.0);
+    assert_eq!(
+        rows.row(0).num("delta_xi_deg"),
+        t["wall"]["delta_xi_deg"].as_float().unwrap()
+    );
+    assert!(rows.row(0).num("delta_xi_deg_2x_pixel").is_finite());
     let manifest = std::fs::read_to_string(one.join("run.toml")).unwrap();
     assert!(!manifest.contains("centre_surfaces_s") && manifest.contains("correlation_map_s"));
     assert!(manifest.contains("[surface_choice]") && manifest.contains("source = \"auto\""));
@@ -412,8 +422,8 @@ fn diameters_give_the_librarys_rows_falling_with_the_diameter_for_any_thread_cou
     let (one, two) = (dir.join("one"), dir.join("two"));
     let r = run("1", &one);
     run("2", &two);
-    for f in OUTPUTS.iter().chain(&["wall_card_diameters.csv"]) {
-        if *f != "run.toml" {
+    for f in OUTPUTS {
+        if f != "run.toml" {
             assert_eq!(
                 std::fs::read(one.join(f)).unwrap(),
                 std::fs::read(two.join(f)).unwrap(),
@@ -647,6 +657,38 @@ fn a_scan_becomes_a_stochastic_and_a_deterministic_run_in_two_commands() {
         dir.command().args(&a).run().refused(&needle);
         assert!(!dir.join("never").exists(), "{needle}");
     }
+    // The point particle from a card with rows: its [wall], for particles of any diameter.
+    dir.command()
+        .args([
+            "stochastic",
+            "--case",
+            case.to_str().unwrap(),
+            "--wall-card",
+            card_path,
+            "--wall-card-point",
+            "--particles",
+            "100",
+            "--out",
+            "sm-point",
+        ])
+        .run()
+        .ok();
+    let s = Csv::read(&dir.join("sm-point/summary.csv"));
+    assert_eq!(
+        Some(s.row(0).num("delta_xi_deg")),
+        t["wall"]["delta_xi_deg"].as_float()
+    );
+    let m: toml::Table = std::fs::read_to_string(dir.join("sm-point/run.toml"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert_eq!(m["wall_card"]["row"].as_str(), Some("wall"));
+    assert_eq!(m["wall_card"]["point"].as_str(), Some("--wall-card-point"));
+    dir.command()
+        .args(["stochastic", "--wall-card-point", "--out", "never"])
+        .run()
+        .refused("--wall-card");
+    assert!(!dir.join("never").exists());
     dir.command()
         .args([
             "stochastic",

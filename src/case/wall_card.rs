@@ -8,8 +8,8 @@
 //!   (its centre surface on the scan); no row of that diameter is an error listing the card's.
 //!   The row already is what `[stochastic] effective_for_diameter` would compute, which is
 //!   then switched off.
-//! - `stochastic` without rows, and `deterministic` always: `[wall]`, the wall's own (the
-//!   point particle's). `deterministic` generates the wall and, with `contact = "sphere"`,
+//! - `stochastic` without rows or with `--wall-card-point` ([`CardWall::Point`]), and
+//!   `deterministic` always: `[wall]`, the wall's own (the point particle's). `deterministic` generates the wall and, with `contact = "sphere"`,
 //!   rolls the sphere on it itself: a row would smooth the wall twice.
 //!
 //! The card's `[scan] sq_um` becomes the wall's `rms_height_um`, the absolute scale a sphere
@@ -26,6 +26,16 @@ use roughwall::check::not_a_regular_file;
 use roughwall::Warning;
 use roughwall::{Error, Result};
 use std::path::Path;
+
+/// Which of a card's walls `stochastic` takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CardWall {
+    /// The `[[diameter]]` row of the particles' diameter when the card has rows, else `[wall]`.
+    OfTheParticles,
+    /// `[wall]`, the point particle's (and its table), whatever rows the card has
+    /// (`--wall-card-point`): a case cannot name a point particle by its diameter.
+    Point,
+}
 
 /// Largest card read (bytes): a card with 64 diameters is about 20 kB.
 const MAX_CARD_BYTES: u64 = 1 << 20;
@@ -191,8 +201,9 @@ impl WallCard {
     }
 
     /// Replaces the wall of `case` by the card's for `command` (`stochastic` or
-    /// `deterministic`, the module doc says which deviations each takes).
-    pub fn apply(&self, case: &mut Case, command: &str) -> Result<Applied> {
+    /// `deterministic`, the module doc says which deviations each takes; `taking` chooses
+    /// for `stochastic`).
+    pub fn apply(&self, case: &mut Case, command: &str, taking: CardWall) -> Result<Applied> {
         let what = format!("`--wall-card` {}", self.shown);
         if case.surface.is_some() {
             return Err(Error::Input(format!(
@@ -206,7 +217,8 @@ impl WallCard {
             manifest.insert("scan_file".into(), f.clone().into());
         }
         let mut warnings = Vec::new();
-        let rows_apply = command == "stochastic" && !self.rows.is_empty();
+        let rows_apply =
+            command == "stochastic" && !self.rows.is_empty() && taking == CardWall::OfTheParticles;
         let (dev, taken, table) = if rows_apply {
             let d = case
                 .particles
@@ -219,7 +231,7 @@ impl WallCard {
                 .find(|r| (r.diameter_um - d).abs() <= DIAMETER_MATCH * d.abs())
                 .ok_or_else(|| {
                     Error::Input(format!(
-                        "{what} has no [[diameter]] row for the particles' {} µm (`particles.diameter_um`, default {DEFAULT_DIAMETER_UM}): its rows are for {}; set `particles.diameter_um` to one of them, or run `rebound scan --diameter-um {}` (its [wall], the point particle's, goes into a case's [wall] by hand)",
+                        "{what} has no [[diameter]] row for the particles' {} µm (`particles.diameter_um`, default {DEFAULT_DIAMETER_UM}): its rows are for {}; set `particles.diameter_um` to one of them, run `rebound scan --diameter-um {}`, or take its [wall], the point particle's, with `--wall-card-point`",
                         fmt_num(d),
                         self.diameters(),
                         fmt_num(d)
@@ -255,6 +267,9 @@ impl WallCard {
             )
         } else {
             manifest.insert("row".into(), "wall".into());
+            if taking == CardWall::Point && !self.rows.is_empty() {
+                manifest.insert("point".into(), "--wall-card-point".into());
+            }
             (self.wall, "its [wall]".to_string(), self.wall_table.clone())
         };
         // The wall's own model takes the taken row's table, unless the case names one.
@@ -308,6 +323,7 @@ mod tests {
     use super::*;
 
     const CARD: &str = "notes = []\n[wall]\ndelta_xi_deg = 1.5\ndelta_zeta_deg = 3.0\n\
+        measured_wall_table = \"measured_wall_point.txt\"\n\
         [scan]\nfile = \"w.x3p\"\nsq_um = 0.08\n\
         [[diameter]]\ndiameter_um = 100.0\ndelta_xi_deg = 0.7\ndelta_zeta_deg = 1.4\nnote = \"\"\n\
         [[diameter]]\ndiameter_um = 500.0\ndelta_xi_deg = 0.3\ndelta_zeta_deg = 0.5\nnote = \"too small: x\"\n\
@@ -331,7 +347,9 @@ mod tests {
         let c = c.unwrap();
         // The particles' 500 µm (the default), with effective_for_diameter switched off.
         let mut k = case("[wall]\ndelta_xi_deg = 3.8\ndelta_zeta_deg = 7.5\n[stochastic]\neffective_for_diameter = true\n");
-        let a = c.apply(&mut k, "stochastic").unwrap();
+        let a = c
+            .apply(&mut k, "stochastic", CardWall::OfTheParticles)
+            .unwrap();
         let w = k.wall.clone().unwrap();
         assert_eq!((w.delta_xi_deg, w.delta_zeta_deg), (Some(0.3), Some(0.5)));
         assert_eq!(w.rms_height_um, Some(0.08));
@@ -343,13 +361,40 @@ mod tests {
         // 100 µm; then deterministic: [wall], whatever the diameter; no [wall] to replace, no
         // line.
         let mut k = case("[particles]\ndiameter_um = 100.0000001\n");
-        c.apply(&mut k, "stochastic").unwrap();
+        c.apply(&mut k, "stochastic", CardWall::OfTheParticles)
+            .unwrap();
         assert_eq!(k.wall.unwrap().delta_xi_deg, Some(0.7));
         let mut k = case("[particles]\ndiameter_um = 100.0\n");
-        let a = c.apply(&mut k, "deterministic").unwrap();
+        let a = c
+            .apply(&mut k, "deterministic", CardWall::OfTheParticles)
+            .unwrap();
         assert_eq!(k.wall.unwrap().delta_zeta_deg, Some(3.0));
         assert_eq!(a.manifest["row"].as_str(), Some("wall"));
         assert!(a.warnings.is_empty());
+    }
+
+    #[test]
+    fn the_point_particle_is_taken_from_a_card_with_rows_when_asked_for() {
+        let (_d, c) = card(CARD);
+        let c = c.unwrap();
+        // 250 µm has no row, and the point particle needs none: [wall] and its table.
+        let mut k =
+            case("[particles]\ndiameter_um = 250.0\n[stochastic]\nmodel = \"measured-wall\"\n");
+        let a = c.apply(&mut k, "stochastic", CardWall::Point).unwrap();
+        let w = k.wall.clone().unwrap();
+        assert_eq!((w.delta_xi_deg, w.delta_zeta_deg), (Some(1.5), Some(3.0)));
+        assert_eq!(a.manifest["row"].as_str(), Some("wall"));
+        assert_eq!(a.manifest["point"].as_str(), Some("--wall-card-point"));
+        assert!(k
+            .stochastic
+            .unwrap()
+            .wall_table
+            .unwrap()
+            .ends_with("measured_wall_point.txt"));
+        // The default diameter, which has a row, is not taken either.
+        let mut k = case("");
+        c.apply(&mut k, "stochastic", CardWall::Point).unwrap();
+        assert_eq!(k.wall.unwrap().delta_xi_deg, Some(1.5));
     }
 
     #[test]
@@ -360,12 +405,17 @@ mod tests {
             .apply(
                 &mut case("[particles]\ndiameter_um = 250.0\n"),
                 "stochastic",
+                CardWall::OfTheParticles,
             )
             .unwrap_err();
         assert_eq!(e.exit_code(), 2);
-        assert!(e.to_string().contains("has no [[diameter]] row for the particles' 250 µm (`particles.diameter_um`, default 500): its rows are for 100, 500, 1000000 µm; set `particles.diameter_um` to one of them, or run `rebound scan --diameter-um 250` (its [wall], the point particle's, goes into a case's [wall] by hand)"), "{e}");
+        assert!(e.to_string().contains("has no [[diameter]] row for the particles' 250 µm (`particles.diameter_um`, default 500): its rows are for 100, 500, 1000000 µm; set `particles.diameter_um` to one of them, run `rebound scan --diameter-um 250`, or take its [wall], the point particle's, with `--wall-card-point`"), "{e}");
         let e = c
-            .apply(&mut case("[particles]\ndiameter_um = 1e6\n"), "stochastic")
+            .apply(
+                &mut case("[particles]\ndiameter_um = 1e6\n"),
+                "stochastic",
+                CardWall::OfTheParticles,
+            )
             .unwrap_err();
         assert!(
             e.to_string()
@@ -373,7 +423,7 @@ mod tests {
             "{e}"
         );
         let e = c
-            .apply(&mut case("[surface]\nlength_um = 100.0\nnodes = 64\nrms_height_um = 1.0\ndelta_xi_deg = 2.0\ndelta_zeta_deg = 2.0\n"), "stochastic")
+            .apply(&mut case("[surface]\nlength_um = 100.0\nnodes = 64\nrms_height_um = 1.0\ndelta_xi_deg = 2.0\ndelta_zeta_deg = 2.0\n"), "stochastic", CardWall::OfTheParticles)
             .unwrap_err();
         assert!(e.to_string().contains("the case gives a [surface]"), "{e}");
         let err = |text: &str| card(text).1.unwrap_err().to_string();

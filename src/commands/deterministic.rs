@@ -2,6 +2,7 @@
 //! rough surface for every incident condition of the case
 //! (Radenkovic & Simonin 2021, Sec. 3.1–3.3, 3.5, 4).
 
+use crate::case::wall_card::CardWall;
 use crate::case::{builtin, deterministic::prepare};
 use crate::cli::DeterministicArgs;
 use crate::commands::monte_carlo::{MonteCarlo, Scene};
@@ -16,7 +17,12 @@ use roughwall::Result;
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<Summary> {
     let mut ctx = context(&args.common, "deterministic", builtin::DETERMINISTIC)?;
-    let card = apply_wall_card(&mut ctx, args.wall_card.as_deref(), "deterministic")?;
+    let card = apply_wall_card(
+        &mut ctx,
+        args.wall_card.as_deref(),
+        "deterministic",
+        CardWall::OfTheParticles,
+    )?;
     let o = args.tally.overrides();
     let file = args.surface.as_deref();
     let mut p = prepare(&ctx.case, &o, file)?;

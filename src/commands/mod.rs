@@ -143,13 +143,14 @@ pub fn apply_wall_card(
     ctx: &mut Context,
     card: Option<&Path>,
     command: &str,
+    taking: crate::case::wall_card::CardWall,
 ) -> Result<Option<toml::Table>> {
     let Some(path) = card else {
         return Ok(None);
     };
     let card = crate::case::wall_card::WallCard::read(path)?;
     let mut case = ctx.case.clone();
-    let applied = card.apply(&mut case, command)?;
+    let applied = card.apply(&mut case, command, taking)?;
     ctx.set_case(case, command)?;
     warn(applied.warnings);
     Ok(Some(applied.manifest))

@@ -6,7 +6,7 @@
 //!   along and across it (columns `crate::writers::scan::SUMMARY_HEADER`);
 //! - `wall_card.toml` — `[wall]` ready to paste into a case, `[lay]`, `[scan]`, notes and, with
 //!   diameters (`[scan] diameters_um`, `--diameter-um`), a `[[diameter]]` per sphere;
-//! - `wall_card_diameters.csv` (with diameters) — the point and each sphere: the deviations of
+//! - `wall_card_diameters.csv` (with a lay) — the point and each sphere: the deviations of
 //!   its centre surface and where the scan is too small or too coarse for it
 //!   (`crate::writers::scan_diameters`);
 //! - `height_map.svg` (the levelled scan), `slope_angle_pdfs.svg` (`ξ'`, `ζ'` against the
@@ -270,8 +270,12 @@ pub fn run(args: &ScanArgs) -> Result<Summary> {
         &dir.join("wall_card.toml"),
         wall_card(&src, &c, &notes, &seen, &tables).as_bytes(),
     )?;
-    if !spheres.is_empty() {
+    // The point particle's row always: it is [wall]'s resolution check, which the card's
+    // header points to.
+    if !seen.is_empty() {
         diameters_table(&seen, &c.levelled).write(&dir.join("wall_card_diameters.csv"))?;
+    }
+    if !spheres.is_empty() {
         ctx.manifest
             .set("diameter", manifest_rows(&seen, &c.levelled));
         ctx.manifest

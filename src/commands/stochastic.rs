@@ -2,6 +2,7 @@
 //! (Sec. 3.6, Fig. 13; docs/physics.md §3) for every incident condition of the case, on the
 //! case's wall or a wall card's (`--wall-card`).
 
+use crate::case::wall_card::CardWall;
 use crate::case::{builtin, stochastic::prepare};
 use crate::cli::StochasticArgs;
 use crate::commands::monte_carlo::{MonteCarlo, Scene};
@@ -14,7 +15,15 @@ use roughwall::Result;
 /// Runs the subcommand.
 pub fn run(args: &StochasticArgs) -> Result<Summary> {
     let mut ctx = context(&args.common, "stochastic", builtin::STOCHASTIC)?;
-    let card = apply_wall_card(&mut ctx, args.wall_card.as_deref(), "stochastic")?;
+    let card = apply_wall_card(
+        &mut ctx,
+        args.wall_card.as_deref(),
+        "stochastic",
+        match args.wall_card_point {
+            true => CardWall::Point,
+            false => CardWall::OfTheParticles,
+        },
+    )?;
     let o = args.tally.overrides();
     let mut p = prepare(&ctx.case, &o, ctx.seed)?;
     warn(std::mem::take(&mut p.warnings));

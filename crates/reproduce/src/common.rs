@@ -26,6 +26,24 @@ pub(super) fn yes(b: Option<bool>) -> &'static str {
     }
 }
 
+/// Whether a difference from a reference, the largest KS distance and |bias of mean α⁺|
+/// (degrees) over its directions, exceeds twice a noise floor's (issue 39, part 3: a miss is
+/// only what exceeds the floor), the bias also [`FLOOR_BIAS_MIN_DEG`]: (KS beyond, bias beyond).
+pub(super) fn beyond_twice_floor(
+    ks: f64,
+    bias: f64,
+    floor_ks: f64,
+    floor_bias: f64,
+) -> (bool, bool) {
+    (
+        ks > 2.0 * floor_ks,
+        bias > (2.0 * floor_bias).max(FLOOR_BIAS_MIN_DEG),
+    )
+}
+
+/// The least bias (degrees) counted as a miss however small the floor: issue 39's goal.
+pub(super) const FLOOR_BIAS_MIN_DEG: f64 = 0.05;
+
 /// Says that a section's input `path` is missing and which script writes it (`what`).
 pub(super) fn missing(md: &mut String, what: &str, path: &Path) {
     let _ = writeln!(md, "*Not run: `{}` is missing ({what}).*\n", path.display());

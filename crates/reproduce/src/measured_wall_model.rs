@@ -5,10 +5,10 @@
 //! (the same reference with another seed). Writes `measured-wall-model/models.csv`; every
 //! number is read from the runs' `compare`, `scan` and `run.toml` outputs.
 
-use crate::common::missing;
+use crate::common::{beyond_twice_floor, missing};
 use crate::paths::{
-    COMPARE, DETERMINISTIC, MEASURED_WALL_MODEL, MODEL_CARD, MODEL_FLOOR, MODEL_GAUSSIAN,
-    MODEL_MODELS, MODEL_REFERENCE, MODEL_SCANS,
+    COMPARE, DETERMINISTIC, MEASURED_WALL_MODEL, MODEL_CARD, MODEL_CONTROL, MODEL_FLOOR,
+    MODEL_GAUSSIAN, MODEL_MODELS, MODEL_REFERENCE, MODEL_SCANS, STUDY_CONTROL_SURFACES,
 };
 use outputs::csv::{num, run_toml, Rows};
 use outputs::CsvTable;
@@ -60,6 +60,34 @@ fn worst(dir: &Path) -> Result<Option<Worst>> {
         }
     }
     Ok(Some(w))
+}
+
+/// The verdict on the Gaussian assumption for one scan and particle: `w` (Gaussian walls
+/// against the scan in place) set against `c` (one Gaussian wall of the reference's block
+/// against an ensemble of such walls: what one realisation that size differs by).
+fn gaussian_verdict(w: &Worst, c: &Worst) -> String {
+    let ratio = |a: f64, b: f64| a / b.max(f64::MIN_POSITIVE);
+    let (rk, rb) = (ratio(w.ks, c.ks), ratio(w.bias, c.bias));
+    let head = format!(
+        "Gaussian walls differ from the scan by a KS distance up to {:.3} and {:+.3}° in mean α⁺; \
+         one Gaussian wall of the reference's block differs from {STUDY_CONTROL_SURFACES} such \
+         walls by up to {:.3} and {:.3}° (the floor of one realisation that size)",
+        w.ks, w.signed, c.ks, c.bias
+    );
+    match beyond_twice_floor(w.ks, w.bias, c.ks, c.bias) {
+        (true, true) => format!(
+            "{head}: **the Gaussian assumption misses** this wall beyond twice that floor (KS {rk:.1}×, bias {rb:.1}× the floor)"
+        ),
+        (false, true) => format!(
+            "{head}: within twice that floor in KS ({rk:.1}×) but **beyond it in mean α⁺** ({rb:.1}×)"
+        ),
+        (true, false) => format!(
+            "{head}: **beyond twice that floor in KS** ({rk:.1}×), within it in mean α⁺ ({rb:.1}×)"
+        ),
+        (false, false) => format!(
+            "{head}: within twice that floor (KS {rk:.1}×, bias {rb:.1}×): the scan cannot tell its wall from a Gaussian one for this particle"
+        ),
+    }
 }
 
 /// The largest share of a deterministic run's histories that left the scan.
@@ -126,6 +154,7 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
     ]);
     let mut rows = String::new();
     let mut notes = String::new();
+    let mut verdicts = String::new();
     let mut figures = String::new();
     for entry in MODEL_SCANS {
         let (scan, ds) = entry.split_once(':').unwrap_or((entry, "0"));
@@ -164,6 +193,30 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
                 fmt_num(bound),
                 String::new(),
             ]);
+            // The Gaussian walls' own floor: one Gaussian wall of the reference's block against
+            // an ensemble of such walls (not against the scan).
+            let control = worst(&dir.join(MODEL_CONTROL).join(COMPARE))?;
+            if let Some(c) = control {
+                let _ = writeln!(
+                    rows,
+                    "| {scan} | {particle} | the Gaussian walls' floor: one Gaussian wall of the reference's block against {STUDY_CONTROL_SURFACES} such walls (not against the scan) | {:.4} | {:+.3} at ({}°, {}°) | – | – |",
+                    c.ks,
+                    c.signed,
+                    fmt_num(c.at.0),
+                    fmt_num(c.at.1),
+                );
+                table.push(vec![
+                    scan.into(),
+                    d.into(),
+                    MODEL_CONTROL.into(),
+                    fmt_num(c.ks),
+                    fmt_num(c.bias),
+                    fmt_num(floor.ks),
+                    fmt_num(floor.bias),
+                    fmt_num(bound),
+                    String::new(),
+                ]);
+            }
             let against = std::iter::once(MODEL_GAUSSIAN).chain(MODEL_MODELS);
             for m in against {
                 let Some(w) = worst(&dir.join(m).join(COMPARE))? else {
@@ -184,6 +237,13 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
                     w.reference_se,
                     if meets { "yes" } else { "**no**" }
                 );
+                if let (MODEL_GAUSSIAN, Some(c)) = (m, control) {
+                    let _ = writeln!(
+                        verdicts,
+                        "- {scan}, {particle}: {}.",
+                        gaussian_verdict(&w, &c)
+                    );
+                }
                 table.push(vec![
                     scan.into(),
                     d.into(),
@@ -271,9 +331,14 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
          error of mean α⁺ where the bias is worst: the scan's 16 sub-patches are its clusters, so \
          it holds the spread between the scan's parts, what the reference is uncertain by as \
          the law of the wall rather than of the part it samples (it does not enter the goal, \
-         which is set against the reference itself).\n\n\
+         which is set against the reference itself). The Gaussian walls' verdict has a floor of \
+         its own, because the scan is one realisation: one Gaussian wall of the size and pixel \
+         of the block the reference bounced on, with the particle's card deviations and the \
+         correlation area the card measured for it (the block holds as many correlation areas \
+         as the scan's part does; rms height from Eq. 15), against {STUDY_CONTROL_SURFACES} such \
+         walls, through the same runs; a miss is what exceeds twice that floor.\n\n\
          | scan | particle | against the reference | max KS α⁺ | worst bias mean α⁺ (°) | the reference's SE there (°) | meets the goal |\n\
-         |---|---|---|---|---|---|---|\n{rows}\n{notes}\nFigures:\n\n{figures}\n"
+         |---|---|---|---|---|---|---|\n{rows}\n{notes}\nThe Gaussian assumption against its own floor:\n\n{verdicts}\nFigures:\n\n{figures}\n"
     );
     Ok(())
 }

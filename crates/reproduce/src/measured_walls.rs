@@ -4,7 +4,7 @@
 //! `measured-walls/nominal.csv` and `measured-walls/study.csv`; every number is read from
 //! the runs' `compare`, `scan` and `run.toml` outputs.
 
-use crate::common::missing;
+use crate::common::{beyond_twice_floor, missing};
 use crate::paths::{
     COMPARE, DETERMINISTIC, MEASURED_WALLS, NOMINAL, NOMINAL_EQ15, NOMINAL_WALLS, STUDY,
     STUDY_CARD, STUDY_CONTROL, STUDY_CONTROL_SURFACES, STUDY_GAUSSIAN, STUDY_ON_SCAN,
@@ -76,7 +76,7 @@ fn surface_choice(dir: &Path, key: &str) -> Option<f64> {
 }
 
 /// The verdict on the Gaussian assumption for a scan: `w` (Gaussian walls against the scan in
-/// place) set against `floor` (one Gaussian wall of the scan's size and pixel against an
+/// place) set against `floor` (one Gaussian wall of the reference's block against an
 /// ensemble of such walls: what one realisation differs by). A miss is what exceeds twice the
 /// floor, in KS or in bias (and the goal's 0.05°).
 fn gaussian_verdict(w: &Worst, floor: Option<&Worst>) -> String {
@@ -89,11 +89,11 @@ fn gaussian_verdict(w: &Worst, floor: Option<&Worst>) -> String {
         };
     };
     let floor_text = format!(
-        "one Gaussian wall of the scan's size and pixel differs from {STUDY_CONTROL_SURFACES} such walls by a KS distance up to {:.3} and {:.3}° in mean α⁺ (the noise floor of a single realisation that size)",
+        "one Gaussian wall of the reference's block differs from {STUDY_CONTROL_SURFACES} such walls by a KS distance up to {:.3} and {:.3}° in mean α⁺ (the noise floor of a single realisation that size)",
         f.ks_alpha, f.bias_alpha
     );
-    let ks_beyond = w.ks_alpha > 2.0 * f.ks_alpha;
-    let bias_beyond = w.bias_alpha > (2.0 * f.bias_alpha).max(GOAL_BIAS_DEG);
+    let (ks_beyond, bias_beyond) =
+        beyond_twice_floor(w.ks_alpha, w.bias_alpha, f.ks_alpha, f.bias_alpha);
     match (ks_beyond, bias_beyond) {
         (false, false) => format!(
             "{floor_text}: within twice that floor, the scan cannot tell its wall from a Gaussian one"
@@ -333,12 +333,12 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
                 w.z_at_bias
             );
         }
-        // The noise floor: one Gaussian wall of the scan's size and pixel against the ensemble.
+        // The noise floor: one Gaussian wall of the reference's block against the ensemble.
         let floor = worst(&dir.join(STUDY_CONTROL).join(COMPARE))?;
         if let Some(f) = floor {
             let _ = writeln!(
                 rows,
-                "| {s} | the floor: one Gaussian wall of the scan's size and pixel, the card's (Δξ, Δζ), against {STUDY_CONTROL_SURFACES} such walls (not against the scan) | {:.4} | {:.4} | {:+.3} at ({}°, {}°) | {:.1} |",
+                "| {s} | the floor: one Gaussian wall of the reference's block, the card's (Δξ, Δζ) and correlation area, against {STUDY_CONTROL_SURFACES} such walls (not against the scan) | {:.4} | {:.4} | {:+.3} at ({}°, {}°) | {:.1} |",
                 f.ks_alpha,
                 f.ks_dbeta,
                 f.signed_bias_alpha,
@@ -452,8 +452,10 @@ fn study(root: &Path, md: &mut String) -> Result<()> {
          Against `deterministic` on the scan in place (b − a = the row's run − the scan's; \
          |z| uses each run's standard errors, those of the scan in place over its 16 \
          sub-patches as clusters, which include the spread between the scan's parts; the floor \
-         row is one Gaussian wall of the scan's size and pixel against an ensemble of such \
-         walls, what a single realisation that size differs by):\n\n\
+         row is one Gaussian wall of the size and pixel of the block the reference bounced on, \
+         with the card's deviations and the correlation area the card measured (the block then \
+         holds as many correlation areas as the scan's; rms height from Eq. 15), against an \
+         ensemble of such walls: what a single realisation that size differs by):\n\n\
          | scan | against | max KS α⁺ | max KS β⁺−β⁻ | worst bias mean α⁺ (°) | max \\|z\\| |\n\
          |---|---|---|---|---|---|\n{rows}\n{verdicts}\n{figures}\n"
     );

@@ -188,8 +188,9 @@ pub const STUDY_ON_SCAN: &str = "on-scan";
 pub const STUDY_ON_SCAN_MIRRORED: &str = "on-scan-mirrored";
 /// Measured walls: `deterministic` on Gaussian (Garcia–Stoll) walls of given deviations.
 pub const STUDY_GAUSSIAN: &str = "gaussian";
-/// Measured walls: the noise floor of a "miss" (issue 39, part 3): one Gaussian wall with
-/// the scan's size, pixel and card deviations ([`STUDY_CONTROL_ONE`]) against an ensemble of
+/// Measured walls: the noise floor of a "miss" (issue 39, part 3): one Gaussian wall of the
+/// reference's block with the card's deviations and correlation area (`gaussian_control` in
+/// scripts/common.sh; [`STUDY_CONTROL_ONE`]) against an ensemble of
 /// [`STUDY_CONTROL_SURFACES`] such walls ([`STUDY_CONTROL_ENSEMBLE`]), and their comparison.
 pub const STUDY_CONTROL: &str = "control";
 /// Measured walls: the control's one wall.
@@ -230,6 +231,12 @@ pub const MODEL_MODELS: [&str; 3] = ["measured-wall", "radenkovic-simonin-2021",
 /// The wall's own model: `deterministic` on Gaussian walls with the particle's card deviations
 /// (16 surfaces, a point particle), against the reference.
 pub const MODEL_GAUSSIAN: &str = "gaussian";
+/// The wall's own model: the noise floor of the Gaussian walls' verdict (issue 39, part 3):
+/// one Gaussian wall of the size and pixel of the block the reference bounced on, with the
+/// particle's card deviations and correlation area (`gaussian_control` in scripts/common.sh;
+/// [`STUDY_CONTROL_ONE`]), against an ensemble of
+/// [`STUDY_CONTROL_SURFACES`] such walls ([`STUDY_CONTROL_ENSEMBLE`]), and their comparison.
+pub const MODEL_CONTROL: &str = "gaussian-control";
 
 /// Finite size: the sphere diameters (µm), one run directory each.
 pub const FINITE_SIZE_DIAMETERS_UM: [&str; 4] = ["50", "100", "250", "500"];
@@ -250,7 +257,7 @@ pub const FINITE_SIZE_LAW: &str = "law";
 
 /// The names as shell variables, in the order of `scripts/paths.sh`: (variable, value; a list
 /// is one space-separated word list).
-pub const SHELL: [(&str, &[&str]); 76] = [
+pub const SHELL: [(&str, &[&str]); 77] = [
     ("REPRODUCIBILITY", &[REPRODUCIBILITY]),
     ("RADENKOVIC2021", &[RADENKOVIC2021]),
     ("HU2021", &[HU2021]),
@@ -327,6 +334,7 @@ pub const SHELL: [(&str, &[&str]); 76] = [
     ("MODEL_FLOOR", &[MODEL_FLOOR]),
     ("MODEL_MODELS", &MODEL_MODELS),
     ("MODEL_GAUSSIAN", &[MODEL_GAUSSIAN]),
+    ("MODEL_CONTROL", &[MODEL_CONTROL]),
 ];
 
 /// The text of `scripts/paths.sh`: one `P_<NAME>=<value>` line per entry of [`SHELL`].

@@ -77,7 +77,22 @@ variant_case() {
   ' "$(if [ -f "configs/$1" ]; then echo "configs/$1"; else echo "$1"; fi)"
 }
 
-# gaussian_control CARD_DIR REF D XI ZE DIRECTIONS NAME CASES OUT: the noise floor of a
+# bin_width_for XI ZE: the PDFs' bin width (degrees) for a wall of deviations XI, ZE: a fifth
+# of the smaller, down to 1, 2 or 5 × 10^k, within [0.01, 1]. The rebound angle's spread is
+# about twice the deviation, so a bin is at most a tenth of it and a KS distance between two
+# runs' PDFs is that of their laws; with the default 1° bins a smooth wall's α⁺ (spread
+# 0.14–0.45° on plu-1 and metropro-1) falls in one or two bins, and the KS distance says only
+# how its mass splits across a bin edge.
+bin_width_for() {
+  awk -v xi="$1" -v ze="$2" 'BEGIN {
+    w = (xi < ze ? xi : ze) / 5; if (w >= 1) { print 1; exit }
+    e = 10 ^ int(log(w) / log(10) - (w < 1 ? 1 : 0)); m = w / e
+    n = (m >= 5 ? 5 : (m >= 2 ? 2 : 1)) * e
+    if (n < 0.01) n = 0.01
+    printf "%g\n", n }'
+}
+
+# gaussian_control CARD_DIR REF D XI ZE DIRECTIONS NAME CASES OUT [BIN]: the noise floor of a
 # verdict on the Gaussian assumption for a scan (issue 39, part 3). The scan is one
 # realisation, so even a Gaussian wall would differ from a Gaussian ensemble: one Gaussian
 # wall (seed 2022) of the size and pixel of the block the in-place reference REF bounced on
@@ -86,9 +101,10 @@ variant_case() {
 # CARD_DIR: its part of the scan over its correlation areas, so that the block holds as many
 # as the scan's; rms height from Eq. 15), against an ensemble of $P_STUDY_CONTROL_SURFACES such
 # walls (seed 2021; fewer in quick mode), at DIRECTIONS' incident directions, and their
-# comparison. Cases go to CASES/NAME-{one,ensemble}.toml, runs under OUT.
+# comparison, with PDFs in bins of BIN degrees when given. Cases go to
+# CASES/NAME-{one,ensemble}.toml, runs under OUT.
 gaussian_control() {
-  local card_dir=$1 ref=$2 d=$3 xi=$4 ze=$5 directions=$6 name=$7 cases=$8 out=$9
+  local card_dir=$1 ref=$2 d=$3 xi=$4 ze=$5 directions=$6 name=$7 cases=$8 out=$9 bin=${10:-}
   local size area h surfaces
   surfaces=$(particles "$P_STUDY_CONTROL_SURFACES" 4)
   size=$(awk -F' = ' '
@@ -110,7 +126,8 @@ gaussian_control() {
     cc="$cases/$name-$tag.toml"
     { sed -e "s/^name = .*/name = \"$name-$tag\"/" -e "s/^seed = .*/seed = $seed/" "$directions"
       printf '\n[surface]\nlength_um = %s\nnodes = %s\nrms_height_um = %s\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n\n[deterministic]\nsurfaces = %s\n' \
-        "${size% *}" "${size#* }" "$h" "$xi" "$ze" "$n_surf"; } > "$cc"
+        "${size% *}" "${size#* }" "$h" "$xi" "$ze" "$n_surf"
+      [ -z "$bin" ] || printf '\n[output]\nbin_width_deg = %s\n' "$bin"; } > "$cc"
     grep -q "^surfaces = $n_surf\$" "$cc" || { echo "gaussian_control: could not write $cc" >&2; exit 1; }
     run deterministic --case "$cc" --particles "$N" --out "$out/$tag/$P_DETERMINISTIC"
   done

@@ -7,7 +7,9 @@
 # paper's model and the calibrated model, the last two with the card's deviations for that
 # particle, and `deterministic` on 16 Gaussian walls with those deviations, run at incident
 # directions between the table's grid points (configs/scans/own-model.toml). Every run is
-# compared with the first reference. The Gaussian walls' verdict has a noise floor of its own:
+# compared with the first reference, every run of a particle with PDFs in the same bins, a
+# tenth of its rebound angle's spread or finer (bin_width_for, common.sh), so that the KS
+# distances are those of the laws. The Gaussian walls' verdict has a noise floor of its own:
 # one Gaussian wall of the reference's block size against $P_STUDY_CONTROL_SURFACES such walls. Writes
 # $REBOUND_RESULTS/measured-wall-model/; `rebound report` turns it into a REPORT.md section.
 # REBOUND_MODEL_SCANS (in place of $P_MODEL_SCANS) and REBOUND_MODEL_HISTORIES (histories per
@@ -41,7 +43,7 @@ card_value() {
 own_case() {
   local d=$1 xi=$2 ze=$3 name=$4 st=${5:-}
   sed "s/^name = .*/name = \"$name\"/" "$DIRECTIONS"
-  printf '\n[wall]\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n' "$xi" "$ze"
+  printf '\n[wall]\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n\n[output]\nbin_width_deg = %s\n' "$xi" "$ze" "$BIN"
   if [ -n "$st" ]; then
     printf '\n[stochastic]\n%b' "$st"
   else
@@ -73,6 +75,8 @@ for entry in ${REBOUND_MODEL_SCANS:-$P_MODEL_SCANS}; do
     ze=$(card_value "$card" "$d" delta_zeta_deg)
     table=$(card_value "$card" "$d" measured_wall_table)
     [ -n "$xi" ] && [ -n "$ze" ] || { echo "measured-wall-model.sh: no deviations for $d µm in $card" >&2; exit 1; }
+    # Every run of this particle bins its PDFs alike, finely enough for its spread (common.sh).
+    BIN=$(bin_width_for "$xi" "$ze")
     particles_line=""
     [ "$d" = 0 ] || particles_line="diameter_um = $d"
     with_d() { if [ -n "$particles_line" ]; then sed "/^\[particles\]/a $particles_line"; else cat; fi; }
@@ -88,13 +92,13 @@ for entry in ${REBOUND_MODEL_SCANS:-$P_MODEL_SCANS}; do
     # deviations are those the particle sees), against the reference.
     cg="$M/cases/$s-d$d-$P_MODEL_GAUSSIAN.toml"
     { sed "s/^name = .*/name = \"$s-d$d-$P_MODEL_GAUSSIAN\"/" "$DIRECTIONS"
-      printf '\n[wall]\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n\n[deterministic]\nsurfaces = %s\n' \
-        "$xi" "$ze" "$GAUSS_SURFACES"; } > "$cg"
+      printf '\n[wall]\ndelta_xi_deg = %s\ndelta_zeta_deg = %s\n\n[output]\nbin_width_deg = %s\n\n[deterministic]\nsurfaces = %s\n' \
+        "$xi" "$ze" "$BIN" "$GAUSS_SURFACES"; } > "$cg"
     run deterministic --case "$cg" --particles "$N" --out "$p/$P_MODEL_GAUSSIAN/$P_DETERMINISTIC"
     run compare --a "$ref" --b "$p/$P_MODEL_GAUSSIAN/$P_DETERMINISTIC" --out "$p/$P_MODEL_GAUSSIAN/$P_COMPARE"
     # The noise floor of that verdict (part 3; common.sh).
     gaussian_control "$card_dir" "$ref" "$d" "$xi" "$ze" "$DIRECTIONS" "$s-d$d-$P_MODEL_CONTROL" \
-      "$M/cases" "$p/$P_MODEL_CONTROL"
+      "$M/cases" "$p/$P_MODEL_CONTROL" "$BIN"
     for v in $P_MODEL_MODELS; do
       st="model = \"$v\"\n"
       if [ "$v" = measured-wall ]; then

@@ -1039,6 +1039,15 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal_or_comes_close() {
             refined_rows(&out)
         );
         let card_file = out.join("wall_card.toml");
+        // plu-1's heights are whole 3.906 nm steps, 0.98 of its smaller deviation over the
+        // pixel: its card says so; metropro-1's steps (0.009 nm) and opd-1's heights do not show.
+        let quantized = card(&out)["notes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|n| n.as_str())
+            .any(|n| n.starts_with("heights in whole steps of 3.906 nm (21 % of Sq)"));
+        assert_eq!(quantized, scan == "plu-1.plu", "{tag}");
         let particles = if diameter > 0.0 {
             format!("[particles]\ncount = 200000\ndiameter_um = {diameter}\n")
         } else {

@@ -33,6 +33,7 @@ pub(crate) mod levelling;
 pub(crate) mod notes;
 pub(crate) mod parameters;
 pub(crate) mod periodic;
+pub(crate) mod quantization;
 pub(crate) mod resolution;
 
 pub use centre_surface::{
@@ -46,6 +47,7 @@ pub use levelling::{level, MAX_DEGREE};
 pub use notes::{criteria, labelled, missing_fraction, notes, reach_um, spread, ShapeEffect};
 pub use parameters::{area_parameters, AreaParameters};
 pub use periodic::{mirrored_wall, MirroredWall};
+pub use quantization::height_step;
 pub use resolution::{decimated, seen_by, Resolution, SeenBy, MAX_RESOLUTION_CHANGE};
 
 use crate::error::{Error, Result};
@@ -199,6 +201,9 @@ pub struct Characterisation {
     pub lay_uncertainty: Option<lay_uncertainty::LayUncertainty>,
     /// Autocorrelation along and across the lay (along the scan's `x` without a lay).
     pub correlation: correlation::Correlation,
+    /// The step (m) the scan's heights were written in, as read ([`height_step`]); `None`
+    /// when they are not in whole steps of one size.
+    pub height_step_m: Option<f64>,
 }
 
 /// Bytes [`characterise`] needs beside the scan's own heights, which it levels in place: the
@@ -221,6 +226,8 @@ pub fn characterise(f: ScanField, degree: u32) -> Result<Characterisation> {
         characterisation_bytes(f.nx),
         "levelling it and finding its lay",
     )?;
+    // Before levelling, which turns whole steps into a plane's fractions.
+    let height_step_m = quantization::height_step(&f);
     let mut levelled = f;
     levelling::level_in_place(&mut levelled, degree)?;
     let parameters = parameters::area_parameters(&levelled);
@@ -234,6 +241,7 @@ pub fn characterise(f: ScanField, degree: u32) -> Result<Characterisation> {
         lay,
         lay_uncertainty,
         correlation,
+        height_step_m,
     })
 }
 

@@ -11,6 +11,10 @@ use super::{Characterisation, ScanField};
 use crate::format::fmt_num;
 use crate::wall::{LOW_ROUGHNESS_LIMIT_DEG, MAX_DEVIATION_DEG};
 
+/// A slope quantum (the height step over the pixel) at least this share of the smaller
+/// deviation is noted: the rebound angles then form a comb (plu-1: 0.98).
+pub const MAX_SLOPE_QUANTUM_SHARE: f64 = 0.25;
+
 /// Below this spread (rad) an angle is constant: its shape (skewness, kurtosis, correlation)
 /// is undefined, as the library's `lay` takes it.
 pub const NO_SPREAD_RAD: f64 = 1e-12;
@@ -75,6 +79,9 @@ pub fn notes(c: &Characterisation, cost: Option<&ShapeEffect>) -> Vec<String> {
                         fmt_num(deg)
                     ));
                 }
+            }
+            if let Some(note) = quantized_note(c, l) {
+                out.push(note);
             }
             let mut shapes = Vec::new();
             for (k, (angle, where_)) in [("ξ'", "along the lay"), ("ζ'", "across the lay")]
@@ -146,6 +153,27 @@ pub fn notes(c: &Characterisation, cost: Option<&ShapeEffect>) -> Vec<String> {
         ));
     }
     out
+}
+
+/// The note on heights written in whole steps coarse enough to show in the slopes
+/// ([`super::height_step`], [`MAX_SLOPE_QUANTUM_SHARE`]).
+fn quantized_note(c: &Characterisation, l: &Lay) -> Option<String> {
+    let step = c.height_step_m?;
+    let f = &c.levelled;
+    // The least slope step a facet can have, along the longer pixel side.
+    let quantum = (step / f.dx.max(f.dy)).atan();
+    let smaller = l.delta_xi.min(l.delta_zeta);
+    if !(smaller > 0.0 && quantum >= MAX_SLOPE_QUANTUM_SHARE * smaller) {
+        return None;
+    }
+    Some(format!(
+        "heights in whole steps of {} nm ({} % of Sq), the instrument's resolution: facet slopes take values {}° apart, {} of the smaller deviation ({}°), so rebound angles off the scan form a comb of spikes the wall itself would not show; the in-place reference and the measured-wall tables inherit it, and the measured-wall model, whose quantile functions smear the spikes, had KS 0.012–0.015 against its goal of 0.01 on such a scan (plu-1, REPORT.md \"The wall's own model against the scan itself\") and met it once the heights were dithered by half a step (docs/models.md): measure with a finer height resolution where the instrument has one",
+        fmt_num(significant(step * 1e9, 4)),
+        fmt_num(significant(100.0 * step / c.parameters.sq_m, 2)),
+        fmt_num(significant(quantum.to_degrees(), 3)),
+        fmt_num(significant(quantum / smaller, 2)),
+        fmt_num(significant(smaller.to_degrees(), 3)),
+    ))
 }
 
 /// Where the scan is too small for the particle of `s`, or its deviations resolution-limited

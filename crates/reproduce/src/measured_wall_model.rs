@@ -34,6 +34,59 @@ struct Worst {
     reference_se: f64,
 }
 
+/// One scan and particle of the table: what every row of it shares.
+struct Row<'a> {
+    scan: &'a str,
+    particle: &'a str,
+    d: &'a str,
+    floor: Worst,
+    bound: f64,
+}
+
+impl Row<'_> {
+    /// A comparison's line of the markdown table (`se`: the reference's standard error there,
+    /// `meets`: the goal's verdict, both "–" when absent) and its row of `models.csv`.
+    #[allow(clippy::too_many_arguments)]
+    fn record(
+        &self,
+        rows: &mut String,
+        table: &mut CsvTable,
+        model: &str,
+        label: &str,
+        w: &Worst,
+        se: Option<f64>,
+        meets: Option<bool>,
+    ) {
+        let _ = writeln!(
+            rows,
+            "| {} | {} | {label} | {:.4} | {:+.3} at ({}°, {}°) | {} | {} |",
+            self.scan,
+            self.particle,
+            w.ks,
+            w.signed,
+            fmt_num(w.at.0),
+            fmt_num(w.at.1),
+            se.map_or("–".to_string(), |x| format!("{x:.3}")),
+            match meets {
+                Some(true) => "yes",
+                Some(false) => "**no**",
+                None => "–",
+            }
+        );
+        table.push(vec![
+            self.scan.into(),
+            self.d.into(),
+            model.into(),
+            fmt_num(w.ks),
+            fmt_num(w.bias),
+            fmt_num(self.floor.ks),
+            fmt_num(self.floor.bias),
+            fmt_num(self.bound),
+            meets.map_or(String::new(), |m| m.to_string()),
+        ]);
+    }
+}
+
 fn worst(dir: &Path) -> Result<Option<Worst>> {
     let Some(c) = Rows::read(&dir.join("comparison.csv"))? else {
         return Ok(None);
@@ -173,49 +226,28 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
             // The bias bound: 0.05°, or twice the floor's where that is larger.
             let bound = GOAL_BIAS_DEG.max(2.0 * floor.bias);
             let left = left_share(&dir.join(MODEL_REFERENCE).join(DETERMINISTIC));
-            let _ = writeln!(
-                rows,
-                "| {scan} | {particle} | noise floor (the reference, another seed) | {:.4} | {:+.3} at ({}°, {}°) | {:.3} | – |",
-                floor.ks,
-                floor.signed,
-                fmt_num(floor.at.0),
-                fmt_num(floor.at.1),
-                floor.reference_se
+            let row = Row {
+                scan,
+                particle: &particle,
+                d,
+                floor,
+                bound,
+            };
+            row.record(
+                &mut rows,
+                &mut table,
+                "floor",
+                "noise floor (the reference, another seed)",
+                &floor,
+                Some(floor.reference_se),
+                None,
             );
-            table.push(vec![
-                scan.into(),
-                d.into(),
-                "floor".into(),
-                fmt_num(floor.ks),
-                fmt_num(floor.bias),
-                fmt_num(floor.ks),
-                fmt_num(floor.bias),
-                fmt_num(bound),
-                String::new(),
-            ]);
             // The Gaussian walls' own floor: one Gaussian wall of the reference's block against
             // an ensemble of such walls (not against the scan).
             let control = worst(&dir.join(MODEL_CONTROL).join(COMPARE))?;
-            if let Some(c) = control {
-                let _ = writeln!(
-                    rows,
-                    "| {scan} | {particle} | the Gaussian walls' floor: one Gaussian wall of the reference's block against {STUDY_CONTROL_SURFACES} such walls (not against the scan) | {:.4} | {:+.3} at ({}°, {}°) | – | – |",
-                    c.ks,
-                    c.signed,
-                    fmt_num(c.at.0),
-                    fmt_num(c.at.1),
-                );
-                table.push(vec![
-                    scan.into(),
-                    d.into(),
-                    MODEL_CONTROL.into(),
-                    fmt_num(c.ks),
-                    fmt_num(c.bias),
-                    fmt_num(floor.ks),
-                    fmt_num(floor.bias),
-                    fmt_num(bound),
-                    String::new(),
-                ]);
+            if let Some(c) = &control {
+                let label = format!("the Gaussian walls' floor: one Gaussian wall of the reference's block against {STUDY_CONTROL_SURFACES} such walls (not against the scan)");
+                row.record(&mut rows, &mut table, MODEL_CONTROL, &label, c, None, None);
             }
             let against = std::iter::once(MODEL_GAUSSIAN).chain(MODEL_MODELS);
             for m in against {
@@ -227,34 +259,22 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
                     other => other,
                 };
                 let meets = w.ks <= GOAL_KS && w.bias <= bound;
-                let _ = writeln!(
-                    rows,
-                    "| {scan} | {particle} | {label} | {:.4} | {:+.3} at ({}°, {}°) | {:.3} | {} |",
-                    w.ks,
-                    w.signed,
-                    fmt_num(w.at.0),
-                    fmt_num(w.at.1),
-                    w.reference_se,
-                    if meets { "yes" } else { "**no**" }
+                row.record(
+                    &mut rows,
+                    &mut table,
+                    m,
+                    label,
+                    &w,
+                    Some(w.reference_se),
+                    Some(meets),
                 );
-                if let (MODEL_GAUSSIAN, Some(c)) = (m, control) {
+                if let (MODEL_GAUSSIAN, Some(c)) = (m, &control) {
                     let _ = writeln!(
                         verdicts,
                         "- {scan}, {particle}: {}.",
-                        gaussian_verdict(&w, &c)
+                        gaussian_verdict(&w, c)
                     );
                 }
-                table.push(vec![
-                    scan.into(),
-                    d.into(),
-                    m.into(),
-                    fmt_num(w.ks),
-                    fmt_num(w.bias),
-                    fmt_num(floor.ks),
-                    fmt_num(floor.bias),
-                    fmt_num(bound),
-                    meets.to_string(),
-                ]);
             }
             // α⁺ against the reference, the wall's own model and the Gaussian walls.
             let links: Vec<String> = [

@@ -101,7 +101,8 @@ bin_width_for() {
 # CARD_DIR: its part of the scan over its correlation areas, so that the block holds as many
 # as the scan's; rms height from Eq. 15), against an ensemble of $P_STUDY_CONTROL_SURFACES such
 # walls (seed 2021; fewer in quick mode), at DIRECTIONS' incident directions, and their
-# comparison, with PDFs in bins of BIN degrees when given. Cases go to
+# comparison, $N particles a direction (the calling study's), with PDFs in bins of BIN
+# degrees when given. Cases go to
 # CASES/NAME-{one,ensemble}.toml, runs under OUT.
 gaussian_control() {
   local card_dir=$1 ref=$2 d=$3 xi=$4 ze=$5 directions=$6 name=$7 cases=$8 out=$9 bin=${10:-}

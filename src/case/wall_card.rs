@@ -9,8 +9,9 @@
 //!   The row already is what `[stochastic] effective_for_diameter` would compute, which is
 //!   then switched off.
 //! - `stochastic` without rows or with `--wall-card-point` ([`CardWall::Point`]), and
-//!   `deterministic` always: `[wall]`, the wall's own (the point particle's). `deterministic` generates the wall and, with `contact = "sphere"`,
-//!   rolls the sphere on it itself: a row would smooth the wall twice.
+//!   `deterministic` always: `[wall]`, the wall's own (the point particle's). `deterministic`
+//!   generates the wall and, with `contact = "sphere"`, rolls the sphere on it itself: a row
+//!   would smooth the wall twice.
 //!
 //! The card's `[scan] sq_um` becomes the wall's `rms_height_um`, the absolute scale a sphere
 //! on the automatic surface needs (`[deterministic] rms_height_um` still wins).

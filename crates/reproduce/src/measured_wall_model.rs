@@ -5,7 +5,7 @@
 //! (the same reference with another seed). Writes `measured-wall-model/models.csv`; every
 //! number is read from the runs' `compare`, `scan` and `run.toml` outputs.
 
-use crate::common::{beyond_twice_floor, missing};
+use crate::common::{against_twice_floor, missing, GOAL_BIAS_DEG};
 use crate::paths::{
     COMPARE, DETERMINISTIC, MEASURED_WALL_MODEL, MODEL_CARD, MODEL_CONTROL, MODEL_FLOOR,
     MODEL_GAUSSIAN, MODEL_MODELS, MODEL_REFERENCE, MODEL_SCANS, STUDY_CONTROL_SURFACES,
@@ -19,8 +19,6 @@ use std::path::Path;
 
 /// The goal (issue 39, part 4): max KS of α⁺ over the directions.
 const GOAL_KS: f64 = 0.01;
-/// The goal: |bias of mean α⁺| (degrees), or twice the noise floor's where that is larger.
-const GOAL_BIAS_DEG: f64 = 0.05;
 
 /// The worst of one comparison of α⁺ over its directions: KS, |bias| (deg), the signed bias,
 /// where, and there the reference's standard error of mean α⁺ (deg; on a scan its 16
@@ -119,28 +117,20 @@ fn worst(dir: &Path) -> Result<Option<Worst>> {
 /// against the scan in place) set against `c` (one Gaussian wall of the reference's block
 /// against an ensemble of such walls: what one realisation that size differs by).
 fn gaussian_verdict(w: &Worst, c: &Worst) -> String {
-    let ratio = |a: f64, b: f64| a / b.max(f64::MIN_POSITIVE);
-    let (rk, rb) = (ratio(w.ks, c.ks), ratio(w.bias, c.bias));
-    let head = format!(
+    format!(
         "Gaussian walls differ from the scan by a KS distance up to {:.3} and {:+.3}° in mean α⁺; \
          one Gaussian wall of the reference's block differs from {STUDY_CONTROL_SURFACES} such \
-         walls by up to {:.3} and {:.3}° (the floor of one realisation that size)",
-        w.ks, w.signed, c.ks, c.bias
-    );
-    match beyond_twice_floor(w.ks, w.bias, c.ks, c.bias) {
-        (true, true) => format!(
-            "{head}: **the Gaussian assumption misses** this wall beyond twice that floor (KS {rk:.1}×, bias {rb:.1}× the floor)"
-        ),
-        (false, true) => format!(
-            "{head}: within twice that floor in KS ({rk:.1}×) but **beyond it in mean α⁺** ({rb:.1}×)"
-        ),
-        (true, false) => format!(
-            "{head}: **beyond twice that floor in KS** ({rk:.1}×), within it in mean α⁺ ({rb:.1}×)"
-        ),
-        (false, false) => format!(
-            "{head}: within twice that floor (KS {rk:.1}×, bias {rb:.1}×): the scan cannot tell its wall from a Gaussian one for this particle"
-        ),
-    }
+         walls by up to {:.3} and {:.3}° (the floor of one realisation that size): {}",
+        w.ks,
+        w.signed,
+        c.ks,
+        c.bias,
+        against_twice_floor(
+            "the Gaussian assumption misses",
+            (w.ks, w.bias),
+            (c.ks, c.bias)
+        )
+    )
 }
 
 /// The largest share of a deterministic run's histories that left the scan.

@@ -4,7 +4,7 @@
 //! `measured-walls/nominal.csv` and `measured-walls/study.csv`; every number is read from
 //! the runs' `compare`, `scan` and `run.toml` outputs.
 
-use crate::common::{beyond_twice_floor, missing};
+use crate::common::{against_twice_floor, missing};
 use crate::paths::{
     COMPARE, DETERMINISTIC, MEASURED_WALLS, NOMINAL, NOMINAL_EQ15, NOMINAL_WALLS, STUDY,
     STUDY_CARD, STUDY_CONTROL, STUDY_CONTROL_SURFACES, STUDY_GAUSSIAN, STUDY_ON_SCAN,
@@ -78,7 +78,7 @@ fn surface_choice(dir: &Path, key: &str) -> Option<f64> {
 /// The verdict on the Gaussian assumption for a scan: `w` (Gaussian walls against the scan in
 /// place) set against `floor` (one Gaussian wall of the reference's block against an
 /// ensemble of such walls: what one realisation differs by). A miss is what exceeds twice the
-/// floor, in KS or in bias (and the goal's 0.05°).
+/// floor, in KS or in bias (and the goal's 0.05°), said apart ([`against_twice_floor`]).
 fn gaussian_verdict(w: &Worst, floor: Option<&Worst>) -> String {
     let Some(f) = floor else {
         return match within_goal(w) {
@@ -92,18 +92,12 @@ fn gaussian_verdict(w: &Worst, floor: Option<&Worst>) -> String {
         "one Gaussian wall of the reference's block differs from {STUDY_CONTROL_SURFACES} such walls by a KS distance up to {:.3} and {:.3}° in mean α⁺ (the noise floor of a single realisation that size)",
         f.ks_alpha, f.bias_alpha
     );
-    let (ks_beyond, bias_beyond) =
-        beyond_twice_floor(w.ks_alpha, w.bias_alpha, f.ks_alpha, f.bias_alpha);
-    match (ks_beyond, bias_beyond) {
-        (false, false) => format!(
-            "{floor_text}: within twice that floor, the scan cannot tell its wall from a Gaussian one"
-        ),
-        _ => format!(
-            "{floor_text}: **the Gaussian models miss** this wall beyond twice that floor (KS {:.1}×, bias {:.1}× the floor)",
-            w.ks_alpha / f.ks_alpha.max(f64::MIN_POSITIVE),
-            w.bias_alpha / f.bias_alpha.max(f64::MIN_POSITIVE)
-        ),
-    }
+    let verdict = against_twice_floor(
+        "the Gaussian models miss",
+        (w.ks_alpha, w.bias_alpha),
+        (f.ks_alpha, f.bias_alpha),
+    );
+    format!("{floor_text}: {verdict}")
 }
 
 fn within_goal(w: &Worst) -> bool {

@@ -1003,12 +1003,14 @@ fn a_wall_whose_law_bends_gets_rows_of_its_own_where_it_bends() {
 /// from `stochastic --wall-card`, at incident directions between the table's grid points
 /// (configs/scans/own-model.toml); each with 2 × 10⁵ particles, the PDFs in 0.02° bins (a
 /// tenth of these walls' spread of α⁺ or finer, so that KS is that of the laws). Goal: KS of
-/// α⁺ ≤ 0.01 and |bias of mean α⁺| ≤ 0.05°, which metropro-1 meets. plu-1 (slope kurtosis
-/// 570 along the lay; heights in steps of 3.9 nm, so α⁺ is a comb of spikes) and opd-1's
-/// 50 µm sphere (α⁺ a comb too) miss its KS: the table's piecewise-linear quantile
-/// functions smear the spikes (KS 0.0141 and 0.0112 in the study); they are held to 0.02,
-/// well below the paper's model, which misses metropro-1 by more than twenty times the
-/// goal's KS and plu-1 by more than five: the comparison tells them apart.
+/// α⁺ ≤ 0.01 and |bias of mean α⁺| ≤ 0.05°, which metropro-1 and opd-1's 50 µm sphere meet
+/// (KS 0.0060 and 0.0090 here). opd-1's sphere meets it because the table keeps the atoms of
+/// its comb-like law (its α⁺ is a comb of spikes): with the fixed knots alone it had KS 0.0112
+/// in the study. plu-1 (slope kurtosis 570 along the lay; heights in steps of 3.9 nm, so its
+/// α⁺ is a comb of spikes 0.04° apart, in ξ' and ζ' jointly) misses it: KS 0.0113 here, 0.0141
+/// with the fixed knots alone; it is held to 0.0125, so that losing the added knots fails
+/// here, and well below the paper's model, which misses metropro-1 by more than twenty times
+/// the goal's KS and plu-1 by more than five: the comparison tells them apart.
 #[test]
 fn on_small_real_scans_the_walls_own_model_meets_its_goal_or_comes_close() {
     let dir = tempfile::tempdir().unwrap();
@@ -1018,8 +1020,8 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal_or_comes_close() {
     // own model may have; the KS by which the paper's model must miss, where it is run)
     for (scan, diameter, model_ks_at_most, paper_misses_by) in [
         ("metropro-1.dat", 0.0, 0.01, Some(0.2)),
-        ("opd-1.opd", 50.0, 0.02, None),
-        ("plu-1.plu", 0.0, 0.02, Some(0.05)),
+        ("opd-1.opd", 50.0, 0.01, None),
+        ("plu-1.plu", 0.0, 0.0125, Some(0.05)),
     ] {
         let tag = format!("{scan}-{diameter}");
         let out = dir.path().join(format!("card-{tag}"));

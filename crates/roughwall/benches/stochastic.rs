@@ -138,9 +138,11 @@ fn bench_erosion(c: &mut Criterion) {
 
 /// The measured-wall model of a generated wall with about the scenes' deviations (Δξ ≈ 2.5°,
 /// Δζ ≈ 7.5°: correlation lengths 12 and 4 µm, Eq. 15), its table of 1024 histories a cell
-/// (the cost of a rebound does not depend on how many histories built the table).
-fn measured_wall_model() -> AnyModel {
-    let field = roughwall::surface::generate(
+/// (the cost of a rebound does not depend on how many histories built the table); with
+/// `height_step_m`, its heights rounded to whole steps of it (an instrument's quantization:
+/// a comb-like law, whose quantile functions add knots and are read by bisection).
+fn measured_wall_model(height_step_m: Option<f64>) -> AnyModel {
+    let mut field = roughwall::surface::generate(
         &roughwall::SurfaceSpec {
             length_m: 256e-6,
             nodes: 256,
@@ -150,6 +152,11 @@ fn measured_wall_model() -> AnyModel {
         },
         3,
     );
+    if let Some(step) = height_step_m {
+        for h in &mut field.heights {
+            *h = (*h / step).round() * step;
+        }
+    }
     let t = roughwall::Tracker::new(&field, 1000).unwrap();
     let dev = roughwall::surface::measured_deviations(&field);
     let opts = roughwall::measured_wall::BuildOptions {
@@ -170,8 +177,10 @@ fn bench_variants(c: &mut Criterion) {
     let n = 65_536;
     g.throughput(Throughput::Elements(n));
     g.sample_size(20);
-    let measured = measured_wall_model();
-    for s in scenes().iter().take(2) {
+    let measured = measured_wall_model(None);
+    // Steps of 0.02 µm over the 1 µm pixel: slopes 1.1° apart, a comb at these deviations.
+    let quantized = measured_wall_model(Some(0.02e-6));
+    for (k, s) in scenes().iter().take(2).enumerate() {
         for name in AnyModel::NAMES {
             let v = match *name {
                 "measured-wall" => measured,
@@ -179,6 +188,11 @@ fn bench_variants(c: &mut Criterion) {
             };
             g.bench_function(format!("{}_{}", s.name, name), |b| {
                 b.iter(|| black_box(tallied_block_with(s, n, None, v)))
+            });
+        }
+        if k == 0 {
+            g.bench_function(format!("{}_measured-wall-quantized", s.name), |b| {
+                b.iter(|| black_box(tallied_block_with(s, n, None, quantized)))
             });
         }
     }

@@ -9,7 +9,9 @@ use rand::{Rng, SeedableRng};
 use roughwall::angles::incident_angles;
 use roughwall::deterministic::{history, Fate, ModelSetup};
 use roughwall::measured_wall::{build_table, BuildOptions, MeasuredWallTable, MAGIC};
-use roughwall::measured_wall::{ALPHA_ROWS_DEG, BETA_COLUMNS};
+use roughwall::measured_wall::{
+    CellLaw, QuantileFunction, ALPHA_ROWS_DEG, BETA_COLUMNS, RANK_BINS, XI_KNOTS, ZETA_KNOTS,
+};
 use roughwall::models::{rebound_with, AnyModel, MeasuredWall};
 use roughwall::stochastic::Contact;
 use roughwall::surface::{generate, measured_deviations, SurfaceSpec};
@@ -176,6 +178,43 @@ fn a_wall_that_is_not_its_own_mirror_image_keeps_its_direction_dependence() {
     assert!((p0 - p1).abs() < 0.3, "the paper's model: {p0} vs {p1}");
 }
 
+/// Values before a cell line's knots.
+const LEADING: usize = 7;
+
+/// `law` with its fixed knots alone (what a v3 table holds).
+fn without_added_knots(law: &CellLaw) -> CellLaw {
+    let fixed = |q: &QuantileFunction| QuantileFunction::fixed(q.knots.clone());
+    CellLaw {
+        xi: fixed(&law.xi),
+        zeta: law.zeta.iter().map(fixed).collect(),
+        ..law.clone()
+    }
+}
+
+/// A v4 table's text (of a table without added knots) as v3 wrote it: its magic line and
+/// cell header, and its cell lines without the counts of added knots.
+fn as_v3(text: &str) -> String {
+    let fields = LEADING + XI_KNOTS + RANK_BINS * ZETA_KNOTS;
+    let mut cells = false;
+    let mut out: Vec<String> = Vec::new();
+    for l in text.lines() {
+        if cells {
+            let f: Vec<&str> = l.split(',').collect();
+            assert!(f[fields..].iter().all(|c| *c == "0"), "added knots in {l}");
+            out.push(f[..fields].join(","));
+        } else if l.starts_with("row,") {
+            out.push(
+                l.trim_end_matches(",(added,t_1e-9,knot_0.1urad...)x33")
+                    .to_string(),
+            );
+            cells = true;
+        } else {
+            out.push(l.replacen("table v4", "table v3", 1));
+        }
+    }
+    out.join("\n") + "\n"
+}
+
 #[test]
 fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     let field = gaussian();
@@ -219,7 +258,7 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     );
     // Truncated, another version, another grid, an edited `first_row`, not a table at all.
     assert!(err(&lines[..header + 3].join("\n")).contains("truncated after 2 of"));
-    assert!(err(&text.replacen("table v3", "table v1", 1)).contains("another format"));
+    assert!(err(&text.replacen("table v4", "table v1", 1)).contains("another format"));
     // The rows: the base rows must all be there, increasing, and at most 12 more.
     let rows_line = lines
         .iter()
@@ -245,8 +284,8 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
         let e = err(&text.replacen(rows_line, &edit, 1));
         assert!(e.contains("allowed the base rows"), "{e}");
     }
-    // A v2 table (the base rows alone, as v2 wrote them) is read as it was written; a v2
-    // table with rows of its own is not one.
+    // A v2 table (the base rows alone, as v2 wrote them, and no added knots) is read as it was
+    // written; a v2 table with rows of its own is not one.
     let base_only = MeasuredWallTable {
         alpha_rows_deg: ALPHA_ROWS_DEG.to_vec(),
         cells: table
@@ -254,11 +293,11 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
             .chunks(BETA_COLUMNS)
             .zip(&table.alpha_rows_deg)
             .filter(|(_, a)| ALPHA_ROWS_DEG.contains(a))
-            .flat_map(|(c, _)| c.to_vec())
+            .flat_map(|(c, _)| c.iter().map(without_added_knots))
             .collect(),
         ..table.clone()
     };
-    let v2 = base_only.to_text().replacen("table v3", "table v2", 1);
+    let v2 = as_v3(&base_only.to_text()).replacen("table v3", "table v2", 1);
     assert!(MeasuredWallTable::parse(&v2, "t").unwrap() == base_only);
     // The same with a row of its own at 39° (a copy of the 38° row's cells): v3 reads it
     // back, v2 does not.
@@ -274,10 +313,42 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
         ..base_only.clone()
     };
     assert_eq!(refined.refined_rows_deg(), vec![39.0]);
-    let refined_text = refined.to_text();
+    let refined_text = as_v3(&refined.to_text());
     assert!(MeasuredWallTable::parse(&refined_text, "t").unwrap() == refined);
     let v2_refined = refined_text.replacen("table v3", "table v2", 1);
     assert!(err(&v2_refined).contains("a v2 table has the base rows"));
+    // Added knots: read back; refused out of order or beyond their budget.
+    assert!(MeasuredWallTable::parse(&refined.to_text(), "t").unwrap() == refined);
+    let fields = LEADING + XI_KNOTS + RANK_BINS * ZETA_KNOTS;
+    let header = lines.iter().position(|l| l.starts_with("row,")).unwrap();
+    let first_cell = lines[header + 1];
+    let prefix: Vec<&str> = first_cell.split(',').take(fields).collect();
+    let prefix = prefix.join(",");
+    let zeros = ",0".repeat(RANK_BINS);
+    let with = |xi: &str| text.replacen(first_cell, &format!("{prefix},{xi}{zeros}"), 1);
+    // Just after the middle fixed knot (t = 0.5), at its value.
+    let middle = prefix.split(',').nth(LEADING + 64).unwrap();
+    let ok = with(&format!("1,501000000,{middle}"));
+    let back = MeasuredWallTable::parse(&ok, "t").unwrap();
+    assert_eq!(
+        back.cells[0].xi.added(),
+        &[(0.501, back.cells[0].xi.knots[64])]
+    );
+    let e = err(&with(&format!("1,500000000,{middle}")));
+    assert!(e.contains("not strictly between"), "{e}");
+    let e = err(&with(&format!("1,2000000000,{middle}")));
+    assert!(e.contains("not strictly between"), "{e}");
+    // One count short: too few fields; one short after an added knot: truncated.
+    let e = err(&text.replacen(first_cell, &format!("{prefix}{zeros}"), 1));
+    assert!(e.contains("expected at least"), "{e}");
+    let short = format!(
+        "{prefix},1,501000000,{middle}{}",
+        ",0".repeat(RANK_BINS - 1)
+    );
+    let e = err(&text.replacen(first_cell, &short, 1));
+    assert!(e.contains("truncated added knots"), "{e}");
+    let e = err(&with("999,1,1"));
+    assert!(e.contains("added knots: allowed 0 to"), "{e}");
     let grid = text.replacen("beta_columns = 24", "beta_columns = 12", 1);
     assert!(err(&grid).contains("this version's grid"));
     let first = text.replacen("first_row = 0", "first_row = 3", 1);

@@ -42,9 +42,10 @@ pub use effective_normal::{effective_gammas, effective_normal};
 pub use grid::CELLS;
 pub use grid::{
     ALPHA_ROWS_DEG, BETA_COLUMNS, HISTORIES_PER_CELL, LINEAR_BELOW_DEG, RANK_BINS,
-    SERVED_LEFT_BOUND, XI_KNOTS, ZETA_KNOTS,
+    SERVED_LEFT_BOUND, XI_ADDED_BUDGET, XI_ADDED_TOLERANCE, XI_KNOTS, ZETA_ADDED_BUDGET,
+    ZETA_ADDED_TOLERANCE, ZETA_KNOTS,
 };
-pub use quantiles::{CellLaw, QuantileFunction};
+pub use quantiles::{CellLaw, QuantileFunction, ADDED_T_UNIT};
 pub use refine::{MAX_REFINED_ROWS, REFINE_ABOVE_DEG};
 pub use table::{MeasuredWallIncidence, MeasuredWallTable};
 pub use table_file::{MAGIC, MAX_DISTINCT_TABLES};

@@ -2,7 +2,7 @@
 //! wall element for any incident direction between them.
 
 use super::grid::{cell, column_weights, row_weights};
-use super::quantiles::{at, knot_coordinate, rank_bin, CellLaw};
+use super::quantiles::{knot_coordinate, rank_bin, CellLaw};
 use crate::wall::Deviations;
 use rand::Rng;
 
@@ -107,7 +107,7 @@ impl MeasuredWallTable {
         let (u0, u1, u2): (f64, f64, f64) = (rng.gen(), rng.gen(), rng.gen());
         let law = &self.cells[inc.cells[mixture_member(&inc.weights, u0)] as usize];
         let (t1, t2) = (knot_coordinate(u1), knot_coordinate(u2));
-        (at(&law.xi.knots, t1), at(&law.zeta[rank_bin(u1)].knots, t2))
+        (law.xi.at_t(t1), law.zeta[rank_bin(u1)].at_t(t2))
     }
 }
 

@@ -7,23 +7,29 @@
 //! version's), then the header
 //! [`CELL_HEADER`] and one line per cell: its row and column, `α⁻` and `β⁻`, its counts,
 //! then the [`XI_KNOTS`] knots of `ξ'` and the [`RANK_BINS`] × [`ZETA_KNOTS`] knots of `ζ'`
-//! (as whole multiples of [`KNOT_UNIT_RAD`], 0.1 µrad). Knots are kept on that resolution,
+//! (as whole multiples of [`KNOT_UNIT_RAD`], 0.1 µrad), then, for `ξ'` and each rank bin of
+//! `ζ'` in turn, the number of knots added where the law has atoms and gaps and each as its
+//! `t` (a whole number of [`ADDED_T_UNIT`]) and its value. Knots are kept on that resolution,
 //! so a table read back is the table written, bit for bit. Everything is checked on reading: a malformed, edited
 //! or truncated table is a one-line error naming the line.
 
 use super::grid::*;
-use super::quantiles::{first_served_row, CellLaw, QuantileFunction, KNOT_UNIT_RAD};
+use super::quantiles::{first_served_row, CellLaw, QuantileFunction, ADDED_T_UNIT, KNOT_UNIT_RAD};
 use super::refine::MAX_REFINED_ROWS;
 use super::table::MeasuredWallTable;
 use crate::error::{Error, Result};
 use crate::wall::Deviations;
 use std::sync::Mutex;
 
-/// First line of a table file (names the format and its version: v3 has the 43 base rows and
-/// the rows its build added, the 32 rank bins and the mixture between cells). A v2 table (the
-/// base rows alone) is read as it is; a v1 table, of 29 rows, 16 bins and blended cells, is
-/// refused with the advice to build it again.
-pub const MAGIC: &str = "# roughwall measured-wall table v3";
+/// First line of a table file (names the format and its version: v4 has the 43 base rows and
+/// the rows its build added, the 32 rank bins, the mixture between cells and the knots its
+/// quantile functions added where the law has atoms). A v3 table (no added knots) and a v2
+/// table (the base rows alone either) are read as they are; a v1 table, of 29 rows, 16 bins
+/// and blended cells, is refused with the advice to build it again.
+pub const MAGIC: &str = "# roughwall measured-wall table v4";
+
+/// The first line of a v3 table: v4 without added knots.
+const MAGIC_V3: &str = "# roughwall measured-wall table v3";
 
 /// The first line of a v2 table: v3 without added rows.
 const MAGIC_V2: &str = "# roughwall measured-wall table v2";
@@ -32,6 +38,10 @@ const MAGIC_STEM: &str = "# roughwall measured-wall table v";
 
 /// The header of the cell lines.
 pub const CELL_HEADER: &str =
+    "row,column,alpha_deg,beta_deg,histories,left_patch,lost_other,xi_knots_0.1urad...,zeta_knots_0.1urad...,(added,t_1e-9,knot_0.1urad...)x33";
+
+/// The cell header of v2 and v3 tables.
+const CELL_HEADER_V3: &str =
     "row,column,alpha_deg,beta_deg,histories,left_patch,lost_other,xi_knots_0.1urad...,zeta_knots_0.1urad...";
 
 /// Distinct tables a process may hold (see [`MeasuredWallTable::intern`]): a host's walls
@@ -87,10 +97,21 @@ impl MeasuredWallTable {
                 c.left_patch,
                 c.lost_other
             ));
+            let unit = |x: f64| ((x / KNOT_UNIT_RAD).round() as i64).to_string();
             for q in std::iter::once(&c.xi).chain(&c.zeta) {
                 for &x in &q.knots {
                     s.push(',');
-                    s.push_str(&((x / KNOT_UNIT_RAD).round() as i64).to_string());
+                    s.push_str(&unit(x));
+                }
+            }
+            for q in std::iter::once(&c.xi).chain(&c.zeta) {
+                s.push_str(&format!(",{}", q.added().len()));
+                for &(t, x) in q.added() {
+                    s.push_str(&format!(
+                        ",{},{}",
+                        (t / ADDED_T_UNIT).round() as i64,
+                        unit(x)
+                    ));
                 }
             }
             s.push('\n');
@@ -103,9 +124,10 @@ impl MeasuredWallTable {
     pub fn parse(text: &str, what: &str) -> Result<MeasuredWallTable> {
         let bad = |line: usize, msg: &str| Error::Input(format!("{what}, line {line}: {msg}"));
         let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end()));
-        let v2 = match lines.next() {
-            Some((_, l)) if l == MAGIC => false,
-            Some((_, l)) if l == MAGIC_V2 => true,
+        let (v2, v3) = match lines.next() {
+            Some((_, l)) if l == MAGIC => (false, false),
+            Some((_, l)) if l == MAGIC_V3 => (false, true),
+            Some((_, l)) if l == MAGIC_V2 => (true, true),
             Some((_, l)) if l.starts_with(MAGIC_STEM) => {
                 return Err(Error::Input(format!(
                     "{what}: a measured-wall table of another format (`{l}`); this version reads `{MAGIC}`: build it again with `rebound scan --measured-wall`"
@@ -171,9 +193,10 @@ impl MeasuredWallTable {
                 ));
             }
         }
+        let header = if v3 { CELL_HEADER_V3 } else { CELL_HEADER };
         match lines.next() {
-            Some((_, l)) if l == CELL_HEADER => {}
-            Some((n, _)) => return Err(bad(n, &format!("expected the header `{CELL_HEADER}`"))),
+            Some((_, l)) if l == header => {}
+            Some((n, _)) => return Err(bad(n, &format!("expected the header `{header}`"))),
             None => {
                 return Err(Error::Input(format!(
                     "{what}: truncated (expected the cell header)"
@@ -189,7 +212,7 @@ impl MeasuredWallTable {
                     "{what}: truncated after {k} of {count} cells (the grid is {rows} rows × {BETA_COLUMNS} columns)"
                 ))
             })?;
-            cells.push(parse_cell(l, k, &alpha_rows_deg).map_err(|m| bad(n, &m))?);
+            cells.push(parse_cell(l, k, &alpha_rows_deg, v3).map_err(|m| bad(n, &m))?);
         }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
             return Err(bad(n, &format!("more than the {count} cells of the grid")));
@@ -268,11 +291,22 @@ fn parse_rows(v: &str, v2: bool) -> std::result::Result<Vec<f64>, String> {
     Ok(rows)
 }
 
-/// One cell line, checked against its place `k` in the grid of `rows`.
-fn parse_cell(line: &str, k: usize, rows: &[f64]) -> std::result::Result<CellLaw, String> {
+/// One cell line, checked against its place `k` in the grid of `rows` (`v3`: a line of a v2
+/// or v3 table, without added knots).
+fn parse_cell(
+    line: &str,
+    k: usize,
+    rows: &[f64],
+    v3: bool,
+) -> std::result::Result<CellLaw, String> {
     let f: Vec<&str> = line.split(',').collect();
-    if f.len() != LEADING + KNOTS {
-        return Err(format!("{} fields, expected {}", f.len(), LEADING + KNOTS));
+    let fixed = LEADING + KNOTS;
+    if (v3 && f.len() != fixed) || (!v3 && f.len() < fixed + 1 + RANK_BINS) {
+        let expected = match v3 {
+            true => fixed.to_string(),
+            false => format!("at least {}", fixed + 1 + RANK_BINS),
+        };
+        return Err(format!("{} fields, expected {expected}", f.len()));
     }
     let (row, column) = (k / BETA_COLUMNS, k % BETA_COLUMNS);
     let int = |i: usize, name: &str| -> std::result::Result<u64, String> {
@@ -303,30 +337,57 @@ fn parse_cell(line: &str, k: usize, rows: &[f64]) -> std::result::Result<CellLaw
     if left.saturating_add(lost) > histories {
         return Err(format!("{left} + {lost} lost histories out of {histories}"));
     }
-    let mut knots = Vec::with_capacity(KNOTS);
-    for s in &f[LEADING..] {
+    let knot_at = |s: &str| -> std::result::Result<f64, String> {
         match s.parse::<i64>() {
             Ok(k) if (k as f64 * KNOT_UNIT_RAD).abs() <= std::f64::consts::FRAC_PI_2 => {
-                knots.push(k as f64 * KNOT_UNIT_RAD)
+                Ok(k as f64 * KNOT_UNIT_RAD)
             }
-            _ => {
-                return Err(format!(
-                    "knot `{s}` is not a whole number of 0.1 µrad within ±π/2"
-                ))
-            }
+            _ => Err(format!(
+                "knot `{s}` is not a whole number of 0.1 µrad within ±π/2"
+            )),
         }
-    }
-    let function = |v: &[f64]| -> std::result::Result<QuantileFunction, String> {
-        if v.windows(2).any(|w| w[1] < w[0]) {
-            return Err("a quantile function that decreases".into());
+    };
+    let knots = f[LEADING..fixed]
+        .iter()
+        .map(|s| knot_at(s))
+        .collect::<std::result::Result<Vec<f64>, String>>()?;
+    // The added knots of each function in turn (none in a v3 line).
+    let mut rest = f[fixed..].iter();
+    let mut added = || -> std::result::Result<Vec<(f64, f64)>, String> {
+        if v3 {
+            return Ok(Vec::new());
         }
-        Ok(QuantileFunction { knots: v.to_vec() })
+        let count = rest.next().ok_or("truncated added knots")?;
+        let budget = XI_ADDED_BUDGET.max(ZETA_ADDED_BUDGET);
+        let count: usize = count
+            .parse()
+            .ok()
+            .filter(|&c| c <= budget)
+            .ok_or_else(|| format!("`{count}` added knots: allowed 0 to {budget}"))?;
+        (0..count)
+            .map(|_| {
+                let (t, x) = (rest.next(), rest.next());
+                let (Some(t), Some(x)) = (t, x) else {
+                    return Err("truncated added knots".to_string());
+                };
+                let t = t.parse::<i64>().map_err(|_| {
+                    format!("added knot's `t` = `{t}` is not a whole number of 1e-9")
+                })?;
+                Ok((t as f64 * ADDED_T_UNIT, knot_at(x)?))
+            })
+            .collect()
+    };
+    let mut function = |v: &[f64]| -> std::result::Result<QuantileFunction, String> {
+        QuantileFunction::with_added(v.to_vec(), added()?)
     };
     let xi = function(&knots[..XI_KNOTS])?;
     let zeta = knots[XI_KNOTS..]
         .chunks(ZETA_KNOTS)
-        .map(function)
+        .map(&mut function)
         .collect::<std::result::Result<Vec<_>, _>>()?;
+    if rest.next().is_some() {
+        return Err("more fields than the cell's added knots".into());
+    }
     Ok(CellLaw {
         histories,
         left_patch: left,

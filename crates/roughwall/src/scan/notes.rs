@@ -167,7 +167,7 @@ fn quantized_note(c: &Characterisation, l: &Lay) -> Option<String> {
         return None;
     }
     Some(format!(
-        "heights in whole steps of {} nm ({} % of Sq), the instrument's resolution: facet slopes take values {}° apart, {} of the smaller deviation ({}°), so rebound angles off the scan form a comb of spikes the wall itself would not show; the in-place reference and the measured-wall tables inherit it, and the measured-wall model, whose quantile functions smear the spikes, had KS 0.012–0.015 against its goal of 0.01 on such a scan (plu-1, REPORT.md \"The wall's own model against the scan itself\") and met it once the heights were dithered by half a step (docs/models.md): measure with a finer height resolution where the instrument has one",
+        "heights in whole steps of {} nm ({} % of Sq), the instrument's resolution: facet slopes take values {}° apart, {} of the smaller deviation ({}°), so rebound angles off the scan form a comb of spikes the wall itself would not show; the in-place reference and the measured-wall tables inherit it, and the measured-wall model, whose tables keep each angle's spikes but pair them only within rank bins, had KS above 0.011 against its goal of 0.01 on such a scan (plu-1, REPORT.md \"The wall's own model against the scan itself\") and met it once the heights were dithered by half a step (docs/models.md): measure with a finer height resolution where the instrument has one",
         fmt_num(significant(step * 1e9, 4)),
         fmt_num(significant(100.0 * step / c.parameters.sq_m, 2)),
         fmt_num(significant(quantum.to_degrees(), 3)),

@@ -29,7 +29,8 @@ pub const XI_KNOTS: usize = 129;
 /// bias of up to 0.07° in mean `α⁺` at grazing incidence oblique to the lay, 16 halve it; a
 /// narrow specular peak of the law (a sphere on a striated metal wall) needs more: its `ξ'`
 /// paired with `ζ'` of other histories spreads it (docs/design-notes.md). 32 bins of 33
-/// knots keep a table with every row a build may add under 16 MiB of text.
+/// knots keep a table with every row a build may add under 16 MiB of text before the knots
+/// a law with atoms adds ([`XI_ADDED_BUDGET`]); with every one of those, about 24 MiB.
 pub const RANK_BINS: usize = 32;
 
 /// Knots of each rank bin's quantile function of `ζ'`.

@@ -94,6 +94,9 @@ impl QuantileFunction {
         knots: Vec<f64>,
         added: Vec<(f64, f64)>,
     ) -> std::result::Result<QuantileFunction, String> {
+        if knots.windows(2).any(|w| w[1] < w[0]) {
+            return Err("a quantile function that decreases".into());
+        }
         if added.is_empty() {
             return Ok(QuantileFunction::fixed(knots));
         }
@@ -469,6 +472,8 @@ mod tests {
         assert!(QuantileFunction::with_added(k.clone(), vec![(0.5, 1.0)]).is_err());
         assert!(QuantileFunction::with_added(k.clone(), vec![(1.0, 2.0)]).is_err());
         assert!(QuantileFunction::with_added(k.clone(), vec![(0.25, 1.5)]).is_err());
+        // Fixed knots that decrease, with or without added ones.
+        assert!(QuantileFunction::with_added(vec![0.0, 2.0, 1.0], vec![]).is_err());
         let q = QuantileFunction::with_added(k, vec![(0.25, 0.0)]).unwrap();
         // Flat from t = 0 to 0.25, then steep to the knot at 0.5.
         assert_eq!(q.at_t(0.1), 0.0);

@@ -290,7 +290,7 @@ fn read_table_text(key: &str, path: &str, max_bytes: u64, kind: &str) -> Result<
 mod tests {
     use super::MAX_WALL_TABLE_BYTES;
     use roughwall::measured_wall::{
-        CellLaw, MeasuredWallTable, QuantileFunction, ALPHA_ROWS_DEG, BETA_COLUMNS,
+        CellLaw, MeasuredWallTable, QuantileFunction, ADDED_T_UNIT, ALPHA_ROWS_DEG, BETA_COLUMNS,
         MAX_REFINED_ROWS, RANK_BINS, XI_ADDED_BUDGET, XI_KNOTS, ZETA_ADDED_BUDGET, ZETA_KNOTS,
     };
 
@@ -305,7 +305,12 @@ mod tests {
             // In the last interval, where `t` has the most digits.
             let t0 = (k - 2) as f64 / (k - 1) as f64;
             let added = (0..added)
-                .map(|j| (((t0 + (j + 1) as f64 * 1e-6) * 1e9).round() * 1e-9, low))
+                .map(|j| {
+                    (
+                        ((t0 + (j + 1) as f64 * 1e-6) / ADDED_T_UNIT).round() * ADDED_T_UNIT,
+                        low,
+                    )
+                })
                 .collect();
             QuantileFunction::with_added(vec![low; k], added).unwrap()
         };

@@ -350,7 +350,11 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     let e = err(&text.replacen(first_cell, &short, 1));
     assert!(e.contains("truncated added knots"), "{e}");
     let e = err(&with("999,1,1"));
-    assert!(e.contains("added knots: allowed 0 to"), "{e}");
+    assert!(e.contains("added knots: allowed 0 to 64"), "{e}");
+    // A bin of ζ' holds at most its own budget (8), fewer than ξ' (64).
+    let zeta_nine = format!("{prefix},0,9{}", ",0".repeat(RANK_BINS - 1));
+    let e = err(&text.replacen(first_cell, &zeta_nine, 1));
+    assert!(e.contains("`9` added knots: allowed 0 to 8"), "{e}");
     let grid = text.replacen("beta_columns = 24", "beta_columns = 12", 1);
     assert!(err(&grid).contains("this version's grid"));
     let first = text.replacen("first_row = 0", "first_row = 3", 1);

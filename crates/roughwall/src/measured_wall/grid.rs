@@ -39,14 +39,18 @@ pub const ZETA_KNOTS: usize = 33;
 /// Knots a cell's quantile function of `ξ'` adds where the fixed ones put more than
 /// [`XI_ADDED_TOLERANCE`] of probability where the sample has none (a gap between atoms of
 /// a comb-like law: quantized heights), and
-/// that tolerance. 0.002 is about five times the largest excursion of a smooth law's
-/// 17 711 order statistics from the chord between two fixed knots, so a smooth law gets none.
+/// that tolerance. A smooth law's order statistics stray from the chord between two fixed
+/// knots too: by at most 0.0016 over 20 normal samples of 17 711, and 0.0148 over 20 of 553
+/// (a bin of `ζ'`), so the tolerances sit just above a smooth law's own excursions and it
+/// gets few added knots (opd-1's point table: one `ξ'` function of 1 032, 4 % of the bins of
+/// `ζ'`). The budgets were measured: 128/16 and 256/32 move no study row by more than 0.0004
+/// of KS and grow the tables to 17 and 20 MB (docs/design-notes.md, "Knots where a law has
+/// atoms").
 pub const XI_ADDED_BUDGET: usize = 64;
 /// See [`XI_ADDED_BUDGET`].
 pub const XI_ADDED_TOLERANCE: f64 = 0.002;
 
-/// The same for each rank bin's quantile function of `ζ'` (about 550 histories a bin, whose
-/// order statistics stray from a chord by up to about 0.004 on a smooth law).
+/// The same for each rank bin's quantile function of `ζ'` (about 550 histories a bin).
 pub const ZETA_ADDED_BUDGET: usize = 8;
 /// See [`ZETA_ADDED_BUDGET`].
 pub const ZETA_ADDED_TOLERANCE: f64 = 0.015;
@@ -55,8 +59,10 @@ pub const ZETA_ADDED_TOLERANCE: f64 = 0.015;
 /// probability: a smaller excursion is within the sample's own noise (the KS distance of `n`
 /// draws from their own law is about `0.87/√n`), and a table of few histories a cell would
 /// otherwise add knots nearly everywhere (1 024 histories: every `ξ'` function and 99 % of the
-/// bins of `ζ'`). At the default [`HISTORIES_PER_CELL`] this is below both tolerances
-/// (0.0019 for `ξ'`, 0.011 for a bin of `ζ'`), so a default table is what they alone give.
+/// bins of `ζ'`; with it, 0 and 1 of 33 024, where normal samples of 1 024 and of 32 stray by
+/// at most 0.006 and 0.031 over 20 seeds). 0.25 is the largest round value at which, at the
+/// default [`HISTORIES_PER_CELL`], this stays below both tolerances (0.0019 for `ξ'`, 0.011
+/// for a bin of `ζ'`), so a default table is what the tolerances alone give.
 pub const ADDED_NOISE: f64 = 0.25;
 
 /// Histories shot per cell by default (the Fibonacci number `F₂₂`, whose lattice is the

@@ -102,7 +102,7 @@ impl QuantileFunction {
         }
         let k = knots.len();
         let mut merged: Vec<(f64, f64)> = (0..k)
-            .map(|i| (i as f64 / (k - 1) as f64, knots[i]))
+            .map(|i| (fixed_t(i, k), knots[i]))
             .chain(added.iter().copied())
             .collect();
         merged.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -156,14 +156,13 @@ fn added_knots(sorted: &[f64], knots: &[f64], tolerance: f64, budget: usize) -> 
     if n < 3 || budget == 0 {
         return Vec::new();
     }
-    let u_of = |t: f64| 0.5 * (1.0 - (std::f64::consts::PI * t).cos());
     // The knots so far, (t, value), and each interval's worst order statistic.
-    let mut ts: Vec<f64> = (0..k).map(|i| i as f64 / (k - 1) as f64).collect();
+    let mut ts: Vec<f64> = (0..k).map(|i| fixed_t(i, k)).collect();
     let mut xs: Vec<f64> = knots.to_vec();
     // The worst order statistic of the interval (t_j, t_j+1) and its distance in probability.
     let worst = |t0: f64, x0: f64, t1: f64, x1: f64| -> Option<(f64, usize)> {
         let scale = (n - 1) as f64;
-        let (u0, u1) = (u_of(t0), u_of(t1));
+        let (u0, u1) = (probability_at(t0), probability_at(t1));
         let lo = ((u0 * scale).floor() as usize + 1).min(n - 1);
         let hi = ((u1 * scale).ceil() as usize).min(n).max(lo);
         let mut best: Option<(f64, usize)> = None;
@@ -185,7 +184,7 @@ fn added_knots(sorted: &[f64], knots: &[f64], tolerance: f64, budget: usize) -> 
                 }
             } else {
                 let f = ((s - x0) / (x1 - x0)).clamp(0.0, 1.0);
-                (u_of(t0 + f * (t1 - t0)) - u).abs()
+                (probability_at(t0 + f * (t1 - t0)) - u).abs()
             };
             if best.is_none_or(|b| d > b.0) {
                 best = Some((d, i));
@@ -203,10 +202,7 @@ fn added_knots(sorted: &[f64], knots: &[f64], tolerance: f64, budget: usize) -> 
             .iter()
             .enumerate()
             .filter_map(|(j, g)| g.map(|g| (j, g)))
-            .fold(None, |best: Option<(usize, (f64, usize))>, c| match best {
-                Some(b) if b.1 .0 >= c.1 .0 => Some(b),
-                _ => Some(c),
-            })
+            .max_by(|a, b| a.1 .0.total_cmp(&b.1 .0).then(b.0.cmp(&a.0)))
         else {
             break;
         };
@@ -244,6 +240,20 @@ pub fn knot(x: f64) -> f64 {
 #[inline]
 pub(crate) fn level(i: usize, k: usize) -> f64 {
     0.5 * (1.0 - (std::f64::consts::PI * i as f64 / (k - 1) as f64).cos())
+}
+
+/// The knot coordinate `t_k = k/(K − 1)` of fixed knot `k` of `K`.
+#[inline]
+fn fixed_t(k: usize, count: usize) -> f64 {
+    k as f64 / (count - 1) as f64
+}
+
+/// The probability `(1 − cos π t)/2` at knot coordinate `t` (the inverse of
+/// [`knot_coordinate`]; [`level`] is the same at a fixed knot, computed as the fixed knots
+/// always were).
+#[inline]
+fn probability_at(t: f64) -> f64 {
+    0.5 * (1.0 - (std::f64::consts::PI * t).cos())
 }
 
 /// The knot coordinate `t` in `[0, 1]` of probability `u` in `[0, 1]` (the inverse of

@@ -353,12 +353,12 @@ fn parse_cell(
         .collect::<std::result::Result<Vec<f64>, String>>()?;
     // The added knots of each function in turn (none in a v3 line).
     let mut rest = f[fixed..].iter();
-    let mut added = || -> std::result::Result<Vec<(f64, f64)>, String> {
+    // A function may hold no more added knots than a build gives it (`budget`).
+    let mut added = |budget: usize| -> std::result::Result<Vec<(f64, f64)>, String> {
         if v3 {
             return Ok(Vec::new());
         }
         let count = rest.next().ok_or("truncated added knots")?;
-        let budget = XI_ADDED_BUDGET.max(ZETA_ADDED_BUDGET);
         let count: usize = count
             .parse()
             .ok()
@@ -377,13 +377,14 @@ fn parse_cell(
             })
             .collect()
     };
-    let mut function = |v: &[f64]| -> std::result::Result<QuantileFunction, String> {
-        QuantileFunction::with_added(v.to_vec(), added()?)
-    };
-    let xi = function(&knots[..XI_KNOTS])?;
+    let mut function =
+        |v: &[f64], budget: usize| -> std::result::Result<QuantileFunction, String> {
+            QuantileFunction::with_added(v.to_vec(), added(budget)?)
+        };
+    let xi = function(&knots[..XI_KNOTS], XI_ADDED_BUDGET)?;
     let zeta = knots[XI_KNOTS..]
         .chunks(ZETA_KNOTS)
-        .map(&mut function)
+        .map(|v| function(v, ZETA_ADDED_BUDGET))
         .collect::<std::result::Result<Vec<_>, _>>()?;
     if rest.next().is_some() {
         return Err("more fields than the cell's added knots".into());

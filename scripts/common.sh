@@ -1,14 +1,16 @@
 # Sourced by the reproduction scripts: where the binary and the results are, the
 # reduced mode, and a `run` that prints each command before running it.
 #
-#   REBOUND_RESULTS  output root (default: <repo>/results)
+#   REBOUND_RESULTS  output root (default: results, under the repository)
 #   REBOUND_BIN      the rebound binary (default: build target/release/rebound once)
 #   REBOUND_QUICK=1  reduced mode: few particles, small surfaces (used by the tests)
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # The names of the directories under results/ (the P_… variables), shared with `rebound report`.
 source "$ROOT/scripts/paths.sh"
-OUT=${REBOUND_RESULTS:-$ROOT/results}
+# Relative by default (every script runs from the root): the case files and manifests the
+# results hold then name repository paths, and a clone can rerun them.
+OUT=${REBOUND_RESULTS:-results}
 QUICK=${REBOUND_QUICK:-0}
 if [ -z "${REBOUND_BIN:-}" ]; then
   if [ -z "${REBOUND_BUILT:-}" ]; then

@@ -133,6 +133,6 @@ cp "$WORK/coarse/mesh.txt" "$WORK/mesh-coarse.txt"
 if [ -f "$WORK/fine/mesh.txt" ]; then cp "$WORK/fine/mesh.txt" "$WORK/mesh-fine.txt"; fi
 if [ -f "$WORK/nearwall/mesh.txt" ]; then cp "$WORK/nearwall/mesh.txt" "$WORK/mesh-nearwall.txt"; fi
 cat "$WORK"/*/fluid/converged.txt > "$WORK/fluid.txt"
-run pipe-stats --study "$WORK" --out "$P"
+run pipe-stats --study "${WORK#"$ROOT"/}" --out "$P"
 stage_end
 [ -n "${REBOUND_NESTED:-}" ] || print_stages "pipe-flow.sh"

@@ -13,34 +13,76 @@ fn header(path: &Path) -> String {
     text.lines().next().unwrap_or("").to_string()
 }
 
-/// Copies the files of `results/` that git tracks into `dest`, as a clone would have them.
-fn copy_tracked_results(dest: &Path) {
-    let root = repo_root();
+/// The files of `results/` that git tracks, relative to `results/`.
+fn tracked_results() -> Vec<std::path::PathBuf> {
     let listed = Command::new("git")
         .args(["ls-files", "-z", "--", "results"])
-        .current_dir(root)
+        .current_dir(repo_root())
         .output()
-        .expect("git ls-files (the test copies results/ as a clone has it)");
+        .expect("git ls-files (the tests read results/ as a clone has it)");
     assert!(listed.status.success(), "git ls-files failed");
-    let files: Vec<&[u8]> = listed
+    let files: Vec<std::path::PathBuf> = listed
         .stdout
         .split(|&b| b == 0)
         .filter(|f| !f.is_empty())
+        .map(|f| {
+            Path::new(std::str::from_utf8(f).unwrap())
+                .strip_prefix("results")
+                .unwrap()
+                .to_path_buf()
+        })
         .collect();
     assert!(
         files.len() > 100,
         "git tracks only {} files under results/",
         files.len()
     );
-    for f in files {
-        let rel = Path::new(std::str::from_utf8(f).unwrap())
-            .strip_prefix("results")
-            .unwrap();
-        let to = dest.join(rel);
+    files
+}
+
+/// Copies the files of `results/` that git tracks into `dest`, as a clone would have them.
+fn copy_tracked_results(dest: &Path) {
+    let root = repo_root();
+    for rel in tracked_results() {
+        let to = dest.join(&rel);
         std::fs::create_dir_all(to.parent().unwrap()).unwrap();
-        std::fs::copy(root.join("results").join(rel), &to)
+        std::fs::copy(root.join("results").join(&rel), &to)
             .unwrap_or_else(|e| panic!("results/{}: {e}", rel.display()));
     }
+}
+
+/// The tracked results name no path of the machine that made them: a case file under
+/// `results/` (a `wall_table`, a `--surface`) must rerun from a clone, and a manifest's inputs
+/// must be where a clone has them. So no TOML string there starts with `/`, and no file names
+/// a temporary directory (`scripts/common.sh` writes paths relative to the repository).
+#[test]
+fn tracked_results_name_no_path_of_the_machine_that_made_them() {
+    let mut found = Vec::new();
+    for rel in tracked_results() {
+        let Ok(text) = std::fs::read_to_string(repo_root().join("results").join(&rel)) else {
+            continue; // not text
+        };
+        let is_toml = rel.extension().is_some_and(|x| x == "toml");
+        for (k, line) in text.lines().enumerate() {
+            let absolute = is_toml
+                && (line.contains("= \"/") || line.contains("[\"/") || line.contains(", \"/"));
+            if absolute || line.contains("/tmp/") {
+                found.push(format!(
+                    "results/{}:{}: {}",
+                    rel.display(),
+                    k + 1,
+                    line.trim()
+                ));
+            }
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "{} lines of the tracked results name a machine's path (rerun the reproduction with \
+         REBOUND_RESULTS unset), the first: {:#?}",
+        found.len(),
+        &found[..found.len().min(5)]
+    );
 }
 
 fn reproduce_quick(out: &Path) -> String {

@@ -345,7 +345,11 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
          error of mean α⁺ where the bias is worst: the scan's 16 sub-patches are its clusters, so \
          it holds the spread between the scan's parts, what the reference is uncertain by as \
          the law of the wall rather than of the part it samples (it does not enter the goal, \
-         which is set against the reference itself). The Gaussian walls' verdict has a floor of \
+         which is set against the reference itself). The reference's entry region follows the \
+         direction (its margins grow with cot α⁻, and most downstream), so on a scan whose parts \
+         differ its law moves with the window as well as with the physics: \
+         [design-notes.md](../docs/design-notes.md) (\"The window moves with the direction\") \
+         measures what that does to the goal on the metal walls. The Gaussian walls' verdict has a floor of \
          its own, because the scan is one realisation: one Gaussian wall of the size and pixel \
          of the block the reference bounced on, with the particle's card deviations and the \
          correlation area the card measured for it (the block holds as many correlation areas \

@@ -85,6 +85,30 @@ fn tracked_results_name_no_path_of_the_machine_that_made_them() {
     );
 }
 
+/// What keeps the tracked results free of machine paths at their source: with
+/// `REBOUND_RESULTS` unset, `scripts/common.sh` writes into `results` relative to the
+/// repository, so the case files and manifests the scripts write name repository paths.
+#[test]
+fn the_scripts_write_into_a_results_root_relative_to_the_repository() {
+    let run = Command::new("bash")
+        .arg("-c")
+        .arg("source \"$1\" && printf '%s' \"$OUT\"")
+        .arg("bash")
+        .arg(repo_root().join("scripts/common.sh"))
+        .current_dir(repo_root().join("src")) // common.sh moves to the root itself
+        .env_remove("REBOUND_RESULTS")
+        .env("REBOUND_BIN", rebound_bin()) // no build
+        .env("REBOUND_NESTED", "1") // leave the run log as it is
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert_eq!(String::from_utf8_lossy(&run.stdout), "results");
+}
+
 fn reproduce_quick(out: &Path) -> String {
     let run = Command::new("bash")
         .arg(repo_root().join("scripts/reproduce-all.sh"))

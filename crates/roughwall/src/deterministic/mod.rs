@@ -25,6 +25,7 @@ use crate::tally::{
     ModelKind, Outcome, Quantity, TallySpec, BLOCK_SIZE,
 };
 use crate::wall::Deviations;
+use nalgebra::Vector3;
 use rand::Rng;
 use rayon::prelude::*;
 
@@ -182,21 +183,89 @@ pub(crate) fn history_entered<R: Rng + ?Sized>(
     r: &mut R,
     observe: impl FnMut(&HitInfo),
 ) -> History {
-    let (lx, lz) = tracker.periods();
-    let mut r = r;
-    let u_h = draw_speed(&setup.speed, &mut r);
-    let u = setup.speed.velocity(cond.alpha_in, cond.beta_in, u_h);
-    let w = setup.spin.draw(&mut r);
-    let collide = |u, w, n| setup.law.collide(u, w, n, setup.diameter_m);
-    let Some(patch) = tracker.patch() else {
-        return tracker.trace_observed(a * lx, b * lz, u, w, collide, observe);
-    };
-    // On a measured patch the incident direction is turned by the lay, not the wall.
-    let (u, w) = (patch.to_field(&u), patch.to_field(&w));
-    let (x, z) = patch.start(cond.alpha_in, &u, a, b);
-    let mut observe = observe;
-    let h = tracker.trace_observed(x, z, u, w, collide, |hit| observe(&hit.to_models(patch)));
-    h.to_models(patch)
+    Entry::draw(tracker, setup, cond, r).history(tracker, setup, (a, b), observe)
+}
+
+/// What a history takes from its condition before it enters: its incident velocity and spin
+/// (in the walk's axes) and, on a patch, the entry region's margins. A history draws its own
+/// ([`history_entered`]); the histories of a condition whose speed and spin have no spread
+/// share one (a measured-wall table's build), which saves their trigonometry.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Entry {
+    u: Vector3<f64>,
+    w: Vector3<f64>,
+    margins: Option<Margins>,
+}
+
+impl Entry {
+    /// The entry of condition `cond`, its speed and spin drawn from `r` (nothing is drawn
+    /// for a law without spread).
+    #[inline]
+    pub(crate) fn draw<R: Rng + ?Sized>(
+        tracker: &Tracker<'_>,
+        setup: &ModelSetup,
+        cond: &IncidentCondition,
+        r: &mut R,
+    ) -> Entry {
+        let mut r = r;
+        let u_h = draw_speed(&setup.speed, &mut r);
+        let u = setup.speed.velocity(cond.alpha_in, cond.beta_in, u_h);
+        let w = setup.spin.draw(&mut r);
+        match tracker.patch() {
+            None => Entry {
+                u,
+                w,
+                margins: None,
+            },
+            Some(patch) => {
+                // On a measured patch the incident direction is turned by the lay, not the wall.
+                let (u, w) = (patch.to_field(&u), patch.to_field(&w));
+                Entry {
+                    u,
+                    w,
+                    margins: Some(patch.margins(cond.alpha_in, &u)),
+                }
+            }
+        }
+    }
+
+    /// Where the uniform numbers `(a, b)` enter, in the walk's axes.
+    #[inline]
+    pub(crate) fn start(&self, tracker: &Tracker<'_>, (a, b): (f64, f64)) -> (f64, f64) {
+        match (tracker.patch(), &self.margins) {
+            (Some(patch), Some(m)) => patch.start_in(m, a, b),
+            _ => {
+                let (lx, lz) = tracker.periods();
+                (a * lx, b * lz)
+            }
+        }
+    }
+
+    /// The incident velocity in the walk's axes.
+    pub(crate) fn velocity(&self) -> Vector3<f64> {
+        self.u
+    }
+
+    /// The history that enters at `(a, b)`.
+    #[inline]
+    pub(crate) fn history(
+        &self,
+        tracker: &Tracker<'_>,
+        setup: &ModelSetup,
+        (a, b): (f64, f64),
+        observe: impl FnMut(&HitInfo),
+    ) -> History {
+        let collide = |u, w, n| setup.law.collide(u, w, n, setup.diameter_m);
+        let (x, z) = self.start(tracker, (a, b));
+        let Some(patch) = tracker.patch() else {
+            return tracker.trace_observed(x, z, self.u, self.w, collide, observe);
+        };
+        let mut observe = observe;
+        let h = tracker.trace_observed(x, z, self.u, self.w, collide, |hit| {
+            observe(&hit.to_models(patch))
+        });
+        h.to_models(patch)
+    }
 }
 
 /// The tallied record of a followed history (`None` for a lost one).

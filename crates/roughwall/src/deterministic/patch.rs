@@ -126,7 +126,13 @@ impl Patch {
     /// region for incident angle `alpha_in` and velocity `u` (tracker's axes).
     #[inline]
     pub fn start(&self, alpha_in: f64, u: &Vector3<f64>, a: f64, b: f64) -> (f64, f64) {
-        let m = self.margins(alpha_in, u).sides;
+        self.start_in(&self.margins(alpha_in, u), a, b)
+    }
+
+    /// [`Self::start`] in the region of margins `margins`.
+    #[inline]
+    pub fn start_in(&self, margins: &Margins, a: f64, b: f64) -> (f64, f64) {
+        let m = margins.sides;
         let x = m[0] + a * (self.extent.0 - m[0] - m[1]);
         let z = m[2] + b * (self.extent.1 - m[2] - m[3]);
         (x, z)

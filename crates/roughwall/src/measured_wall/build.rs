@@ -294,8 +294,8 @@ fn shoot(tracker: &Tracker<'_>, setup: &ModelSetup, cell: &CellShots, i: u64) ->
     }
 }
 
-/// Histories a build holds at once (their order, their shots): about 150 MB, whatever the
-/// histories per cell.
+/// Histories a build holds at once (their order, where each is shot, their shots: 32 bytes
+/// each, 64 MiB), whatever the histories per cell.
 const SHOTS_IN_FLIGHT: u64 = 1 << 21;
 
 /// Histories shot by one task.
@@ -303,11 +303,11 @@ const SHOT_CHUNK: usize = 2048;
 
 /// The laws of `cells`, `n` histories each. Histories are shot in the order of where they
 /// are expected to meet the wall ([`LocalityKey`]), across as many cells at once as
-/// `in_flight` histories allow ([`SHOTS_IN_FLIGHT`]), then each cell's are taken in their own order: the heights
-/// and tile maxima a history reads are then mostly those its predecessor read, where shooting
-/// cell by cell met a new part of a wall larger than the caches at every history (a 4096²
-/// scan holds 128 MiB of heights). Only the order changes, not a history: the table is the
-/// same for any order and thread count.
+/// `in_flight` histories allow ([`SHOTS_IN_FLIGHT`]), then each cell's are taken in their own
+/// order: the heights and tile maxima a history reads are then mostly those its predecessor
+/// read, where shooting cell by cell met a new part of a wall larger than the caches at every
+/// history (a 4096² scan holds 128 MiB of heights). Only the order changes, not a history:
+/// the table is the same for any order and thread count.
 fn shoot_cells(
     tracker: &Tracker<'_>,
     setup: &ModelSetup,

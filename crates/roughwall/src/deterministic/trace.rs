@@ -157,7 +157,9 @@ struct Tiles {
     shz: u32,
     ntx: usize,
     ntz: usize,
-    /// Each tile's highest node, in blocks of `MAX_BLOCK × MAX_BLOCK` tiles ([`Tiles::at`]).
+    /// Blocks of [`MAXIMA_BLOCK`]² tiles along `x`.
+    blocks_x: usize,
+    /// Each tile's highest node, in blocks of [`MAXIMA_BLOCK`]² tiles ([`Tiles::at`]).
     max: Vec<f64>,
 }
 
@@ -165,16 +167,15 @@ struct Tiles {
 /// neighbouring tiles along `x` and `z` alike, and row-major maxima put the next tile along
 /// `z` a row (`8 · ntx` bytes) away, a cache line and often a page of its own; an 8 × 8 block
 /// is 512 contiguous bytes. Only the layout changes, not a value read.
-const MAX_BLOCK: usize = 8;
+const MAXIMA_BLOCK: usize = 8;
 
 impl Tiles {
     /// Index of tile `(tx, tz)` (wrapped) in [`Tiles::max`].
     #[inline]
     fn at(&self, tx: usize, tz: usize) -> usize {
-        let blocks_x = self.ntx.div_ceil(MAX_BLOCK);
-        ((tz / MAX_BLOCK) * blocks_x + tx / MAX_BLOCK) * MAX_BLOCK * MAX_BLOCK
-            + (tz % MAX_BLOCK) * MAX_BLOCK
-            + tx % MAX_BLOCK
+        ((tz / MAXIMA_BLOCK) * self.blocks_x + tx / MAXIMA_BLOCK) * MAXIMA_BLOCK * MAXIMA_BLOCK
+            + (tz % MAXIMA_BLOCK) * MAXIMA_BLOCK
+            + tx % MAXIMA_BLOCK
     }
 }
 
@@ -275,12 +276,13 @@ impl<'a> Tracker<'a> {
                     shz: twz.trailing_zeros(),
                     ntx,
                     ntz,
+                    blocks_x: ntx.div_ceil(MAXIMA_BLOCK),
                     max: vec![
                         f64::NEG_INFINITY;
-                        ntx.div_ceil(MAX_BLOCK)
-                            * ntz.div_ceil(MAX_BLOCK)
-                            * MAX_BLOCK
-                            * MAX_BLOCK
+                        ntx.div_ceil(MAXIMA_BLOCK)
+                            * ntz.div_ceil(MAXIMA_BLOCK)
+                            * MAXIMA_BLOCK
+                            * MAXIMA_BLOCK
                     ],
                 };
                 for tz in 0..ntz {

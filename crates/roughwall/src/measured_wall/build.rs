@@ -298,7 +298,8 @@ fn shoot(tracker: &Tracker<'_>, setup: &ModelSetup, cell: &CellShots, i: u64) ->
 /// each, 64 MiB), whatever the histories per cell.
 const SHOTS_IN_FLIGHT: u64 = 1 << 21;
 
-/// Histories shot by one task.
+/// Histories shot by one task: a thousand tasks in a group of [`SHOTS_IN_FLIGHT`], so that
+/// two threads finish together, each a run of neighbours on the wall.
 const SHOT_CHUNK: usize = 2048;
 
 /// The laws of `cells`, `n` histories each. Histories are shot in the order of where they

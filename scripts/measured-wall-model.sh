@@ -47,8 +47,10 @@ own_case() {
   if [ -n "$st" ]; then
     printf '\n[stochastic]\n%b' "$st"
   else
-    # The reference levels the scan as its card did.
+    # The reference levels the scan as its card did, and enters over the one region the
+    # particle's table was built on (the card's measured_wall_entry_alpha_deg).
     printf '\n[deterministic]\nscan_level_degree = %s\n' "$DEGREE"
+    [ -z "$ENTRY" ] || printf 'entry_alpha_deg = %s\n' "$ENTRY"
     [ "$d" = 0 ] || printf 'contact = "sphere"\n'
   fi
 }
@@ -74,6 +76,9 @@ for entry in ${REBOUND_MODEL_SCANS:-$P_MODEL_SCANS}; do
     xi=$(card_value "$card" "$d" delta_xi_deg)
     ze=$(card_value "$card" "$d" delta_zeta_deg)
     table=$(card_value "$card" "$d" measured_wall_table)
+    # A particle without a table enters as the point particle's table did.
+    ENTRY=$(card_value "$card" "$d" measured_wall_entry_alpha_deg)
+    [ -n "$ENTRY" ] || ENTRY=$(card_value "$card" 0 measured_wall_entry_alpha_deg)
     [ -n "$xi" ] && [ -n "$ze" ] || { echo "measured-wall-model.sh: no deviations for $d µm in $card" >&2; exit 1; }
     # Every run of this particle bins its PDFs alike, finely enough for its spread (common.sh).
     BIN=$(bin_width_for "$xi" "$ze")

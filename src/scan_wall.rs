@@ -84,13 +84,14 @@ pub fn scan_wall(path: &Path, opt: &DeterministicOptions) -> Result<Option<ScanW
     let (built, met) = match opt.scan_reference {
         ScanReference::InPlace => {
             let t1 = std::time::Instant::now();
-            let wall = in_place_wall(
+            let mut wall = in_place_wall(
                 &c.levelled,
                 lay.angle,
                 opt.sphere_diameter_m,
                 opt.triangulation,
             )
             .map_err(named)?;
+            wall.entry_alpha = opt.entry_alpha;
             let dilation_s = t1.elapsed().as_secs_f64();
             let [x0, y0, nx, ny] = wall.crop;
             put(
@@ -113,6 +114,20 @@ pub fn scan_wall(path: &Path, opt: &DeterministicOptions) -> Result<Option<ScanW
             };
             put("height_range_um", (range * 1e6).into());
             put("margin_flights", MARGIN_FLIGHTS.into());
+            put(
+                "entry_region",
+                match opt.entry_alpha {
+                    Some(a) => format!(
+                        "one for every direction: the margins of |α⁻| = {}° on every side",
+                        crate::output::fmt_num(a.to_degrees())
+                    ),
+                    None => {
+                        "follows each direction (its margins grow with cot α⁻, most downstream)"
+                            .to_string()
+                    }
+                }
+                .into(),
+            );
             put("left_patch_bound", LEFT_PATCH_BOUND.into());
             put(
                 "wall",

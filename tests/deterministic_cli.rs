@@ -663,6 +663,85 @@ fn a_measured_scan_is_a_wall_to_bounce_on() {
     );
 }
 
+/// `entry_alpha_deg` on a scan in place: one entry region for every direction, that of the
+/// angle's margins on every side (what a measured-wall table's build takes), recorded in
+/// `run.toml`; the histories then sample the same part of the scan at every direction, so a
+/// run differs from the one whose region follows the direction. Anywhere else (a generated
+/// wall, the mirrored reference) or out of range, it is one line naming the key, exit 2.
+#[test]
+fn one_entry_region_on_a_scan_in_place() {
+    let dir = Dir::new();
+    let x3p = repo_root().join("tests/data/scans/x3p-2.x3p");
+    let edits = [
+        ("beta_deg = [0.0, 60.0]", "beta_deg = [0.0, 90.0]"),
+        ("count = 2000", "count = 1000"),
+    ];
+    let follows = case_with(dir.path(), &edits);
+    let one_dir = dir.join("one");
+    std::fs::create_dir(&one_dir).unwrap();
+    let one = case_with(
+        &one_dir,
+        &[
+            edits[0],
+            edits[1],
+            (
+                "side_per_corr_length = 20.0",
+                "side_per_corr_length = 20.0\nentry_alpha_deg = 1.0",
+            ),
+        ],
+    );
+    let (out_f, out_1) = (dir.join("follows"), dir.join("one-region"));
+    for (case, out) in [(&follows, &out_f), (&one, &out_1)] {
+        run_case(
+            "deterministic",
+            case,
+            out,
+            &["--surface", x3p.to_str().unwrap()],
+        );
+    }
+    let region = |out: &Path| -> String {
+        let m: toml::Table =
+            toml::from_str(&std::fs::read_to_string(out.join("run.toml")).unwrap()).unwrap();
+        m["scan"]["entry_region"].as_str().unwrap().to_string()
+    };
+    assert!(
+        region(&out_f).starts_with("follows each direction"),
+        "{}",
+        region(&out_f)
+    );
+    assert!(
+        region(&out_1).contains("one for every direction") && region(&out_1).contains("= 1°"),
+        "{}",
+        region(&out_1)
+    );
+    // The same histories (seed, numbers) entered elsewhere: other rebounds.
+    let mean = |out: &Path, k: usize| {
+        Csv::read(&out.join("summary.csv"))
+            .row(k)
+            .num("mean_alpha_out_deg")
+    };
+    for k in 0..2 {
+        assert_ne!(mean(&out_f, k), mean(&out_1, k), "condition {k}");
+    }
+    let key = "deterministic.entry_alpha_deg";
+    let with = |v: &str| {
+        (
+            "side_per_corr_length = 20.0",
+            format!("side_per_corr_length = 20.0\nentry_alpha_deg = {v}"),
+        )
+    };
+    for v in ["0.0", "91.0", "-5.0"] {
+        let (a, b) = with(v);
+        refuses(&[(a, &b)], &["--surface", x3p.to_str().unwrap()], key);
+    }
+    // A generated wall has no entry region.
+    let (a, b) = with("5.0");
+    refuses(&[(a, &b)], &[], key);
+    // Nor has the mirrored reference.
+    let b = format!("{b}\nscan_wall = \"mirrored\"");
+    refuses(&[(a, &b)], &["--surface", x3p.to_str().unwrap()], key);
+}
+
 /// A sphere on a scan in place (issue 39, part 1): its centre rides on the scan's centre
 /// surface, known on a block that loses the dilation's reach at the edges; `run.toml` records
 /// the sphere's contact and the block, and the sphere sees smaller deviations than the point.

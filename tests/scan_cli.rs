@@ -968,12 +968,15 @@ fn refined_rows(out: &Path) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// On a striated metal land whose law bends between the base rows (x3ptools' sample-land,
-/// between 30° and 46°: docs/design-notes.md, "Rows per wall"), the point particle's table
-/// adds rows there, midpoints of base intervals, and only there; the table file lists them
-/// and reads back with them.
+/// On a striated metal land (x3ptools' sample-land) the point particle's table adds no row:
+/// with one entry region for every direction its law is smooth between the base rows. Where
+/// the region followed the direction, it slid across the land and the law bent near 39° with
+/// it, and the build added six rows there (docs/design-notes.md, "Rows per wall" and "One
+/// entry region"); rows are still added where a law bends (`measured_wall::refine`'s tests).
+/// The table file lists its rows and reads back with them; the card names the region its
+/// reference takes.
 #[test]
-fn a_wall_whose_law_bends_gets_rows_of_its_own_where_it_bends() {
+fn one_entry_region_leaves_the_metal_land_no_bend_to_follow() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("card");
     run_case(
@@ -983,18 +986,18 @@ fn a_wall_whose_law_bends_gets_rows_of_its_own_where_it_bends() {
         &["--measured-wall"],
     );
     let rows = refined_rows(&out);
-    assert_eq!(rows.len(), 1, "{rows:?}");
-    let added = &rows[0];
-    assert!(!added.is_empty(), "no row added on sample-land");
-    let base = roughwall::measured_wall::ALPHA_ROWS_DEG;
-    for a in added {
-        assert!((30.0..=46.0).contains(a), "{added:?}");
-        let i = base.iter().position(|b| b > a).unwrap();
-        assert_eq!(*a, 0.5 * (base[i - 1] + base[i]), "{added:?}");
-    }
+    assert_eq!(rows, vec![Vec::<f64>::new()]);
     let text = std::fs::read_to_string(out.join("measured_wall_point.txt")).unwrap();
     let table = roughwall::measured_wall::MeasuredWallTable::parse(&text, "t").unwrap();
-    assert_eq!(&table.refined_rows_deg(), added);
+    assert_eq!(
+        table.alpha_rows_deg,
+        roughwall::measured_wall::ALPHA_ROWS_DEG
+    );
+    let entry = card(&out)["wall"]["measured_wall_entry_alpha_deg"]
+        .as_integer()
+        .map(|a| a as f64)
+        .or_else(|| card(&out)["wall"]["measured_wall_entry_alpha_deg"].as_float());
+    assert_eq!(entry, Some(roughwall::measured_wall::ENTRY_ALPHA_DEG));
 }
 
 /// The wall's own model against its goal on small real scans (issue 39, "Done when"), the
@@ -1041,6 +1044,17 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal_or_comes_close() {
             refined_rows(&out)
         );
         let card_file = out.join("wall_card.toml");
+        // The reference enters over the region the table was built on, as the card says.
+        let row = match diameter > 0.0 {
+            true => card(&out)["diameter"].as_array().unwrap()[0].clone(),
+            false => card(&out)["wall"].clone(),
+        };
+        let entry = &row["measured_wall_entry_alpha_deg"];
+        let entry = entry
+            .as_float()
+            .or(entry.as_integer().map(|a| a as f64))
+            .unwrap();
+        assert_eq!(entry, roughwall::measured_wall::ENTRY_ALPHA_DEG, "{tag}");
         // plu-1's heights are whole 3.906 nm steps, 0.98 of its smaller deviation over the
         // pixel: its card says so; metropro-1's steps (0.009 nm) and opd-1's heights do not show.
         let quantized = card(&out)["notes"]
@@ -1067,7 +1081,7 @@ fn on_small_real_scans_the_walls_own_model_meets_its_goal_or_comes_close() {
         let reference_case = write_case(
             dir.path(),
             &format!("ref-{tag}.toml"),
-            &format!("{base}\n[deterministic]\nscan_level_degree = 1\n{contact}"),
+            &format!("{base}\n[deterministic]\nscan_level_degree = 1\nentry_alpha_deg = {entry}\n{contact}"),
         );
         let reference = dir.path().join(format!("ref-{tag}"));
         rebound(&[

@@ -41,6 +41,9 @@ pub struct DeterministicOptions {
     pub scan_reference: ScanReference,
     /// The degree a measured scan is levelled by (`[deterministic] scan_level_degree`).
     pub scan_level_degree: u32,
+    /// On a scan in place: one entry region for every direction, that of this `|α⁻|` (rad;
+    /// `[deterministic] entry_alpha_deg`); `None`: the region follows each direction.
+    pub entry_alpha: Option<f64>,
 }
 
 /// `[deterministic] triangulation`, validated: how the cells of a generated or read surface
@@ -174,12 +177,31 @@ pub fn deterministic_options(case: &Case, height_file: bool) -> Result<Determini
         3,
         "1 (a plane), 2 or 3: the total degree of the polynomial form removed from a scan given as --surface",
     )? as u32;
+    let entry_alpha = match d.entry_alpha_deg {
+        None => None,
+        Some(a) => {
+            if scan_reference != ScanReference::InPlace {
+                return Err(Error::Input(format!(
+                    "deterministic.entry_alpha_deg = {a}: only for a scan bounced on in place (scan_wall = \"in-place\"); the mirrored wall is periodic and has no entry region"
+                )));
+            }
+            let a = check_range(
+                "deterministic.entry_alpha_deg",
+                a,
+                MIN_ABS_ALPHA_DEG,
+                90.0,
+                "an angle |α⁻| from 0.001 to 90 degrees whose margins fix one entry region for every direction of a scan in place",
+            )?;
+            Some(a.to_radians())
+        }
+    };
     Ok(DeterministicOptions {
         max_collisions: mc as u32,
         triangulation,
         surfaces: surfaces as u32,
         scan_reference,
         scan_level_degree,
+        entry_alpha,
         scene: SceneOptions {
             spacing_per_corr_length: spc,
             side_per_corr_length: side,

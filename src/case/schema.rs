@@ -222,6 +222,11 @@ pub struct DeterministicSection {
     /// default; 2 or 3 remove a curved form, as `[scan] level_degree` does for `scan`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub scan_level_degree: Option<i64>,
+    /// On a scan in place: one entry region for every incident direction, the margins of
+    /// this `|α⁻|` (degrees) on every side, as a measured-wall table's build takes them (the
+    /// wall card's `measured_wall_entry_alpha_deg`); unset, the region follows each direction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub entry_alpha_deg: Option<f64>,
 }
 
 /// `[scan]` for `scan`: the scan of a wall (without `file`, the case's `[wall]` or `[surface]`

@@ -12,7 +12,7 @@ use crate::writers::deterministic::{finish, sphere_table, surface_table};
 use roughwall::deterministic::fill_block;
 use roughwall::deterministic::{build_surfaces, realisations, BuiltSurface, SphereDilation};
 use roughwall::HeightField;
-use roughwall::Result;
+use roughwall::{Error, Result};
 
 /// Runs the subcommand.
 pub fn run(args: &DeterministicArgs) -> Result<Summary> {
@@ -56,6 +56,12 @@ pub fn run(args: &DeterministicArgs) -> Result<Summary> {
         Some(path) => crate::scan_wall::scan_wall(path, &p.options)?,
         None => None,
     };
+    if let (Some(a), None) = (p.options.entry_alpha, &scan) {
+        return Err(Error::Input(format!(
+            "deterministic.entry_alpha_deg = {}: only for a measured scan given as --surface and bounced on in place; a generated or periodic wall has no entry region",
+            crate::output::fmt_num(a.to_degrees())
+        )));
+    }
     let mut met = None;
     let built = match scan {
         // A measured scan: in place, or turned to its lay and mirror-tiled.

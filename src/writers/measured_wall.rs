@@ -72,6 +72,10 @@ pub fn table_lines(t: &MeasuredWallEntry) -> String {
             "measured_wall_table = {}    # model = \"measured-wall\"\n",
             toml_str(f)
         );
+        s += &format!(
+            "measured_wall_entry_alpha_deg = {}    # its reference: deterministic with [deterministic] entry_alpha_deg = this\n",
+            crate::output::fmt_num(roughwall::measured_wall::ENTRY_ALPHA_DEG)
+        );
     }
     if !t.note.is_empty() {
         s += &format!("measured_wall_note = {}\n", toml_str(&t.note));
@@ -97,6 +101,10 @@ pub fn manifest_entries(entries: &[MeasuredWallEntry]) -> toml::Value {
             if let Some(f) = &e.file {
                 t.insert("file".into(), f.clone().into());
                 t.insert("lowest_alpha_deg".into(), e.lowest_alpha_deg.into());
+                t.insert(
+                    "entry_alpha_deg".into(),
+                    roughwall::measured_wall::ENTRY_ALPHA_DEG.into(),
+                );
                 t.insert("max_left_share".into(), e.max_left_share.into());
                 t.insert(
                     "refined_rows_deg".into(),

@@ -247,6 +247,90 @@ fn margins_and_frames() {
     assert!((m.sides[1] / m.sides[0] - 2.0).abs() < 1e-9);
 }
 
+/// One entry region for every direction (`Patch::with_entry_alpha`): on every side the
+/// largest margin a direction at `α_e` asks (`3 Δh · max(1, cot α_e)` and the whole downstream
+/// share), whatever the direction the history comes from; cut to 80 % of a side in equal
+/// parts. Unset, the margins follow the direction as before.
+#[test]
+fn one_entry_region_for_every_direction() {
+    let p = Patch::new(1001, 501, 1.0, 1.0, 2.0, 30f64.to_radians());
+    let fixed = p.with_entry_alpha(Some(45f64.to_radians()));
+    let directions = [
+        (45.0f64, nalgebra::Vector3::new(1.0, -1.0, 0.0)),
+        (10.0, nalgebra::Vector3::new(-0.3, -0.2, 0.9)),
+        (80.0, nalgebra::Vector3::new(0.0, -1.0, -0.1)),
+    ];
+    for (alpha, u) in directions {
+        let m = fixed.margins(-alpha.to_radians(), &u);
+        assert!(!m.clamped);
+        // At 45°: 3 · 2 · 1 on every side, and 3 · 2 · 1 more for the downstream share.
+        assert!(
+            m.sides.iter().all(|&s| (s - 12.0).abs() < 1e-12),
+            "{:?}",
+            m.sides
+        );
+        assert_eq!(
+            fixed.start_in(&m, 0.25, 0.5),
+            (12.0 + 0.25 * 976.0, 12.0 + 0.5 * 476.0)
+        );
+    }
+    // The region holds every direction's own region at α_e: each side is at least the
+    // margin that direction alone would keep there.
+    for beta in (0..24).map(|j| (j as f64 * 15.0).to_radians()) {
+        let u = roughwall::incidence::incident_velocity(-45f64.to_radians(), beta, 1.0);
+        let own = p.margins(-45f64.to_radians(), &u);
+        let one = fixed.margins(-45f64.to_radians(), &u);
+        for (o, f) in own.sides.iter().zip(one.sides) {
+            assert!(*o <= f + 1e-12, "{:?} against {:?}", own.sides, one.sides);
+        }
+    }
+    // Grazing α_e on this patch: every side cut to 40 % of its side, for every direction.
+    let grazing = p.with_entry_alpha(Some(1f64.to_radians()));
+    for (alpha, u) in directions {
+        let m = grazing.margins(-alpha.to_radians(), &u);
+        assert!(m.clamped);
+        for (k, want) in [400.0, 400.0, 200.0, 200.0].into_iter().enumerate() {
+            assert!((m.sides[k] - want).abs() < 1e-9, "{:?}", m.sides);
+        }
+    }
+    // Unset: the region follows the direction (the downstream side keeps more).
+    let own = p
+        .with_entry_alpha(None)
+        .margins(-45f64.to_radians(), &directions[0].1);
+    assert_eq!(
+        own.sides,
+        p.margins(-45f64.to_radians(), &directions[0].1).sides
+    );
+    assert!(own.sides[1] > own.sides[0]);
+}
+
+/// A tracker with one entry region enters every direction over it: the same uniform numbers
+/// start at the same point whatever the direction, and on a periodic wall nothing changes.
+#[test]
+fn a_tracker_with_one_entry_region() {
+    let f = wall(5.0, 5.0, 4.0, 8.0, 3);
+    let t = Tracker::in_place(&f, 1000, 0.2)
+        .unwrap()
+        .with_entry_alpha(Some(5f64.to_radians()));
+    let p = *t.patch().unwrap();
+    let starts: Vec<(f64, f64)> = [(-5.0, 0.0), (-30.0, 90.0), (-70.0, -135.0)]
+        .into_iter()
+        .map(|(a, b): (f64, f64)| {
+            let u = p.to_field(&roughwall::incidence::incident_velocity(
+                a.to_radians(),
+                b.to_radians(),
+                1.0,
+            ));
+            p.start(a.to_radians(), &u, 0.3, 0.7)
+        })
+        .collect();
+    assert!(starts.windows(2).all(|w| w[0] == w[1]), "{starts:?}");
+    let periodic = Tracker::new(&f, 1000)
+        .unwrap()
+        .with_entry_alpha(Some(5f64.to_radians()));
+    assert!(periodic.patch().is_none());
+}
+
 /// `in_place_wall` keeps the scan's own nodes: rows reversed (the tracker's `z` is the
 /// scan's `−y`), cut to a multiple of 8; for a sphere, the centre surface's exact block, with
 /// the contact share of the periodic dilation of the same wall; a missing point inside is

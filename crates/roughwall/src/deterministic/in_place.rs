@@ -74,12 +74,19 @@ pub struct InPlaceWall {
     /// The deviations of this wall's own triangles along and across the lay (for a sphere,
     /// those of its centre surface): what the particles met.
     pub deviations: Option<crate::scan::Lay>,
+    /// `Some(α_e)` (rad): one entry region for every direction, that of `|α⁻| = α_e`
+    /// ([`crate::deterministic::Patch::with_entry_alpha`]); `None` (what [`in_place_wall`]
+    /// gives): margins that follow each direction.
+    pub entry_alpha: Option<f64>,
 }
 
 impl InPlaceWall {
     /// The tracker that walks this wall in place, its incident directions turned by the lay.
     pub fn tracker(&self) -> Result<super::Tracker<'_>> {
-        super::Tracker::in_place(&self.field, super::DEFAULT_MAX_COLLISIONS, self.lay_angle)
+        Ok(
+            super::Tracker::in_place(&self.field, super::DEFAULT_MAX_COLLISIONS, self.lay_angle)?
+                .with_entry_alpha(self.entry_alpha),
+        )
     }
 
     /// The deviations the particles meet: this wall's own, or `lay`'s (the whole scan's)
@@ -192,6 +199,7 @@ pub fn in_place_wall(
         area_fraction: (nx * ny) as f64 / (f.nx * f.ny) as f64,
         contact_fraction,
         deviations,
+        entry_alpha: None,
     })
 }
 

@@ -28,6 +28,9 @@ pub struct Patch {
     pub height_range: f64,
     /// Lay angle `φ` (rad): the models' `x` is the scan's `x` turned by `φ` towards its `y`.
     pub lay_angle: f64,
+    /// `Some(α_e)`: one entry region for every direction, the margins of `|α⁻| = α_e` on
+    /// every side ([`Patch::with_entry_alpha`]); `None`: margins that follow each direction.
+    pub entry_alpha: Option<f64>,
     rotation: Rotation3<f64>,
 }
 
@@ -48,8 +51,23 @@ impl Patch {
             extent: ((nx.max(1) - 1) as f64 * dx, (nz.max(1) - 1) as f64 * dz),
             height_range,
             lay_angle,
+            entry_alpha: None,
             rotation: Rotation3::from_axis_angle(&Vector3::y_axis(), lay_angle),
         }
+    }
+
+    /// The same patch with one entry region for every incident direction (`Some(α_e)`, rad):
+    /// every side keeps the largest margin any direction at `|α⁻| = α_e` asks of it (its own
+    /// and the downstream share, [`Patch::margins`]), cut to [`MAX_MARGIN_SHARE`] of the side
+    /// in equal parts. Why: where the region follows the direction it slides across the scan
+    /// as `β⁻` turns and grows as `α⁻` steepens, so on a scan whose parts differ the law at
+    /// neighbouring directions differs by the part it was sampled on as well as by the physics
+    /// (0.6–0.9° in mean `α⁺` on a 3.9 mm metal scan at `α⁻ = −9°`; docs/design-notes.md). With
+    /// one region, two directions sample the same part of the wall; directions flatter than
+    /// `α_e` may then lose more histories off the scan, which are counted as always.
+    pub fn with_entry_alpha(mut self, entry_alpha: Option<f64>) -> Self {
+        self.entry_alpha = entry_alpha;
+        self
     }
 
     /// A vector of the models' frame (`x` along the lay) in the tracker's axes: `R_y(φ)`,
@@ -73,8 +91,11 @@ impl Patch {
     /// (grazing rebounds). So every side keeps [`MARGIN_FLIGHTS`]` · Δh · max(1, cot α⁻)`,
     /// and the downstream sides as much again, shared by the components of the horizontal
     /// direction. Together they take at most [`MAX_MARGIN_SHARE`] of a side.
+    /// With one entry region ([`Patch::with_entry_alpha`]) the margins are those of its
+    /// angle on every side, whatever `alpha_in` and `u`.
     pub fn margins(&self, alpha_in: f64, u: &Vector3<f64>) -> Margins {
         // α⁻ < 0 for an incident particle (docs/physics.md §1): its size is what counts.
+        let alpha_in = self.entry_alpha.unwrap_or(alpha_in);
         let tan = alpha_in.abs().tan();
         let cot = if tan > 0.0 { 1.0 / tan } else { f64::INFINITY };
         // A flat patch needs no margin (and Δh · ∞ would be NaN at α⁻ = 0).
@@ -92,12 +113,16 @@ impl Patch {
         } else {
             (0.0, 0.0)
         };
-        let mut sides = [
-            base + extra * (-cx).max(0.0),
-            base + extra * cx.max(0.0),
-            base + extra * (-cz).max(0.0),
-            base + extra * cz.max(0.0),
-        ];
+        let mut sides = match self.entry_alpha {
+            // Downstream may be any side: each keeps the whole downstream share.
+            Some(_) => [base + extra; 4],
+            None => [
+                base + extra * (-cx).max(0.0),
+                base + extra * cx.max(0.0),
+                base + extra * (-cz).max(0.0),
+                base + extra * cz.max(0.0),
+            ],
+        };
         let mut clamped = false;
         for (k, extent) in [self.extent.0, self.extent.1].into_iter().enumerate() {
             let (lo, hi) = (sides[2 * k], sides[2 * k + 1]);

@@ -312,7 +312,8 @@ pub fn realisations<'a>(
         .iter()
         .map(|b| {
             let tracker = match b.in_place_lay {
-                Some(lay) => Tracker::in_place(&b.field, max_collisions, lay),
+                Some(lay) => Tracker::in_place(&b.field, max_collisions, lay)
+                    .map(|t| t.with_entry_alpha(b.in_place_entry_alpha)),
                 None => Tracker::new(&b.field, max_collisions),
             };
             tracker.map_err(|e| match (e, file) {
@@ -388,6 +389,10 @@ pub struct BuiltSurface {
     /// A measured scan in place ([`super::in_place`]): its lay angle (rad); the tracker then
     /// takes the field as a non-periodic patch. `None`: a periodic wall.
     pub in_place_lay: Option<f64>,
+    /// On a measured scan in place: one entry region for every direction, that of
+    /// `|α⁻| = α_e` (rad, [`super::Patch::with_entry_alpha`]); `None`: the region follows
+    /// the direction.
+    pub in_place_entry_alpha: Option<f64>,
 }
 
 impl BuiltSurface {
@@ -401,6 +406,7 @@ impl BuiltSurface {
                 dilation_s,
             }),
             in_place_lay: Some(wall.lay_angle),
+            in_place_entry_alpha: wall.entry_alpha,
             field: wall.field,
             source: "scan",
             generate_s: secs,
@@ -462,6 +468,7 @@ pub fn surface_from_field(
             generate_s,
             sphere: None,
             in_place_lay: None,
+            in_place_entry_alpha: None,
         });
     };
     let t = std::time::Instant::now();
@@ -476,6 +483,7 @@ pub fn surface_from_field(
             dilation_s: t.elapsed().as_secs_f64(),
         }),
         in_place_lay: None,
+        in_place_entry_alpha: None,
     })
 }
 

@@ -348,6 +348,13 @@ impl<'a> Tracker<'a> {
         Ok(t)
     }
 
+    /// The same tracker with one entry region for every incident direction on its patch
+    /// ([`Patch::with_entry_alpha`]; nothing changes on a periodic wall).
+    pub fn with_entry_alpha(mut self, entry_alpha: Option<f64>) -> Self {
+        self.patch = self.patch.map(|p| p.with_entry_alpha(entry_alpha));
+        self
+    }
+
     /// The measured patch this tracker walks, if it is one ([`Tracker::in_place`]).
     pub fn patch(&self) -> Option<&Patch> {
         self.patch.as_ref()

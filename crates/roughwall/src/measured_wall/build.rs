@@ -3,7 +3,7 @@
 
 use super::effective_normal::effective_normal;
 use super::grid::{beta_column_deg, cell, ALPHA_ROWS_DEG, BETA_COLUMNS, RANK_BINS};
-use super::grid::{HISTORIES_PER_CELL, SERVED_LEFT_BOUND};
+use super::grid::{ENTRY_ALPHA_DEG, HISTORIES_PER_CELL, SERVED_LEFT_BOUND};
 use super::quantiles::{first_served_row, row_served, CellLaw};
 use super::refine::{refined_rows, Turn, MAX_REFINED_ROWS};
 use super::table::MeasuredWallTable;
@@ -181,8 +181,9 @@ struct MeasuredCell {
 /// (`diameter_m = None`) or a sphere of that diameter: the in-place reference's wall
 /// ([`crate::deterministic::in_place_wall`], for a sphere its centre surface), walked in place
 /// with its incident directions turned by the lay, and [`build_table`] with that wall's own
-/// deviations (the scan's, `lay`'s, where the block has none). What `rebound scan
-/// --measured-wall` and Python's `measured_wall_table` build.
+/// deviations (the scan's, `lay`'s, where the block has none). Every direction enters over one
+/// region, that of [`ENTRY_ALPHA_DEG`]. What `rebound scan --measured-wall` and Python's
+/// `measured_wall_table` build.
 pub fn scan_table(
     levelled: &crate::ScanField,
     lay: &crate::scan::Lay,
@@ -192,7 +193,9 @@ pub fn scan_table(
     opts: &BuildOptions,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<MeasuredWallTable> {
-    let wall = crate::deterministic::in_place_wall(levelled, lay.angle, diameter_m, triangulation)?;
+    let mut wall =
+        crate::deterministic::in_place_wall(levelled, lay.angle, diameter_m, triangulation)?;
+    wall.entry_alpha = Some(ENTRY_ALPHA_DEG.to_radians());
     build_table(
         &wall.tracker()?,
         wall.met_deviations(lay),

@@ -73,6 +73,14 @@ pub const ADDED_NOISE: f64 = 0.25;
 /// 9–15 s on a 4096² scan on 2 cores, depending on the day (docs/performance.md, row 25).
 pub const HISTORIES_PER_CELL: u64 = 17_711;
 
+/// The angle `|α⁻|` (degrees) whose margins fix the one entry region of every direction of a
+/// table built on a scan ([`crate::deterministic::Patch::with_entry_alpha`]): the grid's
+/// lowest row, so the region is that of the flattest direction the table could serve (on a scan
+/// of fewer than about 860 height ranges a side, the inner fifth of each side of its block). Every cell then samples the
+/// same part of the scan, and the in-place reference a table is judged against takes the same
+/// region (`[deterministic] entry_alpha_deg`, which the wall card states).
+pub const ENTRY_ALPHA_DEG: f64 = ALPHA_ROWS_DEG[0];
+
 /// The largest share of a cell's histories that may leave the scan for the cell to be
 /// served: a row with a cell above it (grazing incidence on a small scan) is not served, and
 /// incident angles below the lowest served row take that row's law (the table says so).

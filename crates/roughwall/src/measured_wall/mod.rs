@@ -41,7 +41,7 @@ pub use build::{build_table, scan_table, BuildOptions, BUILD_CELLS};
 pub use effective_normal::{effective_gammas, effective_normal};
 pub use grid::CELLS;
 pub use grid::{
-    ALPHA_ROWS_DEG, BETA_COLUMNS, HISTORIES_PER_CELL, LINEAR_BELOW_DEG, RANK_BINS,
+    ALPHA_ROWS_DEG, BETA_COLUMNS, ENTRY_ALPHA_DEG, HISTORIES_PER_CELL, LINEAR_BELOW_DEG, RANK_BINS,
     SERVED_LEFT_BOUND, XI_ADDED_BUDGET, XI_ADDED_TOLERANCE, XI_KNOTS, ZETA_ADDED_BUDGET,
     ZETA_ADDED_TOLERANCE, ZETA_KNOTS,
 };

@@ -187,12 +187,13 @@ fn without_added_knots(law: &CellLaw) -> CellLaw {
     CellLaw {
         xi: fixed(&law.xi),
         zeta: law.zeta.iter().map(fixed).collect(),
+        atoms: Default::default(),
         ..law.clone()
     }
 }
 
-/// A v4 table's text (of a table without added knots) as v3 wrote it: its magic line and
-/// cell header, and its cell lines without the counts of added knots.
+/// A v5 table's text (of a table without added knots or joint atoms) as v3 wrote it: its magic
+/// line and cell header, and its cell lines without the counts of added knots and atoms.
 fn as_v3(text: &str) -> String {
     let fields = LEADING + XI_KNOTS + RANK_BINS * ZETA_KNOTS;
     let mut cells = false;
@@ -204,12 +205,13 @@ fn as_v3(text: &str) -> String {
             out.push(f[..fields].join(","));
         } else if l.starts_with("row,") {
             out.push(
-                l.trim_end_matches(",(added,t_1e-9,knot_0.1urad...)x33")
+                l.trim_end_matches(",atoms,(xi_0.1urad,zeta_0.1urad,histories)...")
+                    .trim_end_matches(",(added,t_1e-9,knot_0.1urad...)x33")
                     .to_string(),
             );
             cells = true;
         } else {
-            out.push(l.replacen("table v4", "table v3", 1));
+            out.push(l.replacen("table v5", "table v3", 1));
         }
     }
     out.join("\n") + "\n"
@@ -260,7 +262,7 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     );
     // Truncated, another version, another grid, an edited `first_row`, not a table at all.
     assert!(err(&lines[..header + 3].join("\n")).contains("truncated after 2 of"));
-    assert!(err(&text.replacen("table v4", "table v1", 1)).contains("another format"));
+    assert!(err(&text.replacen("table v5", "table v1", 1)).contains("another format"));
     // The rows: the base rows must all be there, increasing, and at most 12 more.
     let rows_line = lines
         .iter()
@@ -327,7 +329,7 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     let prefix: Vec<&str> = first_cell.split(',').take(fields).collect();
     let prefix = prefix.join(",");
     let zeros = ",0".repeat(RANK_BINS);
-    let with = |xi: &str| text.replacen(first_cell, &format!("{prefix},{xi}{zeros}"), 1);
+    let with = |xi: &str| text.replacen(first_cell, &format!("{prefix},{xi}{zeros},0"), 1);
     // Just after the middle fixed knot (t = 0.5), at its value.
     let middle = prefix.split(',').nth(LEADING + 64).unwrap();
     let ok = with(&format!("1,501000000,{middle}"));
@@ -355,6 +357,44 @@ fn the_table_reads_back_bit_for_bit_and_an_edited_one_is_refused() {
     let zeta_nine = format!("{prefix},0,9{}", ",0".repeat(RANK_BINS - 1));
     let e = err(&text.replacen(first_cell, &zeta_nine, 1));
     assert!(e.contains("`9` added knots: allowed 0 to 8"), "{e}");
+    // Joint atoms: read back with their shares; refused out of order, beyond the cell's
+    // escaped histories or truncated; a v4 table (none) is read as it was written.
+    let atoms = |list: &str| text.replacen(first_cell, &format!("{prefix},0{zeros},{list}"), 1);
+    let back = MeasuredWallTable::parse(&atoms("2,-5,7,100,3,0,24"), "t").unwrap();
+    let a = &back.cells[0].atoms;
+    let escaped = a.histories() as f64 / a.share();
+    assert_eq!(
+        a.units().collect::<Vec<_>>(),
+        vec![(-5, 7, 100), (3, 0, 24)]
+    );
+    assert_eq!(
+        escaped.round(),
+        (table.cells[0].histories - table.cells[0].left_patch - table.cells[0].lost_other) as f64
+    );
+    assert_eq!(a.pick(0.0), (-5e-7, 7e-7));
+    assert!(MeasuredWallTable::parse(&back.to_text(), "t").unwrap() == back);
+    let e = err(&atoms("2,3,0,24,-5,7,100"));
+    assert!(e.contains("joint atoms out of order"), "{e}");
+    let e = err(&atoms("1,0,0,99999"));
+    assert!(e.contains("more than the cell's"), "{e}");
+    let e = err(&atoms("2,-5,7,100"));
+    assert!(e.contains("truncated joint atoms"), "{e}");
+    let e = err(&atoms("999"));
+    assert!(e.contains("joint atoms: allowed 0 to 320"), "{e}");
+    let v4: String = text
+        .lines()
+        .map(|l| match l {
+            l if l.starts_with('#') => l.replacen("table v5", "table v4", 1),
+            l if l.starts_with("row,") => l
+                .trim_end_matches(",atoms,(xi_0.1urad,zeta_0.1urad,histories)...")
+                .to_string(),
+            l if l.contains(',') && !l.contains(" = ") => l.strip_suffix(",0").unwrap().to_string(),
+            l => l.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(table.cells.iter().all(|c| c.atoms.is_empty()));
+    assert!(MeasuredWallTable::parse(&v4, "t").unwrap() == table);
     let grid = text.replacen("beta_columns = 24", "beta_columns = 12", 1);
     assert!(err(&grid).contains("this version's grid"));
     let first = text.replacen("first_row = 0", "first_row = 3", 1);

@@ -30,7 +30,8 @@ pub const XI_KNOTS: usize = 129;
 /// narrow specular peak of the law (a sphere on a striated metal wall) needs more: its `ξ'`
 /// paired with `ζ'` of other histories spreads it (docs/design-notes.md). 32 bins of 33
 /// knots keep a table with every row a build may add under 16 MiB of text before the knots
-/// a law with atoms adds ([`XI_ADDED_BUDGET`]); with every one of those, about 24 MiB.
+/// a law with atoms adds ([`XI_ADDED_BUDGET`]); with every one of those, about 24 MiB, and
+/// with every joint atom a cell may hold ([`super::MAX_ATOMS`]), about 38 MiB.
 pub const RANK_BINS: usize = 32;
 
 /// Knots of each rank bin's quantile function of `ζ'`.
@@ -70,8 +71,12 @@ pub const ADDED_NOISE: f64 = 0.25;
 /// about `0.87/√n` ≈ 0.0065 and an error of mean `α⁺` of `σ(α⁺)/√n`: 0.001–0.12° on the
 /// shipped scans, whose `σ(α⁺)` is 0.14–15° at the study's directions
 /// (`results/measured-wall-model/`), less between grid points, where four cells are mixed. The build then takes
-/// 9–15 s on a 4096² scan on 2 cores, depending on the day (docs/performance.md, row 25).
+/// about 8 s on a 4096² scan on 2 cores (docs/performance.md, row 25).
 pub const HISTORIES_PER_CELL: u64 = 17_711;
+
+/// Resolution of a knot and of a joint atom (rad): 0.1 µrad, far below any wall's angles and
+/// a table's noise.
+pub const KNOT_UNIT_RAD: f64 = 1e-7;
 
 /// The angle `|α⁻|` (degrees) whose margins fix the one entry region of every direction of a
 /// table built on a scan ([`crate::deterministic::Patch::with_entry_alpha`]): the grid's

@@ -14,7 +14,9 @@
 //! rows of the wall's own where its law bends, [`refine`]), kept as quantile functions
 //! ([`quantiles`]) of its normal-angle fluctuations
 //! `(ξ', ζ')` in the wall's frame (Eq. 4): the marginal law of `ξ'`, and the law of `ζ'`
-//! within each of 32 rank bins of `ξ'` (their dependence). A rebound draws `(ξ', ζ')` for its
+//! within each of 32 rank bins of `ξ'` (their dependence), and beside them the law's joint
+//! atoms ([`atoms`]: elements many histories share exactly, a facet's own normal for a single
+//! bounce), kept as pairs. A rebound draws `(ξ', ζ')` for its
 //! incident direction from one of the four surrounding grid cells, picked by its bilinear
 //! weight (a mixture: unshadowed, the law of the elements met is linear in `cot α⁻`, as a
 //! mixture is, and a mixture keeps a narrow peak of the law that a blend of quantile
@@ -25,10 +27,11 @@
 //! law it is the one-element approximation every stochastic model makes.
 //!
 //! The files follow the model's life: `grid` (the incident directions and the resolution,
-//! with how they were chosen), `effective_normal`, `quantiles`, `refine` (the rows a wall
+//! with how they were chosen), `effective_normal`, `atoms`, `quantiles`, `refine` (the rows a wall
 //! adds), `build` (the table from a deterministic reference), `table` (the law a rebound reads) and `table_file` (the text a
 //! card points to and the C library and Python take).
 
+pub(crate) mod atoms;
 pub(crate) mod build;
 pub(crate) mod effective_normal;
 pub(crate) mod grid;
@@ -37,6 +40,7 @@ pub(crate) mod refine;
 pub(crate) mod table;
 pub(crate) mod table_file;
 
+pub use atoms::{Atoms, ATOM_BUDGET, ATOM_MIN_HISTORIES, MAX_ATOMS};
 pub use build::{build_table, scan_table, BuildOptions, BUILD_CELLS};
 pub use effective_normal::{effective_gammas, effective_normal};
 pub use grid::CELLS;

@@ -2,9 +2,10 @@
 //! of `ξ'`, and the law of `ζ'` within each rank bin of `ξ'` (so that their dependence is
 //! kept).
 
+use super::atoms::Atoms;
 use super::grid::{
-    ADDED_NOISE, BETA_COLUMNS, RANK_BINS, SERVED_LEFT_BOUND, XI_ADDED_BUDGET, XI_ADDED_TOLERANCE,
-    XI_KNOTS, ZETA_ADDED_BUDGET, ZETA_ADDED_TOLERANCE, ZETA_KNOTS,
+    ADDED_NOISE, BETA_COLUMNS, KNOT_UNIT_RAD, RANK_BINS, SERVED_LEFT_BOUND, XI_ADDED_BUDGET,
+    XI_ADDED_TOLERANCE, XI_KNOTS, ZETA_ADDED_BUDGET, ZETA_ADDED_TOLERANCE, ZETA_KNOTS,
 };
 
 /// A quantile function on `K` knots at the probabilities `p(t_k) = (1 − cos π t_k)/2`,
@@ -226,9 +227,6 @@ fn added_knots(sorted: &[f64], knots: &[f64], tolerance: f64, budget: usize) -> 
     added
 }
 
-/// Resolution of a knot (rad): 0.1 µrad, far below any wall's angles and a table's noise.
-pub const KNOT_UNIT_RAD: f64 = 1e-7;
-
 /// `x` (rad) on the knots' resolution, so that the table's text (whole multiples of
 /// [`KNOT_UNIT_RAD`]) holds it exactly.
 #[inline]
@@ -289,16 +287,26 @@ pub struct CellLaw {
     /// Quantile functions of `ζ'` in each of [`RANK_BINS`] equal-count rank bins of `ξ'`
     /// ([`ZETA_KNOTS`] knots each, and up to [`ZETA_ADDED_BUDGET`] added).
     pub zeta: Vec<QuantileFunction>,
+    /// The joint atoms, drawn with their share of the law; the quantile functions hold the
+    /// rest of it (all zeros when the atoms hold all of it).
+    pub atoms: Atoms,
 }
 
 impl CellLaw {
-    /// The law of the pairs `(ξ', ζ')` (at least `2 · RANK_BINS` of them).
+    /// The law of the pairs `(ξ', ζ')` (at least `2 · RANK_BINS` of them): its joint atoms,
+    /// and the rest as quantile functions.
     pub fn of_pairs(
-        mut pairs: Vec<(f64, f64)>,
+        pairs: Vec<(f64, f64)>,
         histories: u64,
         left_patch: u64,
         lost_other: u64,
     ) -> CellLaw {
+        let (atoms, mut pairs) = Atoms::split(pairs, 2 * RANK_BINS);
+        if pairs.is_empty() {
+            let mut law = CellLaw::unserved(histories, left_patch, lost_other);
+            law.atoms = atoms;
+            return law;
+        }
         pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
         let xis: Vec<f64> = pairs.iter().map(|p| p.0).collect();
         let n = pairs.len();
@@ -326,6 +334,7 @@ impl CellLaw {
                 XI_ADDED_BUDGET,
             ),
             zeta,
+            atoms,
         }
     }
 
@@ -338,6 +347,7 @@ impl CellLaw {
             lost_other,
             xi: QuantileFunction::fixed(vec![0.0; XI_KNOTS]),
             zeta: vec![QuantileFunction::fixed(vec![0.0; ZETA_KNOTS]); RANK_BINS],
+            atoms: Atoms::default(),
         }
     }
 

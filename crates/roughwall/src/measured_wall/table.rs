@@ -90,8 +90,8 @@ impl MeasuredWallTable {
     }
 
     /// One effective element `(ξ', ζ')` (rad, the wall's frame) for `inc`: one of the four
-    /// cells, drawn by its weight (a mixture), read at two probabilities, the second in the
-    /// rank bin of the first.
+    /// cells, drawn by its weight (a mixture); one of its joint atoms by its share, or its
+    /// quantile functions read at two probabilities, the second in the rank bin of the first.
     ///
     /// A mixture, not a blend of the cells' quantile functions at the same probabilities:
     /// unshadowed, the law of the elements a particle meets has a density linear in
@@ -106,6 +106,17 @@ impl MeasuredWallTable {
     pub fn draw<R: Rng + ?Sized>(&self, inc: &MeasuredWallIncidence, rng: &mut R) -> (f64, f64) {
         let (u0, u1, u2): (f64, f64, f64) = (rng.gen(), rng.gen(), rng.gen());
         let law = &self.cells[inc.cells[mixture_member(&inc.weights, u0)] as usize];
+        // The cell's joint atoms first, then the rest of its law at the rest of `u1`'s range
+        // (`u1` itself where there are no atoms).
+        let share = law.atoms.share();
+        if u1 < share {
+            return law.atoms.pick(u1);
+        }
+        let u1 = if share > 0.0 {
+            ((u1 - share) / (1.0 - share)).min(1.0 - f64::EPSILON)
+        } else {
+            u1
+        };
         let (t1, t2) = (knot_coordinate(u1), knot_coordinate(u2));
         (law.xi.at_t(t1), law.zeta[rank_bin(u1)].at_t(t2))
     }

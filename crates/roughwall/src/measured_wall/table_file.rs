@@ -9,24 +9,31 @@
 //! then the [`XI_KNOTS`] knots of `ξ'` and the [`RANK_BINS`] × [`ZETA_KNOTS`] knots of `ζ'`
 //! (as whole multiples of [`KNOT_UNIT_RAD`], 0.1 µrad), then, for `ξ'` and each rank bin of
 //! `ζ'` in turn, the number of knots added where the law has atoms and gaps and each as its
-//! `t` (a whole number of [`ADDED_T_UNIT`]) and its value. Knots are kept on that resolution,
+//! `t` (a whole number of [`ADDED_T_UNIT`]) and its value, then the number of the cell's joint
+//! atoms and each as its `ξ'` and `ζ'` (whole multiples of [`KNOT_UNIT_RAD`]) and its count of
+//! histories ([`super::atoms`]). Knots and atoms are kept on that resolution,
 //! so a table read back is the table written, bit for bit. Everything is checked on reading: a malformed, edited
 //! or truncated table is a one-line error naming the line.
 
+use super::atoms::{Atoms, MAX_ATOMS};
 use super::grid::*;
-use super::quantiles::{first_served_row, CellLaw, QuantileFunction, ADDED_T_UNIT, KNOT_UNIT_RAD};
+use super::quantiles::{first_served_row, CellLaw, QuantileFunction, ADDED_T_UNIT};
 use super::refine::MAX_REFINED_ROWS;
 use super::table::MeasuredWallTable;
 use crate::error::{Error, Result};
 use crate::wall::Deviations;
 use std::sync::Mutex;
 
-/// First line of a table file (names the format and its version: v4 has the 43 base rows and
-/// the rows its build added, the 32 rank bins, the mixture between cells and the knots its
-/// quantile functions added where the law has atoms). A v3 table (no added knots) and a v2
-/// table (the base rows alone either) are read as they are; a v1 table, of 29 rows, 16 bins
-/// and blended cells, is refused with the advice to build it again.
-pub const MAGIC: &str = "# roughwall measured-wall table v4";
+/// First line of a table file (names the format and its version: v5 has the 43 base rows and
+/// the rows its build added, the 32 rank bins, the mixture between cells, the knots its
+/// quantile functions added where the law has atoms, and each cell's joint atoms). A v4 table
+/// (no joint atoms), a v3 table (no added knots either) and a v2 table (the base rows alone as
+/// well) are read as they are; a v1 table, of 29 rows, 16 bins and blended cells, is refused
+/// with the advice to build it again.
+pub const MAGIC: &str = "# roughwall measured-wall table v5";
+
+/// The first line of a v4 table: v5 without joint atoms.
+const MAGIC_V4: &str = "# roughwall measured-wall table v4";
 
 /// The first line of a v3 table: v4 without added knots.
 const MAGIC_V3: &str = "# roughwall measured-wall table v3";
@@ -38,6 +45,10 @@ const MAGIC_STEM: &str = "# roughwall measured-wall table v";
 
 /// The header of the cell lines.
 pub const CELL_HEADER: &str =
+    "row,column,alpha_deg,beta_deg,histories,left_patch,lost_other,xi_knots_0.1urad...,zeta_knots_0.1urad...,(added,t_1e-9,knot_0.1urad...)x33,atoms,(xi_0.1urad,zeta_0.1urad,histories)...";
+
+/// The cell header of v4 tables.
+const CELL_HEADER_V4: &str =
     "row,column,alpha_deg,beta_deg,histories,left_patch,lost_other,xi_knots_0.1urad...,zeta_knots_0.1urad...,(added,t_1e-9,knot_0.1urad...)x33";
 
 /// The cell header of v2 and v3 tables.
@@ -114,6 +125,10 @@ impl MeasuredWallTable {
                     ));
                 }
             }
+            s.push_str(&format!(",{}", c.atoms.len()));
+            for (xi, zeta, count) in c.atoms.units() {
+                s.push_str(&format!(",{xi},{zeta},{count}"));
+            }
             s.push('\n');
         }
         s
@@ -124,10 +139,12 @@ impl MeasuredWallTable {
     pub fn parse(text: &str, what: &str) -> Result<MeasuredWallTable> {
         let bad = |line: usize, msg: &str| Error::Input(format!("{what}, line {line}: {msg}"));
         let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l.trim_end()));
-        let (v2, v3) = match lines.next() {
-            Some((_, l)) if l == MAGIC => (false, false),
-            Some((_, l)) if l == MAGIC_V3 => (false, true),
-            Some((_, l)) if l == MAGIC_V2 => (true, true),
+        // (v2: base rows only; v3: no added knots; v4: no joint atoms)
+        let (v2, v3, v4) = match lines.next() {
+            Some((_, l)) if l == MAGIC => (false, false, false),
+            Some((_, l)) if l == MAGIC_V4 => (false, false, true),
+            Some((_, l)) if l == MAGIC_V3 => (false, true, true),
+            Some((_, l)) if l == MAGIC_V2 => (true, true, true),
             Some((_, l)) if l.starts_with(MAGIC_STEM) => {
                 return Err(Error::Input(format!(
                     "{what}: a measured-wall table of another format (`{l}`); this version reads `{MAGIC}`: build it again with `rebound scan --measured-wall`"
@@ -193,7 +210,11 @@ impl MeasuredWallTable {
                 ));
             }
         }
-        let header = if v3 { CELL_HEADER_V3 } else { CELL_HEADER };
+        let header = match (v3, v4) {
+            (true, _) => CELL_HEADER_V3,
+            (false, true) => CELL_HEADER_V4,
+            (false, false) => CELL_HEADER,
+        };
         match lines.next() {
             Some((_, l)) if l == header => {}
             Some((n, _)) => return Err(bad(n, &format!("expected the header `{header}`"))),
@@ -212,7 +233,7 @@ impl MeasuredWallTable {
                     "{what}: truncated after {k} of {count} cells (the grid is {rows} rows × {BETA_COLUMNS} columns)"
                 ))
             })?;
-            cells.push(parse_cell(l, k, &alpha_rows_deg, v3).map_err(|m| bad(n, &m))?);
+            cells.push(parse_cell(l, k, &alpha_rows_deg, (v3, v4)).map_err(|m| bad(n, &m))?);
         }
         if let Some((n, _)) = lines.find(|(_, l)| !l.is_empty()) {
             return Err(bad(n, &format!("more than the {count} cells of the grid")));
@@ -292,12 +313,12 @@ fn parse_rows(v: &str, v2: bool) -> std::result::Result<Vec<f64>, String> {
 }
 
 /// One cell line, checked against its place `k` in the grid of `rows` (`v3`: a line of a v2
-/// or v3 table, without added knots).
+/// or v3 table, without added knots; `v4`: without joint atoms, as every older one).
 fn parse_cell(
     line: &str,
     k: usize,
     rows: &[f64],
-    v3: bool,
+    (v3, v4): (bool, bool),
 ) -> std::result::Result<CellLaw, String> {
     let f: Vec<&str> = line.split(',').collect();
     let fixed = LEADING + KNOTS;
@@ -386,8 +407,39 @@ fn parse_cell(
         .chunks(ZETA_KNOTS)
         .map(|v| function(v, ZETA_ADDED_BUDGET))
         .collect::<std::result::Result<Vec<_>, _>>()?;
+    let atoms = match v4 {
+        true => Atoms::default(),
+        false => {
+            let count = rest.next().ok_or("truncated: no count of joint atoms")?;
+            let count: usize = count
+                .parse()
+                .ok()
+                .filter(|&c| c <= MAX_ATOMS)
+                .ok_or_else(|| format!("`{count}` joint atoms: allowed 0 to {MAX_ATOMS}"))?;
+            let list = (0..count)
+                .map(|_| {
+                    let (Some(a), Some(b), Some(c)) = (rest.next(), rest.next(), rest.next())
+                    else {
+                        return Err("truncated joint atoms".to_string());
+                    };
+                    let unit = |s: &str| {
+                        knot_at(s)?;
+                        Ok::<i64, String>(s.parse::<i64>().unwrap_or_default())
+                    };
+                    let c = c
+                        .parse::<u64>()
+                        .map_err(|_| format!("joint atom's count `{c}` is not a count"))?;
+                    Ok((unit(a)?, unit(b)?, c))
+                })
+                .collect::<std::result::Result<Vec<_>, String>>()?;
+            let escaped = histories - left - lost;
+            Atoms::from_units(list, escaped).ok_or_else(|| {
+                format!("joint atoms out of order, of no history, or holding more than the cell's {escaped} escaped histories")
+            })?
+        }
+    };
     if rest.next().is_some() {
-        return Err("more fields than the cell's added knots".into());
+        return Err("more fields than the cell's added knots and joint atoms".into());
     }
     Ok(CellLaw {
         histories,
@@ -395,5 +447,6 @@ fn parse_cell(
         lost_other: lost,
         xi,
         zeta,
+        atoms,
     })
 }

@@ -128,6 +128,25 @@ pub fn scan_wall(path: &Path, opt: &DeterministicOptions) -> Result<Option<ScanW
                 }
                 .into(),
             );
+            if let Some(a) = opt.entry_alpha {
+                // The one region's sides (µm, along the scan's x and y): the part of the scan
+                // every direction samples (what a noise-floor control of one realisation is
+                // sized by, scripts/common.sh).
+                let tracker = wall.tracker().map_err(named)?;
+                if let Some(patch) = tracker.patch() {
+                    let m = patch
+                        .margins(a, &nalgebra::Vector3::new(1.0, -1.0, 0.0))
+                        .sides;
+                    let sides = [
+                        (patch.extent.0 - m[0] - m[1]) * 1e6,
+                        (patch.extent.1 - m[2] - m[3]) * 1e6,
+                    ];
+                    put(
+                        "entry_region_um",
+                        toml::Value::Array(sides.iter().map(|&x| x.into()).collect()),
+                    );
+                }
+            }
             put("left_patch_bound", LEFT_PATCH_BOUND.into());
             put(
                 "wall",

@@ -116,8 +116,11 @@ gaussian_control() {
     /^\[/{sec=$0}
     sec=="[surface_choice]" && $1=="grid_nx"{nx=$2+0} sec=="[surface_choice]" && $1=="grid_nz"{nz=$2+0}
     sec=="[surface_choice]" && $1=="spacing_x_um"{px=$2+0} sec=="[surface_choice]" && $1=="spacing_z_um"{pz=$2+0}
-    sec=="[scan]" && $1=="entry_region_um"{v=$2; gsub(/[\[\] ]/, "", v); split(v, r, ","); rx=r[1]+0; rz=r[2]+0}
-    END { if (nx > 2 && nz > 2) { A = (rx > 0 && rz > 0) ? rx*rz : nx*px*nz*pz; L = sqrt(A);
+    # (an array, on one line or one value a line)
+    sec=="[scan]" && $1=="entry_region_um"{v=$2; open=($2 !~ /\]/); next}
+    open {v = v $0; open=($0 !~ /\]/)}
+    END { gsub(/[][ ]/, "", v); split(v, r, ","); rx=r[1]+0; rz=r[2]+0
+      if (nx > 2 && nz > 2) { A = (rx > 0 && rz > 0) ? rx*rz : nx*px*nz*pz; L = sqrt(A);
       printf "%.6g %d\n", L, int(L / sqrt(px*pz) + 0.5) } }' "$ref/run.toml")
   area=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
     NR == 2 { printf "%.9g\n", $col["nx"] * $col["dx_um"] * $col["ny"] * $col["dy_um"] }' "$card_dir/scan_summary.csv")

@@ -97,8 +97,8 @@ bin_width_for() {
 # gaussian_control CARD_DIR REF D XI ZE DIRECTIONS NAME CASES OUT [BIN]: the noise floor of a
 # verdict on the Gaussian assumption for a scan (issue 39, part 3). The scan is one
 # realisation, so even a Gaussian wall would differ from a Gaussian ensemble: one Gaussian
-# wall (seed 2022) of the size and pixel of the part of the scan the in-place reference REF
-# sampled (its run.toml: its one entry region, else the block it bounced on), with deviations XI, ZE (the card's for particles of D µm, 0 the point) and
+# wall (seed 2022) of the size and pixel of the block the in-place reference REF bounced on
+# (its run.toml), with deviations XI, ZE (the card's for particles of D µm, 0 the point) and
 # the correlation area `rebound scan` measured for that particle (wall_card_diameters.csv of
 # CARD_DIR: its part of the scan over its correlation areas, so that the block holds as many
 # as the scan's; rms height from Eq. 15), against an ensemble of $P_STUDY_CONTROL_SURFACES such
@@ -110,18 +110,15 @@ gaussian_control() {
   local card_dir=$1 ref=$2 d=$3 xi=$4 ze=$5 directions=$6 name=$7 cases=$8 out=$9 bin=${10:-}
   local size area h surfaces
   surfaces=$(particles "$P_STUDY_CONTROL_SURFACES" 4)
-  # The size of the part of the scan the reference samples: its one entry region where it has
-  # one ([scan] entry_region_um), else the whole block; as a square of the same area.
+  # The size of the block the reference bounced on, as a square of the same area. Not its
+  # entry region (the part of the block particles enter over, [scan] entry_region_um): a
+  # Gaussian wall that small is smaller than one correlation length for a sphere's centre
+  # surface (sample-land, 100 µm: 74 µm against 163 × 100 µm) and comes out flat.
   size=$(awk -F' = ' '
     /^\[/{sec=$0}
     sec=="[surface_choice]" && $1=="grid_nx"{nx=$2+0} sec=="[surface_choice]" && $1=="grid_nz"{nz=$2+0}
     sec=="[surface_choice]" && $1=="spacing_x_um"{px=$2+0} sec=="[surface_choice]" && $1=="spacing_z_um"{pz=$2+0}
-    # (an array, on one line or one value a line)
-    sec=="[scan]" && $1=="entry_region_um"{v=$2; open=($2 !~ /\]/); next}
-    open {v = v $0; open=($0 !~ /\]/)}
-    END { gsub(/[][ ]/, "", v); split(v, r, ","); rx=r[1]+0; rz=r[2]+0
-      if (nx > 2 && nz > 2) { A = (rx > 0 && rz > 0) ? rx*rz : nx*px*nz*pz; L = sqrt(A);
-      printf "%.6g %d\n", L, int(L / sqrt(px*pz) + 0.5) } }' "$ref/run.toml")
+    END { if (nx > 2 && nz > 2) { L = sqrt(nx*px*nz*pz); printf "%.6g %d\n", L, int(L / sqrt(px*pz) + 0.5) } }' "$ref/run.toml")
   area=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
     NR == 2 { printf "%.9g\n", $col["nx"] * $col["dx_um"] * $col["ny"] * $col["dy_um"] }' "$card_dir/scan_summary.csv")
   h=$(awk -F, -v d="$d" -v area="$area" -v xi="$xi" -v ze="$ze" '

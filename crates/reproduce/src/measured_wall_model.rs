@@ -139,12 +139,12 @@ fn worst(dir: &Path, which: Directions) -> Result<Option<Worst>> {
 }
 
 /// The verdict on the Gaussian assumption for one scan and particle: `w` (Gaussian walls
-/// against the scan in place) set against `c` (one Gaussian wall of the reference's entry region
+/// against the scan in place) set against `c` (one Gaussian wall of the reference's block
 /// against an ensemble of such walls: what one realisation that size differs by).
 fn gaussian_verdict(w: &Worst, c: &Worst) -> String {
     format!(
         "Gaussian walls differ from the scan by a KS distance up to {:.3} and {:+.3}° in mean α⁺; \
-         one Gaussian wall of the reference's entry region differs from {STUDY_CONTROL_SURFACES} such \
+         one Gaussian wall of the reference's block differs from {STUDY_CONTROL_SURFACES} such \
          walls by up to {:.3} and {:.3}° (the floor of one realisation that size): {}",
         w.ks,
         w.signed,
@@ -263,11 +263,11 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
                 Some(floor.reference_se),
                 None,
             );
-            // The Gaussian walls' own floor: one Gaussian wall of the reference's entry region against
+            // The Gaussian walls' own floor: one Gaussian wall of the reference's block against
             // an ensemble of such walls (not against the scan).
             let control = worst(&dir.join(MODEL_CONTROL).join(COMPARE), served)?;
             if let Some(c) = &control {
-                let label = format!("the Gaussian walls' floor: one Gaussian wall of the reference's entry region against {STUDY_CONTROL_SURFACES} such walls (not against the scan)");
+                let label = format!("the Gaussian walls' floor: one Gaussian wall of the reference's block against {STUDY_CONTROL_SURFACES} such walls (not against the scan)");
                 row.record(&mut rows, &mut table, MODEL_CONTROL, &label, c, None, None);
             }
             let against = std::iter::once(MODEL_GAUSSIAN).chain(MODEL_MODELS);
@@ -407,12 +407,16 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
          scan, the reference's own run loses up to about as many, and the table takes its \
          lowest row's law: the wall's own model there is shown on a line of its own, not \
          judged. The Gaussian walls' verdict has a floor of \
-         its own, because the scan is one realisation: one Gaussian wall of the size (the same \
-         area, square) and pixel of the part of the scan the reference samples, its entry \
-         region, with the particle's card deviations and the correlation area the card \
-         measured for it (the wall holds as many correlation areas as that part of the scan \
-         does; rms height from Eq. 15), against {STUDY_CONTROL_SURFACES} such \
-         walls, through the same runs; a miss is what exceeds twice that floor.\n\n\
+         its own, because the scan is one realisation: one Gaussian wall of the size and pixel \
+         of the block the reference bounced on, with the particle's card deviations and the \
+         correlation area the card measured for it (the block holds as many correlation areas \
+         as the scan's part does; rms height from Eq. 15), against {STUDY_CONTROL_SURFACES} such \
+         walls, through the same runs; a miss is what exceeds twice that floor. The reference \
+         enters over the inner part of the block only, so one realisation the size of the \
+         block errs small (its floor low): a verdict within it stands, a miss may not. Sized \
+         by the entry region instead, the control wall is smaller than one correlation length \
+         for the spheres on the small scans and comes out flat (sample-land, 100 µm: 74 µm \
+         against 163 × 100 µm; design notes).\n\n\
          | scan | particle | against the reference | max KS α⁺ | worst bias mean α⁺ (°) | the reference's SE there (°) | meets the goal |\n\
          |---|---|---|---|---|---|---|\n{rows}\n{notes}\nThe Gaussian assumption against its own floor:\n\n{verdicts}\nFigures:\n\n{figures}\n"
     );

@@ -195,7 +195,7 @@ typedef struct {
    `RW_MODEL_MEASURED_WALL` only, and required there: the wall's table as the
    NUL-terminated text `rebound scan --measured-wall` writes (`measured_wall_*.txt`,
    named by the wall card's row). The handle keeps its own copy; a process keeps each
-   distinct table for its life, at most 16 (7–16 MB each). The deviations are then
+   distinct table for its life, at most 16 (4–18 MB each). The deviations are then
    the table's (`delta_xi_deg`, `delta_zeta_deg` are not used), and the sign of
    `rw_hit.lay` matters: a measured wall need not be its own mirror image.
    */

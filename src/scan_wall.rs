@@ -130,8 +130,7 @@ pub fn scan_wall(path: &Path, opt: &DeterministicOptions) -> Result<Option<ScanW
             );
             if let Some(a) = opt.entry_alpha {
                 // The one region's sides (µm, along the scan's x and y): the part of the scan
-                // every direction samples (what a noise-floor control of one realisation is
-                // sized by, scripts/common.sh).
+                // every direction's histories enter over.
                 let tracker = wall.tracker().map_err(named)?;
                 if let Some(patch) = tracker.patch() {
                     let m = patch

@@ -374,8 +374,7 @@ pub fn measured_wall_model(results: &Path, md: &mut String) -> Result<()> {
          centre surface) at incident directions between the table's grid points \
          (`configs/scans/own-model.toml`: α⁻ = −6.25°, −13.5°, −31° × β⁻ = 7.5°, 97.5°, −82.5° \
          from the lay; sample-land, too rough for grazing incidence on its 784 × 537 µm, at \
-         −31.5°, −38.5°, −39°, −48°, −60°, between its tables' rows except −39°, a row the \
-         point particle's table added, \
+         −31.5°, −38.5°, −39°, −48°, −60°, between its tables' rows, \
          `configs/scans/own-model-sample-land.toml`; cartridge-case at −9.25°, −13.5°, −31°, \
          −48°, \
          `configs/scans/own-model-cartridge-case.toml`), and again with another \

@@ -20,8 +20,9 @@ pub const ATOM_MIN_HISTORIES: u64 = 3;
 
 /// Most atoms a cell keeps from its histories, the largest first (at most [`MAX_ATOMS`] in
 /// all: when fewer than [`super::RANK_BINS`] · 2 histories would be left to the quantile
-/// functions, the rest are kept as atoms too). plu-1's point particle holds a cell in about
-/// 100 distinct elements; a 500 µm sphere on it 1 300–1 400, whose 256 largest hold about 85 %.
+/// functions, the rest are kept as atoms too). plu-1's point particle holds a cell in 89–189
+/// distinct elements; its 500 µm sphere in 1 303–1 426, whose 100 largest hold 78 % and 500
+/// largest 94 % (docs/design-notes.md, "Knots where a law has atoms").
 pub const ATOM_BUDGET: usize = 256;
 
 /// Most atoms a cell may hold: the budget and the histories too few for quantile functions.
@@ -87,17 +88,18 @@ impl Atoms {
             }
         }
         let distinct = runs.len();
-        runs.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+        // Only the shared elements are ranked (a smooth law has none: no sort of its runs).
         let mut kept: Vec<((i64, i64), u64)> = runs
             .iter()
-            .take_while(|r| r.1 >= ATOM_MIN_HISTORIES)
-            .take(ATOM_BUDGET)
+            .filter(|r| r.1 >= ATOM_MIN_HISTORIES)
             .copied()
             .collect();
-        let in_atoms: u64 = kept.iter().map(|r| r.1).sum();
-        if in_atoms == 0 {
+        if kept.is_empty() {
             return (Atoms::default(), pairs);
         }
+        kept.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+        kept.truncate(ATOM_BUDGET);
+        let in_atoms: u64 = kept.iter().map(|r| r.1).sum();
         let left = escaped - in_atoms;
         if (left as usize) < keep_at_least && distinct <= MAX_ATOMS {
             kept = runs;

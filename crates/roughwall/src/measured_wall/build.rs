@@ -545,16 +545,7 @@ mod tests {
 
     #[test]
     fn shooting_in_the_order_of_the_wall_changes_no_law() {
-        let field = crate::surface::generate(
-            &crate::surface::SurfaceSpec {
-                length_m: 256e-6,
-                nodes: 256,
-                rms_height_m: 0.37e-6,
-                corr_length_x_m: Some(12e-6),
-                corr_length_z_m: Some(4e-6),
-            },
-            5,
-        );
+        let field = super::super::test_wall(256, 5);
         let dev = crate::surface::measured_deviations(&field);
         let setup = build_setup(dev);
         let opts = BuildOptions {

@@ -54,23 +54,30 @@ pub use refine::{MAX_REFINED_ROWS, REFINE_ABOVE_DEG};
 pub use table::{MeasuredWallIncidence, MeasuredWallTable};
 pub use table_file::{MAGIC, MAX_DISTINCT_TABLES};
 
-/// A small table for the crate's unit tests: a generated anisotropic Gaussian wall (Δξ ≈ 2.5°,
-/// Δζ ≈ 7.5°), 1024 histories per cell, built once.
+/// The generated anisotropic Gaussian wall of the crate's unit tests (Δξ ≈ 2.5°, Δζ ≈ 7.5°):
+/// `nodes` of 1 µm a side, from `seed`.
+#[cfg(test)]
+pub(crate) fn test_wall(nodes: usize, seed: u64) -> crate::HeightField {
+    crate::surface::generate(
+        &crate::surface::SurfaceSpec {
+            length_m: nodes as f64 * 1e-6,
+            nodes,
+            rms_height_m: 0.37e-6,
+            corr_length_x_m: Some(12e-6),
+            corr_length_z_m: Some(4e-6),
+        },
+        seed,
+    )
+}
+
+/// A small table for the crate's unit tests: [`test_wall`] of 128 nodes, 1024 histories per
+/// cell, built once.
 #[cfg(test)]
 pub(crate) fn small_table() -> &'static MeasuredWallTable {
     use std::sync::OnceLock;
     static TABLE: OnceLock<&'static MeasuredWallTable> = OnceLock::new();
     TABLE.get_or_init(|| {
-        let field = crate::surface::generate(
-            &crate::surface::SurfaceSpec {
-                length_m: 128e-6,
-                nodes: 128,
-                rms_height_m: 0.37e-6,
-                corr_length_x_m: Some(12e-6),
-                corr_length_z_m: Some(4e-6),
-            },
-            3,
-        );
+        let field = test_wall(128, 3);
         let tracker = crate::Tracker::new(&field, 1000).unwrap();
         let dev = crate::surface::measured_deviations(&field);
         build_table(

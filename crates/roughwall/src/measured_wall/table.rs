@@ -141,6 +141,44 @@ fn mixture_member(w: &[f64; 4], u: f64) -> usize {
 mod tests {
     use super::*;
 
+    /// A cell's joint atoms are drawn with their shares, exactly at their elements; the rest of
+    /// its draws come from its quantile functions.
+    #[test]
+    fn a_cell_draws_its_atoms_by_their_share() {
+        use crate::measured_wall::Atoms;
+        use rand::SeedableRng;
+        let mut table = super::super::small_table().clone();
+        let k = super::super::grid::cell(30, 5);
+        let law = &mut table.cells[k];
+        let escaped = law.histories - law.left_patch - law.lost_other;
+        // A quarter and an eighth of the law in two atoms.
+        let (a, b) = (escaped / 4, escaped / 8);
+        law.atoms = Atoms::from_units(vec![(-40_000, 7, a), (12_345, -2, b)], escaped).unwrap();
+        let alpha = -table.alpha_rows_deg[30].to_radians();
+        let beta = super::super::grid::beta_column_deg(5).to_radians();
+        let inc = table.incidence(alpha, beta);
+        // The grid point itself: its cell takes all the weight (up to rounding).
+        let m = (0..4).find(|&i| inc.weights[i] > 1.0 - 1e-9).unwrap();
+        assert_eq!(inc.cells[m] as usize, k);
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(1);
+        let n = 200_000;
+        let (mut first, mut second) = (0, 0);
+        for _ in 0..n {
+            let (x, z) = table.draw(&inc, &mut rng);
+            let at = |u: (i64, i64)| x == u.0 as f64 * 1e-7 && z == u.1 as f64 * 1e-7;
+            first += at((-40_000, 7)) as u64;
+            second += at((12_345, -2)) as u64;
+        }
+        let (p1, p2) = (a as f64 / escaped as f64, b as f64 / escaped as f64);
+        for (count, p) in [(first, p1), (second, p2)] {
+            let sd = (p * (1.0 - p) / n as f64).sqrt();
+            assert!(
+                (count as f64 / n as f64 - p).abs() < 5.0 * sd,
+                "{count} of {n}, p = {p}"
+            );
+        }
+    }
+
     #[test]
     fn the_mixture_picks_members_by_their_weights_and_never_a_weightless_one() {
         let w = [0.0, 0.25, 0.0, 0.75];
